@@ -1,0 +1,1 @@
+"""indoorgen: procedural indoor scenes in pure Python."""

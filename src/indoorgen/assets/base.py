@@ -1,0 +1,245 @@
+"""The asset protocol: `Param`, `Surface`, `Joint`, `Asset` and `AssetFactory`.
+
+A generator is an `AssetFactory` subclass registered by name. It documents every parameter as a
+`Param` (so sampling, validation and `assets list` come for free), and builds two meshes from the
+same params: a cheap `placeholder` for the solver's collision checks and a detailed `create` for
+export. Both carry the same named `Surface`s.
+
+Local frame (DESIGN.md): metres, Z up, origin at the centre of the bottom face of the bounding
+box, front facing +X.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Iterable
+
+import numpy as np
+import shapely.geometry as sg
+import trimesh
+
+from ..errors import ParameterError, UnknownGeneratorError
+from ..tags import Semantics, Subpart
+
+
+@dataclass(frozen=True)
+class Param:
+    """One documented parameter: a float or int range, a boolean, or a choice among values."""
+
+    low: float = 0.0
+    high: float = 1.0
+    kind: str = "float"  # "float" | "int" | "bool" | "choice"
+    choices: tuple = ()
+    doc: str = ""
+
+    def sample(self, rng: np.random.Generator) -> Any:
+        if self.kind == "float":
+            return float(rng.uniform(self.low, self.high))
+        if self.kind == "int":
+            return int(rng.integers(int(self.low), int(self.high) + 1))
+        if self.kind == "bool":
+            return bool(rng.random() < 0.5)
+        if self.kind == "choice":
+            return self.choices[int(rng.integers(len(self.choices)))]
+        raise ValueError(f"unknown Param kind {self.kind!r}")
+
+    def check(self, name: str, value: Any) -> Any:
+        """Return `value` converted to this param's type, or raise ParameterError."""
+        try:
+            if self.kind == "float":
+                v = float(value)
+                ok = self.low - 1e-9 <= v <= self.high + 1e-9
+            elif self.kind == "int":
+                v = int(value)
+                ok = self.low <= v <= self.high
+            elif self.kind == "bool":
+                v = value if isinstance(value, bool) else str(value).lower() in ("1", "true", "yes")
+                ok = True
+            else:
+                v = value
+                ok = v in self.choices
+        except (TypeError, ValueError):
+            ok, v = False, value
+        if not ok:
+            raise ParameterError(f"parameter {name}={value!r} is invalid; valid: {self.describe()}")
+        return v
+
+    def describe(self) -> str:
+        if self.kind in ("float", "int"):
+            return f"{self.kind} in [{self.low}, {self.high}]"
+        if self.kind == "bool":
+            return "true or false"
+        return "one of " + ", ".join(map(str, self.choices))
+
+
+@dataclass
+class Surface:
+    """A named planar patch of an asset: a polygon in the plane through `origin` with unit
+    `normal`, expressed in 2D coordinates along `u` and `v = normal x u`."""
+
+    name: str
+    subpart: Subpart
+    origin: np.ndarray
+    normal: np.ndarray
+    u: np.ndarray
+    polygon: sg.Polygon
+
+    @property
+    def v(self) -> np.ndarray:
+        return np.cross(self.normal, self.u)
+
+    @staticmethod
+    def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> "Surface":
+        """A rectangle centred on `center`, extending +-half_u along u and +-half_v along v."""
+        return Surface(name, subpart, np.asarray(center, float), _unit(normal), _unit(u),
+                       sg.box(-half_u, -half_v, half_u, half_v))
+
+    def to_world(self, xy: np.ndarray) -> np.ndarray:
+        """Map 2D polygon coordinates (N,2) to 3D points in the asset frame."""
+        xy = np.atleast_2d(np.asarray(xy, float))
+        return self.origin + xy[:, :1] * self.u + xy[:, 1:2] * self.v
+
+    def corners(self) -> np.ndarray:
+        """The polygon's exterior vertices in 3D (asset frame)."""
+        return self.to_world(np.asarray(self.polygon.exterior.coords)[:-1])
+
+    def transformed(self, rotation: np.ndarray, translation: np.ndarray) -> "Surface":
+        return Surface(self.name, self.subpart, rotation @ self.origin + translation,
+                       rotation @ self.normal, rotation @ self.u, self.polygon)
+
+
+@dataclass
+class Joint:
+    """An articulation: `child_faces` of the asset mesh move about/along `axis` through `origin`."""
+
+    name: str
+    kind: str  # "revolute" | "prismatic"
+    axis: np.ndarray
+    origin: np.ndarray
+    lower: float
+    upper: float
+    child_mesh: trimesh.Trimesh | None = None
+
+
+@dataclass
+class Asset:
+    """A built object: its mesh, named surfaces, material slot per face and joints."""
+
+    mesh: trimesh.Trimesh
+    surfaces: list[Surface]
+    face_slots: np.ndarray | None = None
+    slots: list[str] = field(default_factory=lambda: ["body"])
+    joints: list[Joint] = field(default_factory=list)
+    closed: bool = True
+
+    def surface(self, name: str) -> Surface:
+        for s in self.surfaces:
+            if s.name == name:
+                return s
+        raise KeyError(f"no surface named {name!r}; have {[s.name for s in self.surfaces]}")
+
+    def surfaces_of(self, subpart: Subpart) -> list[Surface]:
+        return [s for s in self.surfaces if s.subpart == subpart]
+
+    @property
+    def extents(self) -> np.ndarray:
+        return self.mesh.bounds[1] - self.mesh.bounds[0]
+
+
+def _unit(v) -> np.ndarray:
+    v = np.asarray(v, float)
+    return v / np.linalg.norm(v)
+
+
+def box_surfaces(depth: float, width: float, height: float, *, front: bool = True,
+                 back: bool = True, top: bool = True, sides: bool = True) -> list[Surface]:
+    """The standard outer surfaces of an object whose bounding box is depth (X) x width (Y) x
+    height (Z), in the local frame: bottom, top, back, front and both sides."""
+    d2, w2, h2 = depth / 2, width / 2, height / 2
+    out = [Surface.rect("bottom", Subpart.Bottom, (0, 0, 0), (0, 0, -1), (1, 0, 0), d2, w2)]
+    if top:
+        out.append(Surface.rect("top", Subpart.Top, (0, 0, height), (0, 0, 1), (1, 0, 0), d2, w2))
+    if back:
+        out.append(Surface.rect("back", Subpart.Back, (-d2, 0, h2), (-1, 0, 0), (0, 1, 0), w2, h2))
+    if front:
+        out.append(Surface.rect("front", Subpart.Front, (d2, 0, h2), (1, 0, 0), (0, 1, 0), w2, h2))
+    if sides:
+        out.append(Surface.rect("side_left", Subpart.Side, (0, w2, h2), (0, 1, 0), (1, 0, 0), d2, h2))
+        out.append(Surface.rect("side_right", Subpart.Side, (0, -w2, h2), (0, -1, 0), (1, 0, 0), d2, h2))
+    return out
+
+
+class AssetFactory:
+    """Base class of every generator. Subclasses set `name`, `tags`, `params` and implement
+    `placeholder` and `create`; most never override `sample_params`."""
+
+    name: ClassVar[str] = ""
+    tags: ClassVar[frozenset[Semantics]] = frozenset()
+    params: ClassVar[dict[str, Param]] = {}
+    #: "large" (floor furniture), "medium" (wall / beside furniture) or "small" (on objects);
+    #: informational: stages are decided by relations in the constraint program.
+    size_class: ClassVar[str] = "large"
+
+    def sample_params(self, rng: np.random.Generator) -> dict[str, Any]:
+        """Draw every documented parameter from its range (in sorted-name order, for stability)."""
+        return {k: self.params[k].sample(rng) for k in sorted(self.params)}
+
+    def validate_params(self, overrides: dict[str, Any]) -> dict[str, Any]:
+        """Check user overrides against the documented params; raise ParameterError if bad."""
+        out = {}
+        for k, v in overrides.items():
+            if k not in self.params:
+                raise ParameterError(f"{self.name} has no parameter {k!r}; valid: "
+                                     + ", ".join(sorted(self.params)))
+            out[k] = self.params[k].check(k, v)
+        return out
+
+    def placeholder(self, params: dict[str, Any]) -> Asset:
+        raise NotImplementedError
+
+    def create(self, params: dict[str, Any]) -> Asset:
+        raise NotImplementedError
+
+
+_REGISTRY: dict[str, type[AssetFactory]] = {}
+
+
+def register(cls: type[AssetFactory]) -> type[AssetFactory]:
+    """Class decorator: make a generator available by its `name`."""
+    if not cls.name:
+        raise ValueError(f"{cls.__name__} has no name")
+    if cls.name in _REGISTRY and _REGISTRY[cls.name] is not cls:
+        raise ValueError(f"duplicate generator name {cls.name!r}")
+    _REGISTRY[cls.name] = cls
+    return cls
+
+
+def _ensure_loaded() -> None:
+    from . import generators  # noqa: F401  (importing registers every generator)
+
+
+def get_factory(name: str) -> AssetFactory:
+    """The generator registered as `name`, or UnknownGeneratorError listing the valid names."""
+    _ensure_loaded()
+    try:
+        return _REGISTRY[name]()
+    except KeyError:
+        raise UnknownGeneratorError(
+            f"unknown generator {name!r}; valid: {', '.join(sorted(_REGISTRY))}") from None
+
+
+def factory_names() -> list[str]:
+    _ensure_loaded()
+    return sorted(_REGISTRY)
+
+
+def factories_with(tags: Iterable[Semantics], without: Iterable[Semantics] = ()) -> list[str]:
+    """Names of generators whose tags include all of `tags` and none of `without`."""
+    _ensure_loaded()
+    need, avoid = set(tags), set(without)
+    return sorted(n for n, c in _REGISTRY.items() if need <= c.tags and not (avoid & c.tags))
+
+
+def yaw_matrix(yaw: float) -> np.ndarray:
+    c, s = math.cos(yaw), math.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])

@@ -1,0 +1,1 @@
+"""Every generator module; importing this package registers them all."""

@@ -1,0 +1,148 @@
+"""`PartsFactory`: the shared skeleton of every generator here.
+
+A generator lists its pieces once, as `parts(p, detail)`: with detail=False the cheap version
+(plain boxes, low-poly circumscribed cylinders: never smaller than the detailed pieces) which
+`placeholder` concatenates, with detail=True the detailed one which `create` boolean-unions into
+a watertight mesh. Both are recentred by the SAME offset (computed from the cheap pieces'
+bounding boxes), so the local-frame contract holds (origin at the bottom-centre of the bbox)
+and placeholder and full mesh carry identical surfaces.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, ClassVar
+
+import numpy as np
+import shapely.geometry as sg
+
+from ...tags import Subpart
+from ..base import Asset, AssetFactory, Param, Surface, box_surfaces
+from ..parts import Part, concat, union
+
+
+def default_value(p: Param) -> Any:
+    """The value a missing parameter takes: a range's midpoint, False, or the first choice."""
+    if p.kind == "float":
+        return (p.low + p.high) / 2
+    if p.kind == "int":
+        return int(round((p.low + p.high) / 2))
+    if p.kind == "bool":
+        return False
+    return p.choices[0]
+
+
+class PartsFactory(AssetFactory):
+    """An `AssetFactory` built from a list of material-tagged `Part`s."""
+
+    #: material slot names, in a stable order (face_slots index into this list)
+    slots: ClassVar[list[str]] = ["body"]
+    #: True when the whole `bottom` polygon rests on mesh (a plinth, a slab, a foot disc) rather
+    #: than on legs; the tests then check points of it against the mesh
+    solid_bottom: ClassVar[bool] = False
+    #: names of `box_surfaces` entries not to emit (e.g. tables replace side_left/right)
+    drop_box: ClassVar[tuple[str, ...]] = ()
+    #: whether `create` is a closed (watertight) solid
+    closed: ClassVar[bool] = True
+
+    # ---- to implement
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        raise NotImplementedError
+
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """Surfaces beyond the bounding-box ones, in the design frame (same frame as `parts`).
+        One named like a box surface ("top", "bottom") replaces it."""
+        return []
+
+    # ---- shared machinery
+    def resolve(self, params: dict[str, Any] | None) -> dict[str, Any]:
+        """Validated params with every missing one set to its default."""
+        p = {k: default_value(v) for k, v in self.params.items()}
+        p.update(self.validate_params(dict(params or {})))
+        return p
+
+    def _layout(self, p: dict[str, Any]) -> tuple[list[Part], np.ndarray, np.ndarray]:
+        cheap = self.parts(p, False)
+        lo = np.full(3, np.inf)
+        hi = np.full(3, -np.inf)
+        for part in cheap:
+            bb = np.asarray(part.solid.bounding_box(), float)
+            lo = np.minimum(lo, bb[:3])
+            hi = np.maximum(hi, bb[3:])
+        offset = np.array([-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]])
+        return cheap, offset, hi - lo
+
+    def _surfaces(self, p: dict[str, Any], offset: np.ndarray, ext: np.ndarray) -> list[Surface]:
+        extra = [s.transformed(np.eye(3), offset) for s in self.extra_surfaces(p)]
+        names = {s.name for s in extra}
+        base = [s for s in box_surfaces(float(ext[0]), float(ext[1]), float(ext[2]))
+                if s.name not in names and s.name not in self.drop_box]
+        return base + extra
+
+    def _asset(self, p, mesh, face_slots, slots, offset, ext) -> Asset:
+        mesh.apply_translation(offset)
+        return Asset(mesh=mesh, surfaces=self._surfaces(p, offset, ext), face_slots=face_slots,
+                     slots=slots, closed=self.closed)
+
+    def placeholder(self, params: dict[str, Any]) -> Asset:
+        p = self.resolve(params)
+        cheap, offset, ext = self._layout(p)
+        mesh, fs, slots = concat(cheap, self.slots)
+        return self._asset(p, mesh, fs, slots, offset, ext)
+
+    def create(self, params: dict[str, Any]) -> Asset:
+        p = self.resolve(params)
+        _, offset, ext = self._layout(p)
+        mesh, fs, slots = union(self.parts(p, True), self.slots)
+        return self._asset(p, mesh, fs, slots, offset, ext)
+
+
+# ------------------------------------------------------------------------- surface helpers
+def support_rect(name: str, center, half_x: float, half_y: float) -> Surface:
+    """An upward (+Z) support surface: a rectangle +-half_x (X) by +-half_y (Y) about `center`."""
+    return Surface.rect(name, Subpart.SupportSurface, center, (0, 0, 1), (1, 0, 0),
+                        max(half_x, 0.005), max(half_y, 0.005))
+
+
+def support_polygon(name: str, center, polygon: sg.Polygon, subpart=Subpart.SupportSurface,
+                    up: bool = True) -> Surface:
+    """A horizontal surface with an arbitrary polygon in (x, y) about `center` (upward), or,
+    with up=False, a downward one (a bottom: normal -Z, u = +X so v = -Y: y is mirrored)."""
+    if up:
+        return Surface(name, subpart, np.asarray(center, float), np.array([0.0, 0.0, 1.0]),
+                       np.array([1.0, 0.0, 0.0]), polygon)
+    mirrored = sg.Polygon([(x, -y) for x, y in polygon.exterior.coords])
+    return Surface(name, subpart, np.asarray(center, float), np.array([0.0, 0.0, -1.0]),
+                   np.array([1.0, 0.0, 0.0]), mirrored)
+
+
+def bottom_rect(center, half_x: float, half_y: float) -> Surface:
+    """A `bottom` (normal -Z) rectangle about `center`: a footprint smaller than the bbox."""
+    return Surface.rect("bottom", Subpart.Bottom, center, (0, 0, -1), (1, 0, 0), half_x, half_y)
+
+
+def rect_side_surfaces(depth: float, width: float, height: float, z0: float = 0.0,
+                       prefix: str = "side_") -> list[Surface]:
+    """The four vertical bbox faces of a depth (X) x width (Y) box spanning z0..z0+height,
+    all Subpart.Side, normals +X, -X, +Y, -Y (named side_0..side_3)."""
+    d2, w2, hz = depth / 2, width / 2, z0 + height / 2
+    return [
+        Surface.rect(f"{prefix}0", Subpart.Side, (d2, 0, hz), (1, 0, 0), (0, 1, 0), w2, height / 2),
+        Surface.rect(f"{prefix}1", Subpart.Side, (-d2, 0, hz), (-1, 0, 0), (0, 1, 0), w2, height / 2),
+        Surface.rect(f"{prefix}2", Subpart.Side, (0, w2, hz), (0, 1, 0), (1, 0, 0), d2, height / 2),
+        Surface.rect(f"{prefix}3", Subpart.Side, (0, -w2, hz), (0, -1, 0), (1, 0, 0), d2, height / 2),
+    ]
+
+
+def polygon_side_surfaces(radius: float, n: int, height: float) -> list[Surface]:
+    """N vertical facets of the regular N-gon circumscribing a circle of `radius` about the Z
+    axis (facet i's outward normal at angle 2*pi*i/N), each 2*r*tan(pi/N) wide and full height."""
+    out = []
+    half_w = radius * math.tan(math.pi / n)
+    for i in range(n):
+        a = 2 * math.pi * i / n
+        nrm = (math.cos(a), math.sin(a), 0.0)
+        u = (-math.sin(a), math.cos(a), 0.0)
+        out.append(Surface.rect(f"side_{i}", Subpart.Side,
+                                (radius * nrm[0], radius * nrm[1], height / 2), nrm, u,
+                                half_w, height / 2))
+    return out

@@ -1,0 +1,295 @@
+"""Shared mesh parts, so that each generator is a short list of named, material-tagged pieces.
+
+Every builder here returns a `manifold3d.Manifold` (cheap to make: microseconds), and a generator
+tags each piece with a material slot as a `Part`. Two ways to turn a list of parts into a mesh:
+
+* `union(parts)` - a manifold3d boolean union: one watertight, self-intersection-free mesh for
+  the detailed `create` mesh. Part identity survives the union through manifold3d's originalID
+  (each part is made `as_original()`, and the result's `run_original_id`/`run_index` say which
+  triangles came from which part), so every output face keeps its part's material slot.
+* `concat(parts)` - a plain concatenation of the parts' vertex/face arrays (no booleans): cheap,
+  for placeholders. Each shell is closed, shells may overlap.
+
+Round things come in two flavours: `circumscribed=False` (the default, for detailed meshes) puts
+polygon vertices on the true circle, with one on each of +-X and +-Y when `sections` is a multiple
+of 4, so the bounding box is exact; `circumscribed=True` (for placeholders) scales the polygon
+out by 1/cos(pi/n) and turns it half a step so that its edge midpoints touch the circle on the
+axes: the low-poly solid contains the true circle and still has the exact bounding box.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Iterable, Sequence
+
+import manifold3d as m3d
+import numpy as np
+import trimesh
+
+Vec3 = Sequence[float]
+
+
+@dataclass(frozen=True)
+class Part:
+    """One solid piece of an asset and the name of its material slot ("wood", "metal"...)."""
+
+    solid: m3d.Manifold
+    slot: str
+
+
+def _round_sections(sections: int) -> int:
+    return max(4, int(math.ceil(sections / 4.0)) * 4)
+
+
+# ----------------------------------------------------------------------------------- primitives
+def box(extents: Vec3, center: Vec3 = (0.0, 0.0, 0.0)) -> m3d.Manifold:
+    """An axis-aligned box of size `extents` (x, y, z) centred on `center`."""
+    return m3d.Manifold.cube(tuple(float(e) for e in extents), True).translate(
+        tuple(float(c) for c in center))
+
+
+def box_between(lo: Vec3, hi: Vec3) -> m3d.Manifold:
+    """An axis-aligned box spanning corner `lo` to corner `hi`."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    return box(hi - lo, (lo + hi) / 2)
+
+
+def _octant_dirs(segments: int) -> np.ndarray:
+    """Unit directions covering the +++ octant of a sphere (including its three axis poles)."""
+    out = []
+    for i in range(segments + 1):
+        phi = (math.pi / 2) * i / segments  # from +Z down to the equator
+        for j in range(segments + 1):
+            th = (math.pi / 2) * j / segments
+            out.append((math.sin(phi) * math.cos(th), math.sin(phi) * math.sin(th), math.cos(phi)))
+    return np.unique(np.round(np.array(out), 12), axis=0)
+
+
+def bevel_box(extents: Vec3, center: Vec3 = (0.0, 0.0, 0.0), radius: float = 0.01,
+              segments: int = 2) -> m3d.Manifold:
+    """A box with every edge rounded by `radius` (segments=1 gives a chamfer), as the convex hull
+    of eight corner sphere patches. Its bounding box is exactly `extents` (the rounding only
+    removes material), so a plain `box` of the same size contains it (used by placeholders)."""
+    ext = np.asarray(extents, float)
+    r = float(min(radius, 0.49 * ext.min()))
+    if r <= 1e-5:
+        return box(ext, center)
+    dirs = _octant_dirs(max(1, segments))
+    pts = []
+    inner = ext / 2 - r
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                s = np.array([sx, sy, sz], float)
+                pts.append(inner * s + r * dirs * s)
+    return m3d.Manifold.hull_points(np.vstack(pts)).translate(tuple(float(c) for c in center))
+
+
+def tapered_box(bottom_xy: tuple[float, float], top_xy: tuple[float, float], z0: float, z1: float,
+                center_xy: tuple[float, float] = (0.0, 0.0)) -> m3d.Manifold:
+    """A square-section frustum (a tapered leg): bottom size `bottom_xy` at z0, top size `top_xy`
+    at z1, centred on `center_xy`."""
+    cx, cy = center_xy
+    pts = []
+    for (sx, sy), z in ((bottom_xy, z0), (top_xy, z1)):
+        for a in (-0.5, 0.5):
+            for b in (-0.5, 0.5):
+                pts.append((cx + a * sx, cy + b * sy, z))
+    return m3d.Manifold.hull_points(np.array(pts, float))
+
+
+def cylinder(radius: float, height: float, center: Vec3 = (0.0, 0.0, 0.0), sections: int = 32,
+             radius_top: float | None = None, circumscribed: bool = False) -> m3d.Manifold:
+    """A Z-axis cylinder (or cone frustum if `radius_top` is given) whose BOTTOM centre is
+    `center`. See the module docstring for `circumscribed`."""
+    n = _round_sections(sections)
+    rt = radius if radius_top is None else radius_top
+    k = 1.0 / math.cos(math.pi / n) if circumscribed else 1.0
+    c = m3d.Manifold.cylinder(float(height), float(radius * k), float(rt * k), n)
+    if circumscribed:
+        c = c.rotate((0.0, 0.0, 180.0 / n))
+    return c.translate(tuple(float(v) for v in center))
+
+
+def rod(p0: Vec3, p1: Vec3, radius: float, sections: int = 12) -> m3d.Manifold:
+    """A cylinder of `radius` from point p0 to point p1 (any direction)."""
+    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    d = p1 - p0
+    length = float(np.linalg.norm(d))
+    c = m3d.Manifold.cylinder(length, float(radius), -1.0, _round_sections(sections))
+    z = np.array([0.0, 0.0, 1.0])
+    dn = d / length
+    axis = np.cross(z, dn)
+    s, cth = np.linalg.norm(axis), float(np.dot(z, dn))
+    if s < 1e-12:
+        rot = np.eye(3) if cth > 0 else np.diag([1.0, -1.0, -1.0])
+    else:
+        k = axis / s
+        kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+        rot = np.eye(3) + s * kx + (1 - cth) * kx @ kx
+    mat = np.hstack([rot, p0[:, None]])
+    return c.transform(mat)
+
+
+def lathe(profile: Sequence[tuple[float, float]], sections: int = 48,
+          circumscribed: bool = False) -> m3d.Manifold:
+    """Revolve a closed 2D profile of (radius, z) points (counter-clockwise or not; radius >= 0)
+    about the Z axis: cups, plates, vases and lamp shades. A profile that is a ring (not
+    touching the axis) gives a tube; one with a notch gives a hollow vessel."""
+    pts = np.asarray(profile, float)
+    n = _round_sections(sections)
+    if circumscribed:
+        pts = pts * np.array([1.0 / math.cos(math.pi / n), 1.0])
+    cs = m3d.CrossSection([pts], m3d.FillRule.Positive if _area(pts) > 0 else m3d.FillRule.Negative)
+    out = m3d.Manifold.revolve(cs, n)
+    if circumscribed:
+        out = out.rotate((0.0, 0.0, 180.0 / n))
+    return out
+
+
+def _area(pts: np.ndarray) -> float:
+    x, y = pts[:, 0], pts[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def torus(major: float, minor: float, center: Vec3 = (0.0, 0.0, 0.0), sections: int = 32,
+          tube_sections: int = 12) -> m3d.Manifold:
+    """A torus in the XY plane around `center` (rotate it for handles)."""
+    cs = m3d.CrossSection.circle(float(minor), _round_sections(tube_sections)).translate(
+        (float(major), 0.0))
+    return m3d.Manifold.revolve(cs, _round_sections(sections)).translate(
+        tuple(float(c) for c in center))
+
+
+def panel(width: float, height: float, thickness: float, center: Vec3 = (0.0, 0.0, 0.0),
+          normal_axis: str = "x") -> m3d.Manifold:
+    """A thin board of `thickness` along `normal_axis` ("x", "y" or "z"); width runs along the
+    next axis, height along the one after (x: width=Y, height=Z; y: width=X, height=Z;
+    z: width=X, height=Y)."""
+    ext = {"x": (thickness, width, height), "y": (width, thickness, height),
+           "z": (width, height, thickness)}[normal_axis]
+    return box(ext, center)
+
+
+def frame(outer_w: float, outer_h: float, border: float, depth: float,
+          center: Vec3 = (0.0, 0.0, 0.0)) -> m3d.Manifold:
+    """A rectangular picture-frame ring lying in the YZ plane (depth along X): outer size
+    outer_w (Y) x outer_h (Z), members `border` wide."""
+    outer = box((depth, outer_w, outer_h), center)
+    inner = box((depth * 2 + 0.01, outer_w - 2 * border, outer_h - 2 * border), center)
+    return outer - inner
+
+
+def legs(footprint: tuple[float, float], inset: float, thickness: float, z0: float, z1: float,
+         taper: float = 1.0, round_legs: bool = False, circumscribed: bool = False,
+         sections: int = 16) -> list[m3d.Manifold]:
+    """Four legs under a rectangle `footprint` = (depth X, width Y): each leg's outer faces are
+    `inset` from the footprint's edges; legs run from z0 (floor) to z1. `taper` < 1 shrinks the
+    foot (tapered leg, outer faces kept vertical... approximately: the taper is about the leg
+    axis). `round_legs` makes cylinders of diameter `thickness`."""
+    d, w = footprint
+    cx = d / 2 - inset - thickness / 2
+    cy = w / 2 - inset - thickness / 2
+    out = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            c = (sx * cx, sy * cy)
+            if round_legs:
+                r = thickness / 2
+                out.append(cylinder(r, z1 - z0, (c[0], c[1], z0), sections,
+                                    radius_top=None, circumscribed=circumscribed)
+                           if taper >= 0.999 else
+                           cylinder(r * taper, z1 - z0, (c[0], c[1], z0), sections, radius_top=r,
+                                    circumscribed=circumscribed))
+            elif taper >= 0.999:
+                out.append(box((thickness, thickness, z1 - z0), (c[0], c[1], (z0 + z1) / 2)))
+            else:
+                tb = thickness * taper
+                out.append(tapered_box((tb, tb), (thickness, thickness), z0, z1, c))
+    return out
+
+
+# --------------------------------------------------------------------------------- to meshes
+def _mesh_arrays(man: m3d.Manifold) -> tuple[np.ndarray, np.ndarray]:
+    g = man.to_mesh64()
+    return (np.asarray(g.vert_properties, float)[:, :3],
+            np.asarray(g.tri_verts, np.int64).reshape(-1, 3))
+
+
+def _slot_table(parts: Sequence[Part], slots: Sequence[str] | None) -> list[str]:
+    if slots is not None:
+        out = list(slots)
+        for p in parts:
+            if p.slot not in out:
+                out.append(p.slot)
+        return out
+    out: list[str] = []
+    for p in parts:
+        if p.slot not in out:
+            out.append(p.slot)
+    return out
+
+
+def concat(parts: Iterable[Part], slots: Sequence[str] | None = None
+           ) -> tuple[trimesh.Trimesh, np.ndarray, list[str]]:
+    """Concatenate parts without booleans (cheap; for placeholders). Returns the mesh, the
+    per-face slot indices and the slot names."""
+    parts = [p for p in parts if not p.solid.is_empty()]
+    table = _slot_table(parts, slots)
+    vs, fs, ss = [], [], []
+    off = 0
+    for p in parts:
+        v, f = _mesh_arrays(p.solid)
+        vs.append(v)
+        fs.append(f + off)
+        ss.append(np.full(len(f), table.index(p.slot), np.int64))
+        off += len(v)
+    mesh = trimesh.Trimesh(np.vstack(vs), np.vstack(fs), process=False)
+    return mesh, np.concatenate(ss), table
+
+
+def union(parts: Iterable[Part], slots: Sequence[str] | None = None,
+          subtract: Iterable[m3d.Manifold] = ()) -> tuple[trimesh.Trimesh, np.ndarray, list[str]]:
+    """Boolean-union the parts (then subtract `subtract`) into one watertight mesh, keeping
+    each face's material slot via manifold3d's originalID. Faces created by `subtract` cuts take
+    the slot of the part they were cut into (the cut solids are marked as that part). Returns
+    the mesh, the per-face slot indices and the slot names."""
+    parts = [p for p in parts if not p.solid.is_empty()]
+    table = _slot_table(parts, slots)
+    id_slot: dict[int, int] = {}
+    tagged = []
+    for p in parts:
+        s = p.solid.as_original()
+        id_slot[s.original_id()] = table.index(p.slot)
+        tagged.append(s)
+    solid = m3d.Manifold.batch_boolean(tagged, m3d.OpType.Add)
+    cuts = [c for c in subtract if not c.is_empty()]
+    if cuts:
+        solid = m3d.Manifold.batch_boolean([solid] + cuts, m3d.OpType.Subtract)
+    g = solid.to_mesh64()
+    verts = np.asarray(g.vert_properties, float)[:, :3]
+    faces = np.asarray(g.tri_verts, np.int64).reshape(-1, 3)
+    face_slots = np.zeros(len(faces), np.int64)
+    run_index = np.asarray(g.run_index, np.int64) // 3
+    run_ids = np.asarray(g.run_original_id, np.int64)
+    default = table.index(parts[0].slot) if parts else 0
+    for i, oid in enumerate(run_ids):
+        face_slots[run_index[i]:run_index[i + 1]] = id_slot.get(int(oid), default)
+    mesh = trimesh.Trimesh(verts, faces, process=False)
+    return mesh, face_slots, table
+
+
+def solid_union(solids: Iterable[m3d.Manifold]) -> m3d.Manifold:
+    """Union of bare manifolds (no slot tracking), e.g. to build a cutter or a compound part."""
+    solids = [s for s in solids if not s.is_empty()]
+    return m3d.Manifold.batch_boolean(solids, m3d.OpType.Add)
+
+
+def circle_polygon(radius: float, sections: int = 32, center: tuple[float, float] = (0.0, 0.0)):
+    """A shapely polygon inscribed in a circle (vertices on it, one on +X), so that it lies inside
+    any mesh disc of the same radius built with a multiple of `sections` segments."""
+    import shapely.geometry as sg
+
+    n = _round_sections(sections)
+    a = np.arange(n) * 2 * math.pi / n
+    return sg.Polygon(np.c_[center[0] + radius * np.cos(a), center[1] + radius * np.sin(a)])

@@ -1,0 +1,128 @@
+"""`indoorgen` command line: argument handling only; the work is in `pipeline` and friends.
+
+Any `IndoorGenError` becomes one line on stderr and exit status 2.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import logging
+import sys
+from pathlib import Path
+
+from .errors import ConfigError, IndoorGenError
+
+
+def _load_program(spec: str):
+    """`path/to/file.py:function` -> the function (a user's own constraint program)."""
+    path, _, func = spec.partition(":")
+    if not func or not Path(path).is_file():
+        raise ConfigError(f"--program {spec!r}: expected FILE.py:FUNCTION with an existing file")
+    mod_spec = importlib.util.spec_from_file_location(Path(path).stem, path)
+    mod = importlib.util.module_from_spec(mod_spec)
+    try:
+        mod_spec.loader.exec_module(mod)
+    except IndoorGenError:
+        raise
+    except Exception as e:  # a user's file that does not import
+        raise ConfigError(f"--program {spec!r} failed to load: {type(e).__name__}: {e}") from None
+    fn = getattr(mod, func, None)
+    if not callable(fn):
+        raise ConfigError(f"--program {spec!r}: {path} has no function {func!r}")
+    return fn
+
+
+def _cmd_generate(args) -> int:
+    from .pipeline import GenerateConfig, check_writable, generate, write_scene_dir
+    out = Path(args.out or f"scene_{args.seed}")
+    check_writable(out)
+    if args.seed < 0:
+        raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    cfg = GenerateConfig(room_type=args.room, size=tuple(args.size) if args.size else None,
+                         program=_load_program(args.program) if args.program else None,
+                         check=args.check)
+    if args.polygon:
+        try:
+            cfg.polygon = [tuple(map(float, p)) for p in json.loads(args.polygon)]
+        except (ValueError, TypeError):
+            raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
+                              f"{args.polygon!r}") from None
+    gen = generate(args.seed, cfg, progress=not args.quiet and sys.stderr.isatty())
+    write_scene_dir(gen, out, usd_ext=args.usd_format)
+    if not args.quiet:
+        rep = gen.report
+        viol = sum(r["n_violated"] for r in rep["rooms"].values())
+        print(f"{out}: {rep['objects']} objects, {viol} hard constraints violated, "
+              f"{rep['timings_s']['total']:.2f} s")
+    return 0
+
+
+def _cmd_validate(args) -> int:
+    from .validate import validate_scene_dir
+    rep = validate_scene_dir(Path(args.scene))
+    print(json.dumps(rep, indent=1, sort_keys=True))
+    return 0 if rep["ok"] else 1
+
+
+def _cmd_assets_list(args) -> int:
+    from .assets import factory_names, get_factory
+    rows = []
+    for n in factory_names():
+        f = get_factory(n)
+        rows.append({"name": n, "tags": sorted(t.value for t in f.tags),
+                     "n_params": len(f.params), "joints": []})
+    if args.json:
+        print(json.dumps(rows, indent=1))
+    else:
+        for r in rows:
+            print(f"{r['name']:24s} {r['n_params']:3d} params  {', '.join(r['tags'])}")
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="indoorgen", description="Procedural furnished rooms.")
+    p.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
+    sub = p.add_subparsers(dest="command", required=True)
+
+    g = sub.add_parser("generate", help="generate a furnished room into a directory")
+    g.add_argument("--seed", type=int, default=0)
+    g.add_argument("--room", default="living_room", help="living_room | dining_room")
+    g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
+    g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
+    g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")
+    g.add_argument("--out", help="output directory (default ./scene_SEED)")
+    g.add_argument("--usd-format", choices=["usda", "usdc"], default="usda")
+    g.add_argument("--check", action="store_true",
+                   help="verify incremental constraint evaluation against full (slow)")
+    g.add_argument("-q", "--quiet", action="store_true")
+    g.set_defaults(func=_cmd_generate)
+
+    v = sub.add_parser("validate", help="check a generated scene directory independently")
+    v.add_argument("scene")
+    v.set_defaults(func=_cmd_validate)
+
+    a = sub.add_parser("assets", help="the asset catalogue")
+    asub = a.add_subparsers(dest="assets_command", required=True)
+    al = asub.add_parser("list", help="list generators")
+    al.add_argument("--json", action="store_true")
+    al.set_defaults(func=_cmd_assets_list)
+    return p
+
+
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
+                        format="%(levelname)s %(name)s: %(message)s")
+    try:
+        return args.func(args)
+    except IndoorGenError as e:
+        print(f"indoorgen: error: {e}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

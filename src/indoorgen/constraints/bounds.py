@@ -1,0 +1,144 @@
+"""Cardinality bounding (Infinigen Indoors, appendix E.2).
+
+Walks a problem's hard constraints and finds every *context* into which objects could be added or
+from which they could be deleted, with the count bounds the constraints put on it, in the current
+scene. A context is a chain `scene()[tags...].related_to(parents, relation)...`: the tags a new
+object must carry and, per relation, the parent objects it may attach to. Bounds are read against
+the current state, so `chairs.count() <= tables.count() * 4` bounds chairs by today's table count.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..tags import Semantics, Subpart
+from .evaluator import Evaluator
+from .expressions import (BoolOp, Compare, Count, ForAll, FromGenerator, InRange, Node, Problem,
+                          RelatedTo, SceneSet, Tagged)
+from .relations import Relation
+
+
+@dataclass(frozen=True)
+class Context:
+    """What an object must be to belong to a counted set: tags, excluded tags and relations
+    (each with the set expression its parents come from)."""
+
+    tags: frozenset
+    excluded: frozenset
+    relations: tuple[tuple[Relation, Node], ...]
+    generator: str | None = None
+
+
+@dataclass
+class Bound:
+    """A context bound in the current state: `lo <= count <= hi`, with concrete parent choices."""
+
+    name: str
+    context: Context
+    set_node: Node
+    env: dict
+    parents: tuple[tuple[Relation, tuple[str, ...]], ...]
+    lo: float
+    hi: float
+    count: int
+    members: frozenset = field(default_factory=frozenset)
+
+    @property
+    def can_add(self) -> bool:
+        return self.count + 1 <= self.hi + 1e-9 and all(p for _, p in self.parents)
+
+    @property
+    def below(self) -> bool:
+        return self.count < self.lo - 1e-9
+
+    @property
+    def can_delete(self) -> bool:
+        return self.count - 1 >= self.lo - 1e-9
+
+    def stage(self, room_ids: frozenset[str]) -> str:
+        return context_stage(self.context, self.parents, room_ids)
+
+
+def context_of(node: Node) -> Context | None:
+    """The addable context of a set expression, or None if objects cannot be added to it
+    (unions, differences, loop variables...)."""
+    tags: set = set()
+    excluded: set = set()
+    rels: list = []
+    generator = None
+    while True:
+        if isinstance(node, SceneSet):
+            break
+        if isinstance(node, Tagged):
+            tags |= node.include
+            excluded |= node.exclude
+            node = node.children[0]
+        elif isinstance(node, FromGenerator):
+            generator = node.name
+            node = node.children[0]
+        elif isinstance(node, RelatedTo):
+            rels.append((node.relation, node.children[1]))
+            node = node.children[0]
+        else:
+            return None
+    if Semantics.Room in tags:
+        return None
+    return Context(frozenset(tags), frozenset(excluded), tuple(reversed(rels)), generator)
+
+
+def context_stage(ctx: Context, parents, room_ids: frozenset[str]) -> str:
+    """large: on the room's floor only; medium: on walls/ceiling, or on the floor beside a
+    furniture parent; small: on or in other objects."""
+    on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in ctx.relations)
+    object_parent = any(any(p not in room_ids for p in ps) for _, ps in parents)
+    if object_parent:
+        return "medium" if on_floor else "small"
+    return "large" if on_floor else "medium"
+
+
+def _count_bounds(c: Node, ev: Evaluator, env: dict) -> list[tuple[Node, float, float, dict]]:
+    """(set node, lo, hi, env) for each count bound found in constraint `c` under `env`."""
+    out = []
+    if isinstance(c, InRange) and isinstance(c.children[0], Count):
+        out.append((c.children[0].children[0], c.lo, c.hi, env))
+    elif isinstance(c, Compare):
+        a, b = c.children
+        op = c.op
+        if isinstance(b, Count) and not isinstance(a, Count):
+            a, b = b, a
+            op = {"<=": ">=", ">=": "<=", "<": ">", ">": "<", "==": "=="}[op]
+        if isinstance(a, Count):
+            k = float(ev.value(b, env))
+            lo, hi = {"<=": (0, k), ">=": (k, math.inf), "==": (k, k),
+                      "<": (0, math.ceil(k) - 1), ">": (math.floor(k) + 1, math.inf)}[op]
+            out.append((a.children[0], lo, hi, env))
+    elif isinstance(c, BoolOp) and c.op == "and":
+        for ch in c.children:
+            out += _count_bounds(ch, ev, env)
+    elif isinstance(c, ForAll):
+        for m in sorted(ev.value(c.children[0], env)):
+            out += _count_bounds(c.children[1], ev, {**env, c.var.uid: m})
+    return out
+
+
+def _merge_parents(rels: list[tuple[Relation, frozenset]]) -> tuple:
+    """One entry per distinct relation: a chain that names the same relation twice
+    (`tvs_on_stands.related_to(this_stand, on_top)`) needs one parent in both sets."""
+    merged: dict[Relation, frozenset] = {}
+    for rel, ps in rels:
+        merged[rel] = merged[rel] & ps if rel in merged else frozenset(ps)
+    return tuple((rel, tuple(sorted(ps))) for rel, ps in merged.items())
+
+
+def find_bounds(problem: Problem, ev: Evaluator) -> list[Bound]:
+    """Every count bound of `problem`'s constraints on an addable context, in the current state."""
+    out = []
+    for name, c in problem.constraints.items():
+        for set_node, lo, hi, env in _count_bounds(c, ev, {}):
+            ctx = context_of(set_node)
+            if ctx is None:
+                continue
+            parents = _merge_parents([(rel, ev.value(pnode, env)) for rel, pnode in ctx.relations])
+            members = ev.value(set_node, env)
+            out.append(Bound(name, ctx, set_node, env, parents, lo, hi, len(members), members))
+    return out

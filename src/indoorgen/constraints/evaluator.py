@@ -1,0 +1,273 @@
+"""Incremental evaluation of a `Problem` against a changing scene.
+
+The problem is compiled once into a DAG of expression nodes. Each (node, loop-binding) pair gets a
+cache entry holding its value, the entries it read (with their versions) and the objects it
+watched. After a move the solver calls `notify` with the objects it touched:
+
+1. entries watching a touched object (and `scene()` entries, when objects were added or deleted)
+   are marked dirty, and everything downstream of them is marked suspect;
+2. `evaluate` walks from the roots; an entry that is neither dirty nor suspect returns its cached
+   value at once, a suspect entry first re-checks its inputs and is recomputed only if one of
+   them really changed (early cut-off), and a dirty entry is recomputed.
+
+So a move re-evaluates only the nodes whose object sets contain the moved, added or deleted
+object, and deletions are as incremental as moves. `check=True` verifies every incremental result
+against a fresh full evaluation.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from typing import Any, Iterable, Protocol
+
+import numpy as np
+import shapely.geometry as sg
+
+from .expressions import Node, Problem
+
+log = logging.getLogger(__name__)
+
+Key = tuple  # (node uid, bound object names of the node's free variables)
+
+
+class ObjectView(Protocol):
+    """What the evaluator needs to know about objects; the solver state implements it."""
+
+    def all_ids(self) -> frozenset[str]: ...
+    def tags(self, o: str) -> frozenset: ...
+    def relations(self, o: str) -> list[tuple[Any, str]]: ...
+    def center(self, o: str) -> np.ndarray: ...
+    def front(self, o: str) -> np.ndarray: ...
+    def front_point(self, o: str) -> np.ndarray: ...
+    def side_axis(self, o: str) -> np.ndarray: ...
+    def yaw(self, o: str) -> float: ...
+    def extents(self, o: str) -> np.ndarray: ...
+    def footprint(self, o: str) -> sg.Polygon: ...
+    def outline(self, o: str): ...
+    def world_mesh(self, o: str): ...
+    def support_polygon(self, o: str) -> sg.Polygon | None: ...
+
+
+@dataclass
+class _Entry:
+    node: Node
+    env: dict
+    value: Any = None
+    version: int = 0
+    inputs: dict = field(default_factory=dict)   # child key -> child version when read
+    parents: set = field(default_factory=set)
+    watched: frozenset = frozenset()
+    membership: bool = False
+
+
+@dataclass
+class Result:
+    """One evaluation of a problem: every named constraint's violation and score term's value."""
+
+    violations: dict[str, float]
+    scores: dict[str, float]
+    loss: float
+
+    @property
+    def violation(self) -> float:
+        return float(sum(self.violations.values()))
+
+    @property
+    def n_violated(self) -> int:
+        return sum(1 for v in self.violations.values() if v > 1e-9)
+
+
+class Evaluator:
+    """Evaluates one `Problem` over an `ObjectView`, incrementally between `notify` calls."""
+
+    def __init__(self, problem: Problem, view: ObjectView, *, check: bool = False):
+        self.problem, self.view, self.check = problem, view, check
+        self._entries: dict[Key, _Entry] = {}
+        self._watchers: dict[str, set[Key]] = {}
+        self._membership: set[Key] = set()
+        self._by_env_obj: dict[str, set[Key]] = {}
+        self._dirty: set[Key] = set()
+        self._suspect: set[Key] = set()
+        self._frames: list[tuple[_Entry | None, dict, set, bool]] = []
+        self._roots = [(("c", n), c) for n, c in problem.constraints.items()] + \
+                      [(("s", n), t.expr) for n, t in problem.score_terms.items()]
+        self.recomputed = 0  # entries recomputed since construction (for tests and benchmarks)
+
+    # -- the interface nodes use while computing ------------------------------------------
+    def get(self, node: Node, env: dict) -> Any:
+        """The value of `node` under loop bindings `env`, from cache when still valid."""
+        key = (node.uid, tuple(env[v] for v in sorted(node.free_vars)))
+        e = self._refresh(key, node, env)
+        if self._frames:
+            self._frames[-1][1][key] = e.version
+        return e.value
+
+    def watch(self, objs: Iterable[str]) -> None:
+        """Mark the entry being computed as depending on the state of `objs`."""
+        self._frames[-1][2].update(objs)
+
+    def watch_membership(self) -> None:
+        """Mark the entry being computed as depending on which objects exist."""
+        f = self._frames[-1]
+        self._frames[-1] = (f[0], f[1], f[2], True)
+
+    # -- driving it ----------------------------------------------------------------------------
+    def notify(self, changed: Iterable[str] = (), *, added: Iterable[str] = (),
+               removed: Iterable[str] = ()) -> None:
+        """Tell the evaluator which objects moved or changed relations/params (`changed`), were
+        added or were deleted since the last evaluation."""
+        added, removed = list(added), list(removed)
+        dirty: set[Key] = set()
+        for o in list(changed) + removed:
+            dirty |= self._watchers.get(o, set())
+        if added or removed:
+            dirty |= self._membership
+        for o in removed:
+            for key in list(self._by_env_obj.pop(o, ())):
+                self._drop(key)
+            self._watchers.pop(o, None)
+        dirty = {k for k in dirty if k in self._entries}
+        self._dirty |= dirty
+        stack = list(dirty)
+        suspect = self._suspect
+        while stack:
+            k = stack.pop()
+            if k in suspect:
+                continue
+            suspect.add(k)
+            e = self._entries.get(k)
+            if e is not None:
+                stack.extend(p for p in e.parents if p not in suspect)
+
+    def evaluate(self) -> Result:
+        """Bring every root up to date and return the problem's current result."""
+        vals = {}
+        for key, node in self._roots:
+            vals[key] = self.get(node, {})
+        res = self._result(vals)
+        if self.check:
+            full = Evaluator(self.problem, self.view).evaluate()
+            for name in res.violations:
+                if not _same(res.violations[name], full.violations[name]):
+                    raise AssertionError(f"incremental != full for constraint {name!r}: "
+                                         f"{res.violations[name]} vs {full.violations[name]}")
+            for name in res.scores:
+                if not _same(res.scores[name], full.scores[name]):
+                    raise AssertionError(f"incremental != full for score {name!r}: "
+                                         f"{res.scores[name]} vs {full.scores[name]}")
+        return res
+
+    def value(self, node: Node, env: dict | None = None) -> Any:
+        """Evaluate any node of the program (e.g. a set expression, for bound reasoning)."""
+        return self.get(node, env or {})
+
+    @property
+    def n_entries(self) -> int:
+        return len(self._entries)
+
+    # -- internals -----------------------------------------------------------------------------
+    def _result(self, vals: dict) -> Result:
+        viol = {n: float(vals[("c", n)]) for n in self.problem.constraints}
+        scores = {n: float(vals[("s", n)]) for n in self.problem.score_terms}
+        loss = sum(t.weight * t.sign * scores[n] for n, t in self.problem.score_terms.items())
+        return Result(viol, scores, float(loss))
+
+    def _refresh(self, key: Key, node: Node, env: dict) -> _Entry:
+        e = self._entries.get(key)
+        if e is not None and key not in self._suspect:
+            return e
+        if e is not None and key not in self._dirty:
+            # suspect: recompute only if one of its inputs really changed
+            unchanged = True
+            for ck, ver in list(e.inputs.items()):
+                ce = self._entries.get(ck)
+                if ce is None:
+                    unchanged = False
+                    break
+                ce = self._refresh(ck, ce.node, ce.env)
+                if ce.version != ver:
+                    unchanged = False
+                    break
+            if unchanged:
+                self._suspect.discard(key)
+                return e
+        return self._compute(key, node, env, e)
+
+    def _compute(self, key: Key, node: Node, env: dict, old: _Entry | None) -> _Entry:
+        benv = {v: env[v] for v in node.free_vars}
+        self._frames.append((old, {}, set(), False))
+        try:
+            value = node.compute(self, benv)
+        finally:
+            _, inputs, watched, membership = self._frames.pop()
+        self.recomputed += 1
+        if old is None:
+            e = _Entry(node, benv)
+            self._entries[key] = e
+            for o in benv.values():
+                self._by_env_obj.setdefault(o, set()).add(key)
+        else:
+            e = old
+        # re-link inputs
+        for ck in e.inputs.keys() - inputs.keys():
+            self._unlink(ck, key)
+        for ck in inputs.keys() - e.inputs.keys():
+            ce = self._entries.get(ck)
+            if ce is not None:
+                ce.parents.add(key)
+        e.inputs = inputs
+        # re-register watches
+        watched = frozenset(watched)
+        if watched != e.watched:
+            for o in e.watched - watched:
+                s = self._watchers.get(o)
+                if s is not None:
+                    s.discard(key)
+            for o in watched - e.watched:
+                self._watchers.setdefault(o, set()).add(key)
+            e.watched = watched
+        if membership != e.membership:
+            (self._membership.add if membership else self._membership.discard)(key)
+            e.membership = membership
+        if old is None or not _same_value(old.value, value):
+            e.version += 1
+        e.value = value
+        self._dirty.discard(key)
+        self._suspect.discard(key)
+        return e
+
+    def _unlink(self, child: Key, parent: Key) -> None:
+        ce = self._entries.get(child)
+        if ce is None:
+            return
+        ce.parents.discard(parent)
+        if not ce.parents and ce.env:  # an orphaned per-binding entry: nobody reads it now
+            self._drop(child)
+
+    def _drop(self, key: Key) -> None:
+        e = self._entries.pop(key, None)
+        if e is None:
+            return
+        for o in e.watched:
+            s = self._watchers.get(o)
+            if s is not None:
+                s.discard(key)
+        self._membership.discard(key)
+        for o in e.env.values():
+            s = self._by_env_obj.get(o)
+            if s is not None:
+                s.discard(key)
+        self._dirty.discard(key)
+        self._suspect.discard(key)
+        for ck in e.inputs:
+            self._unlink(ck, key)
+
+
+def _same_value(a: Any, b: Any) -> bool:
+    if isinstance(a, float) and isinstance(b, float):
+        return a == b or (a != a and b != b)
+    return a == b
+
+
+def _same(a: float, b: float) -> bool:
+    return abs(a - b) <= 1e-9 * max(1.0, abs(a), abs(b))

@@ -1,0 +1,33 @@
+"""Errors a user can cause. The CLI turns any of these into one line on stderr and exit 2."""
+
+
+class IndoorGenError(Exception):
+    """Base class: a problem with the user's input, config or environment, not a bug."""
+
+
+class ConfigError(IndoorGenError):
+    """A bad option or configuration value."""
+
+
+class UnknownRoomTypeError(ConfigError):
+    """A room type that no program exists for."""
+
+
+class UnknownGeneratorError(ConfigError):
+    """A program or command names an asset generator that is not registered."""
+
+
+class InvalidGeometryError(ConfigError):
+    """A polygon or size that cannot make a room (zero area, self-intersecting...)."""
+
+
+class ConstraintError(IndoorGenError):
+    """A constraint program that is malformed or contradictory (e.g. in_range(5, 2))."""
+
+
+class OutputError(IndoorGenError):
+    """An output location that cannot be written."""
+
+
+class ParameterError(ConfigError):
+    """An asset parameter override with an unknown name or an out-of-range value."""

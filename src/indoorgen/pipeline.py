@@ -1,0 +1,225 @@
+"""`generate(seed, config) -> Generated`: the only place that orders the stages.
+
+room architecture -> constraint program -> staged solve -> full-mesh check -> Scene, and
+`write_scene_dir` for the files (written to a temporary directory, then renamed into place).
+"""
+from __future__ import annotations
+
+import json
+import logging
+import os
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from .assets import Asset
+from .constraints.evaluator import Result
+from .constraints.expressions import Problem
+from .constraints.expressions import scene as scene_set
+from .errors import ConfigError, InvalidGeometryError, OutputError
+from .floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
+from .programs import get_program
+from .rng import stream
+from .scene import Pose, RelationInstance, Room, Scene, SceneObject
+from .solver.anneal import AnnealConfig
+from .solver.assets_cache import AssetCache
+from .solver.finalize import full_mesh_check
+from .solver.greedy import solve
+from .solver.state import State
+from .tags import Semantics
+
+log = logging.getLogger(__name__)
+
+#: plausible sizes (width range, depth range) in metres when the user gives none
+DEFAULT_SIZES = {
+    "living_room": ((4.6, 6.4), (3.9, 5.4)),
+    "dining_room": ((4.0, 5.4), (3.6, 4.8)),
+}
+
+
+@dataclass
+class GenerateConfig:
+    """What to generate. `program` overrides the room type's built-in constraint program."""
+
+    room_type: str = "living_room"
+    size: tuple[float, float] | None = None
+    polygon: list[tuple[float, float]] | None = None
+    height: float = 2.7
+    wall_thickness: float = 0.12
+    steps: dict[str, int] | None = None
+    check: bool = False
+    program: Callable[..., Problem] | None = None
+
+    def to_json(self) -> dict:
+        return {"room_type": self.room_type,
+                "size": list(self.size) if self.size else None,
+                "polygon": [list(p) for p in self.polygon] if self.polygon else None,
+                "height": self.height, "wall_thickness": self.wall_thickness,
+                "steps": self.steps,
+                "program": getattr(self.program, "__name__", None)}
+
+
+@dataclass
+class Generated:
+    """A solved scene plus what export and reporting need (rooms, solver state, cache)."""
+
+    scene: Scene
+    rooms: dict[str, RoomGeometry]
+    state: State
+    cache: AssetCache
+    results: dict[str, Result]
+    report: dict[str, Any] = field(default_factory=dict)
+
+    def full_assets(self) -> dict[str, Asset]:
+        return {n: self.cache.full(o.generator, o.params) for n, o in self.scene.objects.items()}
+
+    def footprints(self) -> dict:
+        return {n: self.state.footprint(n) for n in self.scene.objects}
+
+
+def _make_room(seed: int, cfg: GenerateConfig) -> Room:
+    from .programs import ROOM_PROGRAMS
+    if cfg.program is None and cfg.room_type not in ROOM_PROGRAMS:
+        get_program(cfg.room_type)  # raises UnknownRoomTypeError
+    rng = stream(seed, "room", "architecture")
+    if cfg.polygon is not None:
+        poly = cfg.polygon
+    else:
+        if cfg.size is not None:
+            w, d = cfg.size
+            if not (w > 0 and d > 0):
+                raise InvalidGeometryError(f"room size {w} x {d} must be positive")
+            if w < 2.0 or d < 2.0 or w > 30 or d > 30:
+                raise InvalidGeometryError(f"room size {w} x {d} m is out of range; each side "
+                                           "must be between 2 and 30 m")
+        else:
+            (w0, w1), (d0, d1) = DEFAULT_SIZES.get(cfg.room_type, ((4.0, 6.0), (3.5, 5.0)))
+            w, d = round(float(rng.uniform(w0, w1)), 2), round(float(rng.uniform(d0, d1)), 2)
+        poly = rectangle(w, d)
+    if not (1.8 <= cfg.height <= 6.0):
+        raise InvalidGeometryError(f"wall height {cfg.height} m is out of range [1.8, 6.0]")
+    shape = validate_polygon(poly)
+    coords = [tuple(map(float, c)) for c in list(shape.exterior.coords)[:-1]]
+    room = Room(cfg.room_type + "_0", cfg.room_type, coords, cfg.height, cfg.wall_thickness)
+    room.doors.append(place_door(room, rng))
+    return room
+
+
+def _room_set(name: str):
+    return scene_set()[Semantics.Room].named(name)
+
+
+def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: bool = False
+             ) -> Generated:
+    """Generate one furnished room from `seed`. Same seed + config + version => same scene."""
+    cfg = config or GenerateConfig()
+    timings: dict[str, float] = {}
+    t0 = time.perf_counter()
+    room = _make_room(seed, cfg)
+    geometry = {room.name: build_room(room)}
+    program = cfg.program or get_program(cfg.room_type)
+    problems = {room.name: program(_room_set(room.name))}
+    if not isinstance(problems[room.name], Problem):
+        raise ConfigError(f"program {getattr(program, '__name__', program)!r} must return a "
+                          f"Problem, got {type(problems[room.name]).__name__}")
+    timings["architecture"] = time.perf_counter() - t0
+
+    cache = AssetCache()
+    state = State(geometry, cache)
+    t1 = time.perf_counter()
+    stats, evaluators = solve(state, problems, seed, config=AnnealConfig(check=cfg.check),
+                              steps=cfg.steps, progress=progress)
+    timings["solve"] = time.perf_counter() - t1
+
+    t2 = time.perf_counter()
+    removed = full_mesh_check(state)
+    for ev in evaluators.values():
+        ev.notify(removed=removed)
+    results = {r: ev.evaluate() for r, ev in evaluators.items()}
+    timings["full_meshes"] = time.perf_counter() - t2
+
+    sc = Scene(seed=seed, config=cfg.to_json())
+    sc.rooms[room.name] = room
+    for name, ob in state.objects.items():
+        sc.add_object(SceneObject(
+            name=name, generator=ob.generator, params=ob.params, seed=ob.seed,
+            pose=Pose(tuple(float(v) for v in ob.position), float(ob.yaw)),
+            tags=sorted(getattr(t, "value", str(t)) for t in ob.tags), room=ob.room,
+            relations=[RelationInstance(repr(p.relation), p.parent, p.child_surface,
+                                        p.parent_surface, p.relation.margin)
+                       for p in ob.placements],
+            stage=ob.stage))
+    timings["total"] = time.perf_counter() - t0
+    report = {
+        "seed": seed,
+        "timings_s": {k: round(v, 4) for k, v in timings.items()},
+        "stages": [s.to_json() for s in stats],
+        "objects": len(sc.objects),
+        "objects_per_stage": {s: sum(1 for o in sc.objects.values() if o.stage == s)
+                              for s in ("large", "medium", "small")},
+        "removed_by_full_mesh_check": removed,
+        "rooms": {r: {"violations": res.violations, "n_violated": res.n_violated,
+                      "scores": res.scores, "loss": res.loss} for r, res in results.items()},
+    }
+    return Generated(sc, geometry, state, cache, results, report)
+
+
+def check_writable(out: Path) -> None:
+    """Raise OutputError now, before any work, if `out` cannot be created or replaced."""
+    out = Path(out)
+    parent = out.resolve().parent
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"--out {out} exists and is not a directory")
+    probe = parent
+    while not probe.exists():
+        probe = probe.parent
+    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+        raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
+
+
+def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usda") -> Path:
+    """Write scene.json, scene.usda, plan.png and report.json to `out`, atomically: everything
+    goes to a temporary sibling directory that is renamed into place when complete."""
+    from .export.usd import write_usd
+    from .render.plan import draw_plan
+
+    out = Path(out)
+    check_writable(out)
+    out.resolve().parent.mkdir(parents=True, exist_ok=True)
+    try:
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.resolve().parent))
+    except OSError as e:
+        raise OutputError(f"cannot write to {out}: {e.strerror}") from None
+    try:
+        t0 = time.perf_counter()
+        (tmp / "scene.json").write_text(gen.scene.dumps())
+        write_usd(gen.scene, tmp / f"scene.{usd_ext}", object_assets=gen.full_assets(),
+                  rooms=gen.rooms)
+        zones = {r: g.door_zones for r, g in gen.rooms.items()}
+        draw_plan(gen.scene, gen.footprints(), tmp / "plan.png", door_zones=zones,
+                  title=f"{next(iter(gen.scene.rooms.values())).room_type}  seed {gen.scene.seed}")
+        gen.report.setdefault("timings_s", {})["export"] = round(time.perf_counter() - t0, 4)
+        (tmp / "report.json").write_text(json.dumps(gen.report, indent=1, sort_keys=True,
+                                                    default=_json_default) + "\n")
+        if out.exists():
+            old = out.with_name(f".{out.name}.old-{os.getpid()}")
+            out.rename(old)
+            tmp.rename(out)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            tmp.rename(out)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return out
+
+
+def _json_default(o):
+    if isinstance(o, (np.floating, np.integer)):
+        return o.item()
+    return str(o)

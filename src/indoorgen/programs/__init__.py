@@ -1,0 +1,23 @@
+"""Built-in constraint programs, one function per room type: `program(room) -> Problem`."""
+from __future__ import annotations
+
+from typing import Callable
+
+from ..constraints import Problem
+from ..errors import UnknownRoomTypeError
+from .dining_room import dining_room
+from .living_room import living_room
+
+ROOM_PROGRAMS: dict[str, Callable[..., Problem]] = {
+    "living_room": living_room,
+    "dining_room": dining_room,
+}
+
+
+def get_program(room_type: str) -> Callable[..., Problem]:
+    """The program for `room_type`, or UnknownRoomTypeError listing the valid ones."""
+    try:
+        return ROOM_PROGRAMS[room_type]
+    except KeyError:
+        raise UnknownRoomTypeError(f"unknown room type {room_type!r}; valid: "
+                                   + ", ".join(sorted(ROOM_PROGRAMS))) from None

@@ -1,0 +1,14 @@
+"""Relations every room program uses, named for what they mean in a room."""
+from ..constraints import StableAgainst, SupportedBy
+from ..tags import Subpart
+
+#: standing on the room's floor
+on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
+#: back to a wall, 5 cm off it (skirting boards, cables)
+against_wall = StableAgainst(Subpart.Back, Subpart.Wall, margin=0.05)
+#: hanging flat on a wall (pictures, mirrors), not overhanging its edges
+on_wall = StableAgainst(Subpart.Back, Subpart.Wall)
+#: resting on a tabletop, shelf or stand without tipping over
+on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
+#: a chair pulled up to a table: its seat's front 8 cm under the table's edge
+at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.08, overhang=False)

@@ -1,0 +1,50 @@
+"""A living room: seating facing a TV, a coffee table, bookcases full of books, lamps and art."""
+from ..constraints import (Problem, accessibility_cost, angle_alignment_cost, focus_score, height,
+                           scene)
+from ..tags import Semantics as S
+from .common import against_wall, on_floor, on_top, on_wall
+
+
+def living_room(room) -> Problem:
+    floor = scene().related_to(room, on_floor)
+    sofas = floor[S.Sofa].related_to(room, against_wall)
+    armchairs = floor[S.Armchair]
+    seating = sofas | armchairs
+    stands = floor[S.TVStand].related_to(room, against_wall)
+    tvs = scene()[S.TV].related_to(stands, on_top)
+    coffee_tables, side_tables = floor[S.CoffeeTable], floor[S.SideTable]
+    bookcases = floor[S.Bookcase].related_to(room, against_wall)
+    art = scene()[S.WallArt].related_to(room, on_wall)
+    books = scene()[S.Book]
+    vases = scene()[S.Vase].related_to(coffee_tables | side_tables | stands, on_top)
+    return Problem(
+        constraints={
+            "one or two sofas": sofas.count().in_range(1, 2),
+            "up to two armchairs": armchairs.count().in_range(0, 2),
+            "a TV stand": stands.count().in_range(1, 1),
+            "a TV on the stand": stands.all(lambda s: tvs.related_to(s, on_top).count() == 1),
+            "a coffee table": coffee_tables.count().in_range(1, 1),
+            "side tables": side_tables.count().in_range(0, 2),
+            "bookcases": bookcases.count().in_range(1, 2),
+            "floor lamps": floor[S.FloorLamp].count().in_range(1, 2),
+            "pictures": art.count().in_range(1, 3),
+            "filled bookcases": bookcases.all(
+                lambda b: books.related_to(b, on_top).count().in_range(8, 24)),
+            "vases": vases.count().in_range(1, 3),
+        },
+        score_terms={
+            "seating faces the TV": focus_score(seating, tvs).minimize(3),
+            "armchairs face the coffee table": focus_score(armchairs, coffee_tables).minimize(1),
+            "coffee table by the sofa": coffee_tables.mean(
+                lambda c: c.distance(sofas).hinge(0.35, 0.6)).minimize(3),
+            "lamps beside seating": floor[S.FloorLamp].mean(
+                lambda l: l.distance(seating).hinge(0.0, 0.3)).minimize(1),
+            "side tables beside seating": side_tables.mean(
+                lambda t: t.distance(seating).hinge(0.0, 0.2)).minimize(1),
+            "screen in view": accessibility_cost(tvs, floor[S.Furniture]).minimize(2),
+            "sofa fronts free": accessibility_cost(sofas, floor[S.Furniture]).minimize(0.5),
+            "square to the walls": angle_alignment_cost(floor[S.Furniture], room).minimize(1),
+            "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
+            "books": books.count().maximize(0.05),
+        },
+    )

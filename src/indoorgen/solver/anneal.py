@@ -1,0 +1,354 @@
+"""Simulated annealing over one room's objects for one stage (Infinigen Indoors, sec. 3.3, E.3).
+
+Each step picks a move on a schedule (discrete moves fade as the temperature falls, continuous
+ones grow), applies it to the `State`, rejects it at once if the result is geometrically invalid
+(a relation broken or a collision), and otherwise lets the evaluator score it. Acceptance ranks
+total hard-constraint violation first, then applies Metropolis on the soft loss. A rejected move is
+undone and the evaluator told which objects to re-check.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from ..assets import factories_with, get_factory
+from ..constraints.bounds import Bound, find_bounds
+from ..constraints.evaluator import Evaluator, Result
+from ..constraints.expressions import Problem
+from ..rng import child_seed
+from .placement import placements_hold, sample_point, solve_pose
+from .state import ObjState, Placement, State
+
+log = logging.getLogger(__name__)
+
+MOVES_DISCRETE = {"add": 3.0, "delete": 0.6, "resample": 0.8, "reinit": 0.8,
+                  "reassign_plane": 0.6, "reassign_parent": 0.5}
+MOVES_CONTINUOUS = {"translate": 3.0, "rotate": 1.2}
+
+
+@dataclass
+class AnnealConfig:
+    """Annealing settings; defaults follow the paper (0.25 -> 0.001, 20 pose tries)."""
+
+    t_start: float = 0.25
+    t_end: float = 0.001
+    init_tries: int = 20
+    translate_sigma: float = 2.0   # metres of step std-dev per unit of temperature
+    rotate_sigma: float = 6.0      # radians of step std-dev per unit of temperature
+    check: bool = False            # verify incremental evaluation against full every step
+
+
+@dataclass
+class StageStats:
+    room: str
+    stage: str
+    steps: int = 0
+    accepted: int = 0
+    proposed: dict = field(default_factory=dict)
+    valid: dict = field(default_factory=dict)
+    taken: dict = field(default_factory=dict)
+    seconds: float = 0.0
+    objects: int = 0
+    violation: float = 0.0
+    loss: float = 0.0
+
+    def to_json(self) -> dict:
+        return {"room": self.room, "stage": self.stage, "steps": self.steps,
+                "accepted": self.accepted, "proposed": self.proposed, "valid": self.valid,
+                "accepted_by_move": self.taken, "seconds": round(self.seconds, 4),
+                "objects": self.objects, "violation": self.violation, "loss": self.loss}
+
+
+class Annealer:
+    """Runs one stage of one room. Holds the stage's random stream and running result."""
+
+    def __init__(self, state: State, problem: Problem, ev: Evaluator, room: str, stage: str,
+                 rng: np.random.Generator, config: AnnealConfig, namer: Callable[[str], str]):
+        self.state, self.problem, self.ev = state, problem, ev
+        self.room, self.stage, self.rng, self.cfg = room, stage, rng, config
+        self.namer = namer
+        self.result: Result = ev.evaluate()
+        self.stats = StageStats(room, stage)
+        self._unknown_tags: set = set()
+
+    # -- helpers ---------------------------------------------------------------------------
+    def _mine(self) -> list[str]:
+        return sorted(n for n, o in self.state.objects.items()
+                      if o.room == self.room and o.stage == self.stage)
+
+    def _bounds(self) -> list[Bound]:
+        rooms = frozenset(self.state.rooms)
+        return [b for b in find_bounds(self.problem, self.ev) if b.stage(rooms) == self.stage]
+
+    def _pick(self, items):
+        return items[int(self.rng.integers(len(items)))]
+
+    def _valid(self, name: str) -> bool:
+        return placements_hold(self.state, name) and not self.state.collides(name)
+
+    def _place(self, ob: ObjState, tries: int | None = None) -> bool:
+        """Sample poses on the object's planes until one is valid (the object is in state)."""
+        st = self.state
+        surfaces = [st.surface_world(p.parent, p.parent_surface) for p in ob.placements]
+        i_small = int(np.argmin([s.polygon.area for s in surfaces]))
+        anchor, placement = surfaces[i_small], ob.placements[i_small]
+        child = ob.asset.surface(placement.child_surface)
+        half = 0.5 * min(child.polygon.bounds[2] - child.polygon.bounds[0],
+                         child.polygon.bounds[3] - child.polygon.bounds[1])
+        for _ in range(tries or self.cfg.init_tries):
+            yaw = float(self.rng.integers(4)) * math.pi / 2
+            q = sample_point(anchor, self.rng, margin=half)
+            r = np.array([[math.cos(yaw), -math.sin(yaw), 0], [math.sin(yaw), math.cos(yaw), 0],
+                          [0, 0, 1.0]])
+            res = solve_pose(st, ob.asset, ob.placements, q - r @ child.origin, yaw)
+            if res is None:
+                return False
+            pos, yaw, _ = res
+            st.set_pose(ob.name, pos, yaw)
+            if self._valid(ob.name):
+                return True
+        return False
+
+    # -- moves: each returns (changed, added, removed, undo) or None when invalid -----------
+    def move_add(self):
+        bounds = [b for b in self._bounds() if b.can_add]
+        if not bounds:
+            return None
+        below = [b for b in bounds if b.below]
+        b = self._pick(below if below and self.rng.random() < 0.85 else bounds)
+        gens = factories_with(b.context.tags, b.context.excluded)
+        if b.context.generator is not None:
+            gens = [g for g in gens if g == b.context.generator]
+        if not gens:
+            if b.context.tags not in self._unknown_tags:
+                self._unknown_tags.add(b.context.tags)
+                log.warning("no generator has tags %s", sorted(map(str, b.context.tags)))
+            return None
+        gen = self._pick(gens)
+        fac = get_factory(gen)
+        seed = child_seed(self.rng)
+        params = fac.sample_params(np.random.default_rng(seed))
+        asset = self.state.cache.placeholder(gen, params)
+        placements = []
+        for rel, parent_ids in b.parents:
+            parent = self._pick(list(parent_ids))
+            ps = [s.name for s in self.state.surfaces(parent) if s.subpart == rel.parent]
+            cs = [s.name for s in asset.surfaces if s.subpart == rel.child]
+            if not ps or not cs:
+                return None
+            placements.append(Placement(rel, parent, cs[0], self._pick(ps)))
+        ob = ObjState(self.namer(gen), gen, params, seed, frozenset(fac.tags), self.room,
+                      self.stage, asset, placements, np.zeros(3), 0.0, bound=b.name,
+                      context=b.context, env=dict(b.env))
+        self.state.add(ob)
+        if not self._place(ob):
+            self.state.remove(ob.name)
+            return None
+        name = ob.name
+        return (), (name,), (), lambda: self.state.remove(name)
+
+    def move_delete(self):
+        mine = self._mine()
+        if not mine:
+            return None
+        parents = {p.parent for o in self.state.objects.values() for p in o.placements}
+        bounds = self._bounds()
+        ok = [n for n in mine if n not in parents
+              and all(b.can_delete for b in bounds if n in b.members)]
+        if not ok:
+            return None
+        name = self._pick(ok)
+        ob = self.state.remove(name)
+
+        def undo():
+            self.state.add(ob)
+        return (), (), (name,), undo
+
+    def _pose_undo(self, name: str):
+        ob = self.state.objects[name]
+        pos, yaw = ob.position.copy(), ob.yaw
+        return lambda: self.state.set_pose(name, pos, yaw)
+
+    def move_translate(self):
+        mine = self._mine()
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw)
+        if res is None:
+            return None
+        _, _, dof = res
+        sigma = self.cfg.translate_sigma * self.temperature
+        step = dof.projection @ self.rng.normal(0.0, sigma, 3)
+        undo = self._pose_undo(name)
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position + step, ob.yaw)
+        if res is None:
+            return None
+        self.state.set_pose(name, res[0], res[1])
+        if not self._valid(name):
+            undo()
+            return None
+        return (name,), (), (), undo
+
+    def move_rotate(self):
+        mine = [n for n in self._mine()]
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw)
+        if res is None or not res[2].rotates:
+            return None
+        if self.rng.random() < 0.25:
+            dyaw = float(self.rng.choice([-1.0, 1.0])) * math.pi / 2
+        else:
+            dyaw = float(self.rng.normal(0.0, self.cfg.rotate_sigma * self.temperature))
+        undo = self._pose_undo(name)
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw + dyaw)
+        if res is None:
+            return None
+        self.state.set_pose(name, res[0], res[1])
+        if not self._valid(name):
+            undo()
+            return None
+        return (name,), (), (), undo
+
+    def move_reinit(self):
+        mine = self._mine()
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        undo = self._pose_undo(name)
+        if not self._place(ob, tries=3):
+            undo()
+            return None
+        return (name,), (), (), undo
+
+    def move_resample(self):
+        mine = self._mine()
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        fac = get_factory(ob.generator)
+        old_params, old_pos, old_yaw = ob.params, ob.position.copy(), ob.yaw
+        params = fac.sample_params(self.rng)
+        self.state.set_asset(name, params)
+
+        def undo():
+            self.state.set_asset(name, old_params)
+            self.state.set_pose(name, old_pos, old_yaw)
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw)
+        if res is None:
+            undo()
+            return None
+        self.state.set_pose(name, res[0], res[1])
+        if not self._valid(name):
+            undo()
+            return None
+        return (name,), (), (), undo
+
+    def _replace_placement(self, name: str, i: int, new: Placement):
+        ob = self.state.objects[name]
+        old_pl, undo_pose = list(ob.placements), self._pose_undo(name)
+        ob.placements = ob.placements[:i] + [new] + ob.placements[i + 1:]
+
+        def undo():
+            ob.placements = old_pl
+            undo_pose()
+        if not self._place(ob, tries=4):
+            undo()
+            return None
+        return (name,), (), (), undo
+
+    def move_reassign_plane(self):
+        mine = self._mine()
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        i = int(self.rng.integers(len(ob.placements)))
+        p = ob.placements[i]
+        alts = [s.name for s in self.state.surfaces(p.parent)
+                if s.subpart == p.relation.parent and s.name != p.parent_surface]
+        if not alts:
+            return None
+        return self._replace_placement(
+            name, i, Placement(p.relation, p.parent, p.child_surface, self._pick(alts)))
+
+    def move_reassign_parent(self):
+        mine = [n for n in self._mine() if self.state.objects[n].context is not None]
+        if not mine:
+            return None
+        name = self._pick(mine)
+        ob = self.state.objects[name]
+        i = int(self.rng.integers(len(ob.placements)))
+        p = ob.placements[i]
+        sets = [self.ev.value(node, ob.env) for rel, node in ob.context.relations
+                if rel == p.relation]
+        cands = sorted(frozenset.intersection(*sets) - {p.parent, name}) if sets else []
+        if not cands:
+            return None
+        parent = self._pick(cands)
+        alts = [s.name for s in self.state.surfaces(parent) if s.subpart == p.relation.parent]
+        if not alts:
+            return None
+        return self._replace_placement(
+            name, i, Placement(p.relation, parent, p.child_surface, self._pick(alts)))
+
+    # -- the loop -----------------------------------------------------------------------------
+    def _weights(self, frac: float) -> tuple[list[str], np.ndarray]:
+        names = list(MOVES_DISCRETE) + list(MOVES_CONTINUOUS)
+        w = [v * (1.0 - 0.8 * frac) for v in MOVES_DISCRETE.values()] + \
+            [v * (0.2 + 0.8 * frac) for v in MOVES_CONTINUOUS.values()]
+        w = np.array(w)
+        return names, w / w.sum()
+
+    def accept(self, old: Result, new: Result) -> bool:
+        """Fewer total violations always win; equal violations go to Metropolis on the loss."""
+        if new.violation < old.violation - 1e-9:
+            return True
+        if new.violation > old.violation + 1e-9:
+            return False
+        if new.loss <= old.loss:
+            return True
+        return bool(self.rng.random() < math.exp((old.loss - new.loss) / self.temperature))
+
+    def run(self, steps: int) -> StageStats:
+        t0 = time.perf_counter()
+        cfg, st = self.cfg, self.stats
+        self.temperature = cfg.t_start
+        for step in range(steps):
+            frac = step / max(1, steps - 1)
+            self.temperature = cfg.t_start * (cfg.t_end / cfg.t_start) ** frac
+            names, w = self._weights(frac)
+            move = names[int(self.rng.choice(len(names), p=w))]
+            st.proposed[move] = st.proposed.get(move, 0) + 1
+            out = getattr(self, "move_" + move)()
+            st.steps += 1
+            if out is None:
+                continue
+            st.valid[move] = st.valid.get(move, 0) + 1
+            changed, added, removed, undo = out
+            self.ev.notify(changed, added=added, removed=removed)
+            new = self.ev.evaluate()
+            if self.accept(self.result, new):
+                self.result = new
+                st.accepted += 1
+                st.taken[move] = st.taken.get(move, 0) + 1
+            else:
+                undo()
+                self.ev.notify(changed, added=removed, removed=added)
+        self.result = self.ev.evaluate()
+        st.seconds = time.perf_counter() - t0
+        st.objects = len(self._mine())
+        st.violation = self.result.violation
+        st.loss = self.result.loss
+        return st

@@ -1,0 +1,63 @@
+"""Built assets and their collision BVHs, cached by (generator, params).
+
+The solver asks for the same placeholder many times (resample, revert, re-add); building it and
+its BVH once per distinct parameter set keeps the annealing step cheap.
+"""
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import fcl
+import numpy as np
+import trimesh
+
+from ..assets import Asset, get_factory
+
+
+def params_key(generator: str, params: dict[str, Any]) -> tuple:
+    return (generator, json.dumps(params, sort_keys=True, default=str))
+
+
+def mesh_bvh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
+    """An fcl BVH of a trimesh (built once; objects share it and only change their transform)."""
+    bvh = fcl.BVHModel()
+    bvh.beginModel(len(mesh.vertices), len(mesh.faces))
+    bvh.addSubModel(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int32))
+    bvh.endModel()
+    return bvh
+
+
+class AssetCache:
+    """Placeholders, full assets and BVHs keyed by (generator, params)."""
+
+    def __init__(self) -> None:
+        self._placeholders: dict[tuple, Asset] = {}
+        self._full: dict[tuple, Asset] = {}
+        self._bvh: dict[tuple, fcl.BVHModel] = {}
+        self.builds = 0
+
+    def placeholder(self, generator: str, params: dict[str, Any]) -> Asset:
+        key = params_key(generator, params)
+        a = self._placeholders.get(key)
+        if a is None:
+            a = get_factory(generator).placeholder(params)
+            self._placeholders[key] = a
+            self.builds += 1
+        return a
+
+    def full(self, generator: str, params: dict[str, Any]) -> Asset:
+        key = params_key(generator, params)
+        a = self._full.get(key)
+        if a is None:
+            a = get_factory(generator).create(params)
+            self._full[key] = a
+        return a
+
+    def placeholder_bvh(self, generator: str, params: dict[str, Any]) -> fcl.BVHModel:
+        key = params_key(generator, params)
+        b = self._bvh.get(key)
+        if b is None:
+            b = mesh_bvh(self.placeholder(generator, params).mesh)
+            self._bvh[key] = b
+        return b

@@ -1,0 +1,45 @@
+"""Swap placeholders for full meshes and re-check collisions with them.
+
+Placeholders are built to contain their full meshes, so this rarely finds anything; when it
+does, the later-placed object of a colliding pair (and anything resting on it) is removed rather
+than left interpenetrating.
+"""
+from __future__ import annotations
+
+import logging
+
+import fcl
+
+from .assets_cache import mesh_bvh
+from .state import State, rotation
+
+log = logging.getLogger(__name__)
+
+
+def full_mesh_check(state: State) -> list[str]:
+    """Remove objects whose full mesh collides; return the removed names."""
+    manager = fcl.DynamicAABBTreeCollisionManager()
+    manager.registerObjects(list(state.static))
+    manager.setup()
+    order = {"large": 0, "medium": 1, "small": 2}
+    names = sorted(state.objects, key=lambda n: (order.get(state.objects[n].stage, 3), n))
+    kept: set[str] = set()
+    removed: list[str] = []
+    for n in names:
+        ob = state.objects[n]
+        if any(p.parent in removed for p in ob.placements):
+            removed.append(n)
+            continue
+        full = state.cache.full(ob.generator, ob.params)
+        co = fcl.CollisionObject(mesh_bvh(full.mesh), fcl.Transform(rotation(ob.yaw), ob.position))
+        data = fcl.CollisionData(request=fcl.CollisionRequest())
+        manager.collide(co, data, fcl.defaultCollisionCallback)
+        if data.result.is_collision:
+            log.warning("full mesh of %s collides; removing it", n)
+            removed.append(n)
+            continue
+        manager.registerObject(co)
+        kept.add(n)
+    for n in removed:
+        state.remove(n)
+    return removed

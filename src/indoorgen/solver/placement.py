@@ -1,0 +1,126 @@
+"""Planes, degrees of freedom and pose resolution (Infinigen Indoors, appendix E.2).
+
+An object's planar relations pin some of its surfaces to parent planes. From them follow its
+degrees of freedom: a translation projection matrix onto the intersection of the planes'
+tangent subspaces, and whether it may still turn about +Z. `solve_pose` snaps a guessed pose onto
+all its planes at once (least squares, so the guess moves as little as possible).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import shapely.geometry as sg
+
+from ..assets import Asset, Surface
+from ..constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst
+from .state import Placement, State, rotation
+
+
+@dataclass(frozen=True)
+class DoF:
+    """Where an object may go: translations `projection @ x` and, if `rotates`, turns about Z."""
+
+    projection: np.ndarray
+    rotates: bool
+
+
+def plane_key(s: Surface, ndigits: int = 4) -> tuple:
+    """A hashable key of the plane a surface lies in (normal and offset, rounded), so that
+    coplanar surfaces of different objects can be found by dictionary lookup."""
+    n = np.round(s.normal, ndigits) + 0.0
+    return (*n.tolist(), round(float(np.dot(s.normal, s.origin)), ndigits))
+
+
+def _angle_diff(a: float, b: float) -> float:
+    return abs((a - b + math.pi) % (2 * math.pi) - math.pi)
+
+
+def solve_pose(state: State, asset: Asset, placements: list[Placement],
+               position: np.ndarray, yaw: float) -> tuple[np.ndarray, float, DoF] | None:
+    """Snap (position, yaw) so every placement holds; None if the planes contradict."""
+    fixed_yaw = None
+    rows = []
+    for p in placements:
+        cs = asset.surface(p.child_surface)
+        ps = state.surface_world(p.parent, p.parent_surface)
+        want = ps.normal if isinstance(p.relation, CoPlanar) else -ps.normal
+        nc = cs.normal
+        if abs(nc[2]) > 0.99:
+            if want[2] * nc[2] < 0.99:
+                return None
+        else:
+            if abs(want[2]) > 0.01:
+                return None
+            y = math.atan2(want[1], want[0]) - math.atan2(nc[1], nc[0])
+            if fixed_yaw is None:
+                fixed_yaw = y
+            elif _angle_diff(fixed_yaw, y) > 1e-6:
+                return None
+        offset = p.relation.margin + (CONTACT_GAP if isinstance(p.relation, StableAgainst) else 0.0)
+        rows.append((ps.normal, float(np.dot(ps.origin, ps.normal)) + offset, cs.origin))
+    if fixed_yaw is not None:
+        yaw = math.atan2(math.sin(fixed_yaw), math.cos(fixed_yaw))
+    r = rotation(yaw)
+    if not rows:
+        return np.asarray(position, float), yaw, DoF(np.eye(3), True)
+    n = np.array([row[0] for row in rows])
+    b = np.array([row[1] - float(np.dot(r @ row[2], row[0])) for row in rows])
+    pinv = np.linalg.pinv(n)
+    t = np.asarray(position, float) + pinv @ (b - n @ position)
+    if np.abs(n @ t - b).max() > 1e-6:
+        return None
+    proj = np.eye(3) - pinv @ n
+    proj[np.abs(proj) < 1e-12] = 0.0
+    return t, yaw, DoF(proj, fixed_yaw is None)
+
+
+def dof_of(state: State, name: str) -> DoF:
+    ob = state.objects[name]
+    res = solve_pose(state, ob.asset, ob.placements, ob.position, ob.yaw)
+    return res[2] if res is not None else DoF(np.zeros((3, 3)), False)
+
+
+def _in_parent_2d(parent: Surface, pts: np.ndarray) -> np.ndarray:
+    d = pts - parent.origin
+    return np.stack([d @ parent.u, d @ parent.v], axis=1)
+
+
+def placements_hold(state: State, name: str, tol: float = 1e-4) -> bool:
+    """Does each of the object's relations hold geometrically: no overhang where the relation
+    forbids it, and the child's centroid over the parent surface otherwise?"""
+    ob = state.objects[name]
+    r = rotation(ob.yaw)
+    for p in ob.placements:
+        parent = state.surface_world(p.parent, p.parent_surface)
+        child = ob.asset.surface(p.child_surface).transformed(r, ob.position)
+        poly = parent.polygon
+        if isinstance(p.relation, StableAgainst) and p.relation.overhang:
+            xy = _in_parent_2d(parent, child.corners())
+            if not poly.buffer(tol).contains(sg.Polygon(xy)):
+                return False
+        else:
+            c = child.polygon.centroid
+            xy = _in_parent_2d(parent, child.to_world(np.array([[c.x, c.y]])))
+            if not poly.buffer(tol).contains(sg.Point(xy[0])):
+                return False
+    return True
+
+
+def sample_point(surface: Surface, rng: np.random.Generator, margin: float = 0.0) -> np.ndarray:
+    """A uniform random point of a surface polygon (optionally shrunk by `margin`), in world."""
+    poly = surface.polygon
+    if margin > 0:
+        shrunk = poly.buffer(-margin)
+        if not shrunk.is_empty and shrunk.area > 1e-6:
+            poly = shrunk
+    x0, y0, x1, y1 = poly.bounds
+    for _ in range(64):
+        q = rng.uniform([x0, y0], [x1, y1])
+        if poly.contains(sg.Point(q)):
+            break
+    else:
+        c = poly.representative_point()
+        q = np.array([c.x, c.y])
+    return surface.to_world(q[None])[0]

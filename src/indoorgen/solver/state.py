@@ -1,0 +1,245 @@
+"""The solver's state: rooms, objects, their poses and plane assignments, and collision.
+
+`State` is also the `ObjectView` the constraint evaluator reads: tags, relations and the few
+geometric facts the DSL's terms need, each cached per object until the object moves.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import fcl
+import numpy as np
+import shapely.geometry as sg
+import trimesh
+
+from ..assets import Asset, Surface
+from ..constraints.relations import Relation
+from ..floorplan.room import RoomGeometry
+from ..tags import Semantics
+from .assets_cache import AssetCache, mesh_bvh
+
+
+@dataclass
+class Placement:
+    """One planar relation of an object: its `child_surface` against `parent_surface` of
+    `parent` (a room or an object)."""
+
+    relation: Relation
+    parent: str
+    child_surface: str
+    parent_surface: str
+
+
+@dataclass
+class ObjState:
+    name: str
+    generator: str
+    params: dict[str, Any]
+    seed: int
+    tags: frozenset
+    room: str
+    stage: str
+    asset: Asset
+    placements: list[Placement]
+    position: np.ndarray
+    yaw: float
+    bound: str = ""
+    context: Any = None
+    env: dict = field(default_factory=dict)
+    cobj: fcl.CollisionObject | None = None
+
+
+def rotation(yaw: float) -> np.ndarray:
+    c, s = math.cos(yaw), math.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+class State:
+    """Rooms and objects being solved, with an fcl broadphase over placeholder meshes."""
+
+    def __init__(self, rooms: dict[str, RoomGeometry], cache: AssetCache):
+        self.rooms = rooms
+        self.cache = cache
+        self.objects: dict[str, ObjState] = {}
+        self._room_tags = {n: frozenset({Semantics.Room, g.room.room_type}) for n, g in rooms.items()}
+        self._room_surfaces = {n: {s.name: s for s in g.surfaces} for n, g in rooms.items()}
+        self._ids = frozenset(rooms)
+        self._geo: dict[str, dict] = {}
+        self.manager = fcl.DynamicAABBTreeCollisionManager()
+        self.static = []
+        for g in rooms.values():
+            for m in list(g.collision_meshes()) + list(g.door_zone_meshes()):
+                self.static.append(fcl.CollisionObject(mesh_bvh(m), fcl.Transform()))
+        self.manager.registerObjects(self.static)
+        self.manager.setup()
+
+    # -- ObjectView ------------------------------------------------------------------------
+    def all_ids(self) -> frozenset[str]:
+        return self._ids
+
+    def is_room(self, o: str) -> bool:
+        return o in self.rooms
+
+    def tags(self, o: str) -> frozenset:
+        return self._room_tags[o] if o in self.rooms else self.objects[o].tags
+
+    def generator(self, o: str) -> str:
+        return "" if o in self.rooms else self.objects[o].generator
+
+    def relations(self, o: str) -> list[tuple[Relation, str]]:
+        if o in self.rooms:
+            return []
+        return [(p.relation, p.parent) for p in self.objects[o].placements]
+
+    def _cached(self, o: str, what: str, fn):
+        d = self._geo.setdefault(o, {})
+        v = d.get(what)
+        if v is None:
+            v = d[what] = fn()
+        return v
+
+    def center(self, o: str) -> np.ndarray:
+        if o in self.rooms:
+            g = self.rooms[o]
+            c = sg.Polygon(g.room.polygon).centroid
+            return np.array([c.x, c.y, g.room.height / 2])
+
+        def f():
+            ob = self.objects[o]
+            b = ob.asset.mesh.bounds
+            return rotation(ob.yaw) @ ((b[0] + b[1]) / 2) + ob.position
+        return self._cached(o, "center", f)
+
+    def front(self, o: str) -> np.ndarray:
+        if o in self.rooms:
+            return np.array([1.0, 0.0, 0.0])
+        y = self.objects[o].yaw
+        return np.array([math.cos(y), math.sin(y), 0.0])
+
+    def side_axis(self, o: str) -> np.ndarray:
+        if o in self.rooms:
+            return np.array([0.0, 1.0, 0.0])
+        y = self.objects[o].yaw
+        return np.array([-math.sin(y), math.cos(y), 0.0])
+
+    def front_point(self, o: str) -> np.ndarray:
+        if o in self.rooms:
+            return self.center(o)
+        ob = self.objects[o]
+        b = ob.asset.mesh.bounds
+        return rotation(ob.yaw) @ np.array([b[1][0], 0.0, (b[0][2] + b[1][2]) / 2]) + ob.position
+
+    def yaw(self, o: str) -> float:
+        return 0.0 if o in self.rooms else float(self.objects[o].yaw)
+
+    def extents(self, o: str) -> np.ndarray:
+        if o in self.rooms:
+            g = self.rooms[o]
+            x0, y0, x1, y1 = sg.Polygon(g.room.polygon).bounds
+            return np.array([x1 - x0, y1 - y0, g.room.height])
+        b = self.objects[o].asset.mesh.bounds
+        return b[1] - b[0]
+
+    def footprint(self, o: str) -> sg.Polygon:
+        if o in self.rooms:
+            return sg.Polygon(self.rooms[o].room.polygon)
+
+        def f():
+            ob = self.objects[o]
+            (x0, y0, _), (x1, y1, _) = ob.asset.mesh.bounds
+            pts = np.array([[x0, y0, 0], [x1, y0, 0], [x1, y1, 0], [x0, y1, 0]])
+            w = pts @ rotation(ob.yaw).T + ob.position
+            return sg.Polygon(w[:, :2])
+        return self._cached(o, "footprint", f)
+
+    def outline(self, o: str):
+        if o in self.rooms:
+            return sg.Polygon(self.rooms[o].room.polygon).exterior
+        return self.footprint(o)
+
+    def world_mesh(self, o: str) -> trimesh.Trimesh:
+        def f():
+            ob = self.objects[o]
+            m = ob.asset.mesh.copy()
+            t = np.eye(4)
+            t[:3, :3] = rotation(ob.yaw)
+            t[:3, 3] = ob.position
+            m.apply_transform(t)
+            return m
+        return self._cached(o, "mesh", f)
+
+    def support_polygon(self, o: str) -> sg.Polygon | None:
+        if o in self.rooms:
+            return None
+        for p in self.objects[o].placements:
+            if p.parent not in self.rooms and getattr(p.relation, "parent", None) is not None \
+                    and p.relation.parent.value == "support_surface":
+                s = self.surface_world(p.parent, p.parent_surface)
+                return sg.Polygon(s.corners()[:, :2])
+        return None
+
+    # -- surfaces ---------------------------------------------------------------------------
+    def surfaces(self, o: str) -> list[Surface]:
+        """All surfaces of `o` in world coordinates."""
+        if o in self.rooms:
+            return list(self._room_surfaces[o].values())
+        ob = self.objects[o]
+        r = rotation(ob.yaw)
+        return [s.transformed(r, ob.position) for s in ob.asset.surfaces]
+
+    def surface_world(self, o: str, name: str) -> Surface:
+        if o in self.rooms:
+            return self._room_surfaces[o][name]
+        ob = self.objects[o]
+        return ob.asset.surface(name).transformed(rotation(ob.yaw), ob.position)
+
+    # -- mutation ---------------------------------------------------------------------------
+    def _transform(self, ob: ObjState) -> fcl.Transform:
+        return fcl.Transform(rotation(ob.yaw), np.asarray(ob.position, float))
+
+    def add(self, ob: ObjState) -> None:
+        ob.cobj = fcl.CollisionObject(self.cache.placeholder_bvh(ob.generator, ob.params),
+                                      self._transform(ob))
+        self.objects[ob.name] = ob
+        self._ids = self._ids | {ob.name}
+        self.manager.registerObject(ob.cobj)
+
+    def remove(self, name: str) -> ObjState:
+        ob = self.objects.pop(name)
+        self._ids = self._ids - {name}
+        self._geo.pop(name, None)
+        self.manager.unregisterObject(ob.cobj)
+        return ob
+
+    def set_pose(self, name: str, position: np.ndarray, yaw: float) -> None:
+        ob = self.objects[name]
+        ob.position = np.asarray(position, float)
+        ob.yaw = float(yaw)
+        self._geo.pop(name, None)
+        ob.cobj.setTransform(self._transform(ob))
+        self.manager.update(ob.cobj)
+
+    def set_asset(self, name: str, params: dict[str, Any]) -> None:
+        """Swap an object's params (and so its placeholder and BVH), keeping its pose."""
+        ob = self.objects[name]
+        self.manager.unregisterObject(ob.cobj)
+        ob.params = params
+        ob.asset = self.cache.placeholder(ob.generator, params)
+        ob.cobj = fcl.CollisionObject(self.cache.placeholder_bvh(ob.generator, params),
+                                      self._transform(ob))
+        self._geo.pop(name, None)
+        self.manager.registerObject(ob.cobj)
+
+    def collides(self, name: str) -> bool:
+        """Does object `name`'s placeholder interpenetrate anything else (objects, walls, floor,
+        ceiling, door keep-out zones)?"""
+        ob = self.objects[name]
+        self.manager.unregisterObject(ob.cobj)
+        try:
+            data = fcl.CollisionData(request=fcl.CollisionRequest())
+            self.manager.collide(ob.cobj, data, fcl.defaultCollisionCallback)
+            return bool(data.result.is_collision)
+        finally:
+            self.manager.registerObject(ob.cobj)

@@ -1,0 +1,153 @@
+"""Incremental evaluation: same values as a full evaluation, while recomputing only what a move
+touches; plus cardinality bounds."""
+import math
+
+import numpy as np
+from hypothesis import given, settings, strategies as st
+
+from indoorgen.constraints import (Problem, StableAgainst, accessibility_cost, focus_score,
+                                   rotational_asymmetry, scene)
+from indoorgen.constraints.bounds import find_bounds
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.tags import Semantics as S, Subpart
+
+from support.fakeview import FakeView
+
+on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
+at_table = StableAgainst(Subpart.Front, Subpart.Side, -0.08, overhang=False)
+on_top = StableAgainst(Subpart.Bottom, Subpart.SupportSurface, overhang=False)
+
+
+def program(room):
+    furniture = scene()[S.Furniture].related_to(room, on_floor)
+    tables, chairs = furniture[S.Table], furniture[S.Chair]
+    cups = scene()[S.Cup]
+    return Problem(
+        constraints={
+            "tables": tables.count().in_range(1, 2),
+            "chairs per table": tables.all(lambda t: chairs.related_to(t, at_table).count().in_range(2, 4)),
+            "cups": tables.all(lambda t: cups.related_to(t, on_top).count() >= 1),
+            "chairs vs tables": chairs.count() <= tables.count() * 4,
+        },
+        score_terms={
+            "sym": tables.mean(lambda t: rotational_asymmetry(chairs.related_to(t, at_table))).minimize(2),
+            "face": focus_score(chairs, tables).minimize(1),
+            "access": accessibility_cost(tables, furniture - tables).minimize(1),
+            "near": chairs.sum(lambda c: c.distance(tables).hinge(0, 0.1)).minimize(1),
+        },
+    )
+
+
+def base_view():
+    v = FakeView()
+    v.add_room("r", [(0, 0), (8, 0), (8, 6), (0, 6)])
+    return v
+
+
+def room():
+    return scene()[S.Room].named("r")
+
+
+def test_moving_one_object_recomputes_few_nodes_and_matches_full():
+    v = base_view()
+    for i in range(6):
+        v.add(f"t{i}", {S.Furniture, S.Table}, (1 + i, 1, 0.4), extents=(0.8, 0.8, 0.75),
+              relations=[(on_floor, "r")])
+        for k in range(3):
+            v.add(f"c{i}_{k}", {S.Furniture, S.Chair}, (1 + i + 0.3 * k, 2, 0.4), yaw=-math.pi / 2,
+                  extents=(0.4, 0.4, 0.9), relations=[(on_floor, "r"), (at_table, f"t{i}")])
+    ev = Evaluator(program(room()), v, check=True)
+    ev.evaluate()
+    n_full = ev.recomputed
+    before = ev.recomputed
+    v.move("c3_1", center=(4.4, 2.2, 0.4))
+    ev.notify(["c3_1"])
+    ev.evaluate()
+    moved_cost = ev.recomputed - before
+    assert 0 < moved_cost < n_full / 4
+    # deleting is incremental too
+    before = ev.recomputed
+    del v.objs["c5_2"]
+    ev.notify(removed=["c5_2"])
+    ev.evaluate()
+    assert ev.recomputed - before < n_full / 2
+
+
+def test_unrelated_move_recomputes_nothing():
+    v = base_view()
+    v.add("t", {S.Furniture, S.Table}, (2, 2, 0.4), relations=[(on_floor, "r")])
+    v.add("lamp", {S.Decor}, (5, 5, 0.4))
+    ev = Evaluator(program(room()), v)
+    ev.evaluate()
+    before = ev.recomputed
+    v.move("lamp", center=(6, 5, 0.4))
+    ev.notify(["lamp"])
+    ev.evaluate()
+    assert ev.recomputed == before
+
+
+ops = st.lists(st.tuples(st.sampled_from(["table", "chair", "cup", "move", "delete"]),
+                         st.integers(0, 10**6)), min_size=1, max_size=30)
+
+
+@settings(max_examples=60, deadline=None)
+@given(ops)
+def test_incremental_equals_full_for_random_edit_sequences(seq):
+    v = base_view()
+    ev = Evaluator(program(room()), v, check=True)
+    ev.evaluate()
+    n = 0
+    for op, r in seq:
+        rng = np.random.default_rng(r)
+        tables = sorted(k for k, o in v.objs.items() if S.Table in o["tags"])
+        names = sorted(v.objs)
+        pos = (float(rng.uniform(0, 8)), float(rng.uniform(0, 6)), 0.4)
+        if op == "table":
+            name = f"t{n}"
+            v.add(name, {S.Furniture, S.Table}, pos, yaw=float(rng.uniform(-3, 3)),
+                  relations=[(on_floor, "r")])
+            ev.notify(added=[name])
+        elif op in ("chair", "cup") and tables:
+            name = f"{op}{n}"
+            parent = tables[int(rng.integers(len(tables)))]
+            if op == "chair":
+                v.add(name, {S.Furniture, S.Chair}, pos, yaw=float(rng.uniform(-3, 3)),
+                      extents=(0.4, 0.4, 0.9), relations=[(on_floor, "r"), (at_table, parent)])
+            else:
+                v.add(name, {S.Cup}, pos, extents=(0.1, 0.1, 0.1), relations=[(on_top, parent)])
+            ev.notify(added=[name])
+        elif op == "move" and names:
+            name = names[int(rng.integers(len(names)))]
+            v.move(name, center=pos, yaw=float(rng.uniform(-3, 3)))
+            ev.notify([name])
+        elif op == "delete" and names:
+            name = names[int(rng.integers(len(names)))]
+            # deleting a table orphans its children's relations; that is fine for the DSL
+            del v.objs[name]
+            ev.notify(removed=[name])
+        n += 1
+        inc = ev.evaluate()   # check=True compares against a full evaluation
+        full = Evaluator(program(room()), v).evaluate()
+        assert inc.violations == full.violations
+        assert all(abs(inc.scores[k] - full.scores[k]) < 1e-9 for k in full.scores)
+
+
+def test_cardinality_bounds_per_context_and_state_sensitive():
+    v = base_view()
+    v.add("t0", {S.Furniture, S.Table}, (2, 2, 0.4), relations=[(on_floor, "r")])
+    v.add("t1", {S.Furniture, S.Table}, (5, 2, 0.4), relations=[(on_floor, "r")])
+    v.add("c0", {S.Furniture, S.Chair}, (2, 3, 0.4), relations=[(on_floor, "r"), (at_table, "t0")])
+    ev = Evaluator(program(room()), v)
+    ev.evaluate()
+    bounds = find_bounds(ev.problem, ev)
+    per_table = [b for b in bounds if b.name == "chairs per table"]
+    assert sorted((b.parents[1][1], b.count, b.lo, b.hi) for b in per_table) == [
+        (("t0",), 1, 2, 4), (("t1",), 0, 2, 4)]
+    assert all(S.Chair in b.context.tags and b.can_add and b.below for b in per_table)
+    tables = [b for b in bounds if b.name == "tables"][0]
+    assert (tables.count, tables.lo, tables.hi, tables.can_add, tables.can_delete) == (2, 1, 2, False, True)
+    # chairs <= 4 * tables: an upper bound read from the current state
+    cvt = [b for b in bounds if b.name == "chairs vs tables"][0]
+    assert (cvt.lo, cvt.hi, cvt.count) == (0, 8, 1)
+    cups = [b for b in bounds if b.name == "cups"]
+    assert len(cups) == 2 and all(b.lo == 1 and b.hi == math.inf for b in cups)
