@@ -1,1 +1,13 @@
-"""indoorgen: procedural indoor scenes in pure Python."""
+"""indoorgen: procedural, constraint-solved indoor scenes in pure Python.
+
+    import indoorgen
+    result = indoorgen.generate(seed=0, config=indoorgen.GenerateConfig(room_type="dining_room"))
+    indoorgen.write_scene_dir(result, "scene_0")
+"""
+from .errors import IndoorGenError
+from .pipeline import GenerateConfig, Generated, generate, write_scene_dir
+from .scene import Pose, Room, Scene, SceneObject
+
+__version__ = "0.1.0"
+__all__ = ["GenerateConfig", "Generated", "IndoorGenError", "Pose", "Room", "Scene",
+           "SceneObject", "generate", "write_scene_dir", "__version__"]

@@ -139,6 +139,7 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     t2 = time.perf_counter()
     removed = full_mesh_check(state)
     for ev in evaluators.values():
+        ev.set_active(None)
         ev.notify(removed=removed)
     results = {r: ev.evaluate() for r, ev in evaluators.items()}
     timings["full_meshes"] = time.perf_counter() - t2

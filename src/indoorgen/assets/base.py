@@ -86,7 +86,13 @@ class Surface:
 
     @property
     def v(self) -> np.ndarray:
-        return np.cross(self.normal, self.u)
+        v = self.__dict__.get("_v")
+        if v is None:
+            n, u = self.normal, self.u
+            v = self.__dict__["_v"] = np.array([n[1] * u[2] - n[2] * u[1],
+                                                n[2] * u[0] - n[0] * u[2],
+                                                n[0] * u[1] - n[1] * u[0]])
+        return v
 
     @staticmethod
     def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> "Surface":

@@ -27,6 +27,8 @@ import numpy as np
 import trimesh
 
 Vec3 = Sequence[float]
+#: edges shorter than this (m) are collapsed after a boolean union, removing slivers
+SIMPLIFY_TOL = 1e-5
 
 
 @dataclass(frozen=True)
@@ -266,6 +268,9 @@ def union(parts: Iterable[Part], slots: Sequence[str] | None = None,
     cuts = [c for c in subtract if not c.is_empty()]
     if cuts:
         solid = m3d.Manifold.batch_boolean([solid] + cuts, m3d.OpType.Subtract)
+    # booleans can leave zero-area slivers (collinear triangles where faces were cut along a
+    # shared edge); simplify collapses edges shorter than the tolerance, keeping it manifold
+    solid = solid.simplify(SIMPLIFY_TOL)
     g = solid.to_mesh64()
     verts = np.asarray(g.vert_properties, float)[:, :3]
     faces = np.asarray(g.tri_verts, np.int64).reshape(-1, 3)
@@ -275,8 +280,39 @@ def union(parts: Iterable[Part], slots: Sequence[str] | None = None,
     default = table.index(parts[0].slot) if parts else 0
     for i, oid in enumerate(run_ids):
         face_slots[run_index[i]:run_index[i + 1]] = id_slot.get(int(oid), default)
+    verts, faces, keep = collapse_short_edges(verts, faces)
     mesh = trimesh.Trimesh(verts, faces, process=False)
-    return mesh, face_slots, table
+    return mesh, face_slots[keep], table
+
+
+def collapse_short_edges(verts: np.ndarray, faces: np.ndarray, tol: float = 1e-6
+                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Merge the two ends of every edge shorter than `tol` and drop the triangles that become
+    degenerate (an edge collapse: each removed needle's two other edges pair up, so a closed
+    mesh stays closed). Returns (vertices, faces, mask of the kept input faces). Booleans leave
+    a few such needles, which `Manifold.simplify` does not always remove."""
+    e = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    short = np.linalg.norm(verts[e[:, 0]] - verts[e[:, 1]], axis=1) < tol
+    if not short.any():
+        return verts, faces, np.ones(len(faces), bool)
+    parent = np.arange(len(verts))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for a, b in e[short]:
+        ra, rb = find(int(a)), find(int(b))
+        if ra != rb:
+            parent[max(ra, rb)] = min(ra, rb)
+    root = np.array([find(i) for i in range(len(verts))])
+    f = root[faces]
+    keep = (f[:, 0] != f[:, 1]) & (f[:, 1] != f[:, 2]) & (f[:, 2] != f[:, 0])
+    f = f[keep]
+    used, inv = np.unique(f, return_inverse=True)
+    return verts[used], inv.reshape(-1, 3), keep
 
 
 def solid_union(solids: Iterable[m3d.Manifold]) -> m3d.Manifold:

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from ..tags import Semantics, Subpart
 from .evaluator import Evaluator
 from .expressions import (BoolOp, Compare, Count, ForAll, FromGenerator, InRange, Node, Problem,
-                          RelatedTo, SceneSet, Tagged)
+                          RelatedTo, SceneSet, Tagged, Var)
 from .relations import Relation
 
 
@@ -96,6 +96,54 @@ def context_stage(ctx: Context, parents, room_ids: frozenset[str]) -> str:
     return "large" if on_floor else "medium"
 
 
+STAGE_ORDER = {"large": 0, "medium": 1, "small": 2}
+
+
+def _is_room_set(node: Node) -> bool:
+    while True:
+        if isinstance(node, Tagged) and Semantics.Room in node.include:
+            return True
+        if not node.children:
+            return False
+        node = node.children[0]
+
+
+def static_stage(node: Node) -> str | None:
+    """The stage whose objects a set expression's chain describes, judged from its relations
+    alone (before anything exists); None if it names no relation."""
+    rels = []
+    while True:
+        if isinstance(node, RelatedTo):
+            rels.append((node.relation, _is_room_set(node.children[1])))
+        if not node.children or isinstance(node, Var):
+            break
+        node = node.children[0]
+    if not rels:
+        return None
+    on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in rels)
+    object_parent = any(not room for _, room in rels)
+    if object_parent:
+        return "medium" if on_floor else "small"
+    return "large" if on_floor else "medium"
+
+
+def term_stage(expr: Node) -> str:
+    """The latest stage any set in `expr` belongs to: a term only counts from that stage on
+    (chairs-per-table is ignored while the large stage places tables)."""
+    best, seen, stack = "large", set(), [expr]
+    while stack:
+        n = stack.pop()
+        if n.uid in seen:
+            continue
+        seen.add(n.uid)
+        if isinstance(n, RelatedTo):
+            s = static_stage(n)
+            if s is not None and STAGE_ORDER[s] > STAGE_ORDER[best]:
+                best = s
+        stack.extend(n.children)
+    return best
+
+
 def _count_bounds(c: Node, ev: Evaluator, env: dict) -> list[tuple[Node, float, float, dict]]:
     """(set node, lo, hi, env) for each count bound found in constraint `c` under `env`."""
     out = []
@@ -130,10 +178,13 @@ def _merge_parents(rels: list[tuple[Relation, frozenset]]) -> tuple:
     return tuple((rel, tuple(sorted(ps))) for rel, ps in merged.items())
 
 
-def find_bounds(problem: Problem, ev: Evaluator) -> list[Bound]:
-    """Every count bound of `problem`'s constraints on an addable context, in the current state."""
+def find_bounds(problem: Problem, ev: Evaluator, names=None) -> list[Bound]:
+    """Every count bound of `problem`'s constraints (those in `names`, if given) on an addable
+    context, in the current state."""
     out = []
     for name, c in problem.constraints.items():
+        if names is not None and name not in names:
+            continue
         for set_node, lo, hi, env in _count_bounds(c, ev, {}):
             ctx = context_of(set_node)
             if ctx is None:

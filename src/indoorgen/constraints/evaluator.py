@@ -89,8 +89,9 @@ class Evaluator:
         self._dirty: set[Key] = set()
         self._suspect: set[Key] = set()
         self._frames: list[tuple[_Entry | None, dict, set, bool]] = []
-        self._roots = [(("c", n), c) for n, c in problem.constraints.items()] + \
-                      [(("s", n), t.expr) for n, t in problem.score_terms.items()]
+        self._all_roots = [(("c", n), c) for n, c in problem.constraints.items()] + \
+                          [(("s", n), t.expr) for n, t in problem.score_terms.items()]
+        self._roots = self._all_roots
         self.recomputed = 0  # entries recomputed since construction (for tests and benchmarks)
 
     # -- the interface nodes use while computing ------------------------------------------
@@ -146,7 +147,9 @@ class Evaluator:
             vals[key] = self.get(node, {})
         res = self._result(vals)
         if self.check:
-            full = Evaluator(self.problem, self.view).evaluate()
+            fresh = Evaluator(self.problem, self.view)
+            fresh.set_active(self.active)
+            full = fresh.evaluate()
             for name in res.violations:
                 if not _same(res.violations[name], full.violations[name]):
                     raise AssertionError(f"incremental != full for constraint {name!r}: "
@@ -156,6 +159,15 @@ class Evaluator:
                     raise AssertionError(f"incremental != full for score {name!r}: "
                                          f"{res.scores[name]} vs {full.scores[name]}")
         return res
+
+    def set_active(self, names: set[str] | None) -> None:
+        """Evaluate only the named constraints and score terms (None: all of them). Inactive
+        terms are neither computed nor reported, so a stage pays only for what it can change."""
+        self._roots = [(k, n) for k, n in self._all_roots if names is None or k[1] in names]
+
+    @property
+    def active(self) -> set[str]:
+        return {k[1] for k, _ in self._roots}
 
     def value(self, node: Node, env: dict | None = None) -> Any:
         """Evaluate any node of the program (e.g. a set expression, for bound reasoning)."""
@@ -167,9 +179,10 @@ class Evaluator:
 
     # -- internals -----------------------------------------------------------------------------
     def _result(self, vals: dict) -> Result:
-        viol = {n: float(vals[("c", n)]) for n in self.problem.constraints}
-        scores = {n: float(vals[("s", n)]) for n in self.problem.score_terms}
-        loss = sum(t.weight * t.sign * scores[n] for n, t in self.problem.score_terms.items())
+        viol = {n: float(vals[("c", n)]) for n in self.problem.constraints if ("c", n) in vals}
+        scores = {n: float(vals[("s", n)]) for n in self.problem.score_terms if ("s", n) in vals}
+        loss = sum(self.problem.score_terms[n].weight * self.problem.score_terms[n].sign * v
+                   for n, v in scores.items())
         return Result(viol, scores, float(loss))
 
     def _refresh(self, key: Key, node: Node, env: dict) -> _Entry:

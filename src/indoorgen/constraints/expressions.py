@@ -111,10 +111,10 @@ class ObjSet(Node):
         return Count(self)
 
     def volume(self, dims: Iterable[int] = (0, 1, 2)) -> "Scalar":
-        return Volume(self, tuple(dims))
+        return volume(self, dims)
 
     def area(self) -> "Scalar":
-        return Area(self)
+        return area(self)
 
     def distance(self, other: "ObjSet") -> "Scalar":
         """Smallest 2D (plan view) distance between the two sets; a room counts as its walls."""
@@ -590,21 +590,27 @@ class Height(GeometricTerm):
         return float(math.fsum(float(ev.view.center(o)[2]) for o in sorted(s)))
 
 
+def _per_object(objs: ObjSet, make: Callable[[ObjSet], Scalar]) -> Scalar:
+    """A sum over `objs` of a per-object term, written as a quantifier so the evaluator caches
+    each object's share and a move re-computes only the moved object's."""
+    return objs.sum(make)
+
+
 # public functional forms -------------------------------------------------------------------
 def angle_alignment_cost(objs: ObjSet, reference: ObjSet) -> Scalar:
     """Sum over objs of (1 - cos angle)/2 between each front and the inward normal of the
     nearest edge of the nearest reference footprint (a room: its nearest wall)."""
-    return AngleAlignment(objs, reference)
+    return _per_object(objs, lambda o: AngleAlignment(o, reference))
 
 
 def focus_score(objs: ObjSet, target: ObjSet) -> Scalar:
     """Sum over objs of how far each one's front turns away from its nearest target (0..1 each)."""
-    return Focus(objs, target)
+    return _per_object(objs, lambda o: Focus(o, target))
 
 
 def accessibility_cost(objs: ObjSet, blockers: ObjSet, fast: bool = True) -> Scalar:
     """How much `blockers` stand in front of `objs` (closer, bigger, more frontal = worse)."""
-    return Accessibility(objs, blockers, fast)
+    return _per_object(objs, lambda o: Accessibility(o, blockers, fast))
 
 
 def rotational_asymmetry(objs: ObjSet) -> Scalar:
@@ -622,21 +628,21 @@ def freespace_2d(objs: ObjSet, occupants: ObjSet) -> Scalar:
 
 def center_of_support_distance(objs: ObjSet) -> Scalar:
     """Sum of plan distances from each object to the centre of the surface it rests on."""
-    return CenterOfSupport(objs)
+    return _per_object(objs, CenterOfSupport)
 
 
 def height(objs: ObjSet) -> Scalar:
     """Sum of the heights above the floor of the objects' bounding-box centres (for hanging
     pictures at eye level)."""
-    return Height(objs)
+    return _per_object(objs, Height)
 
 
 def volume(objs: ObjSet, dims: Iterable[int] = (0, 1, 2)) -> Scalar:
-    return Volume(objs, tuple(dims))
+    return _per_object(objs, lambda o: Volume(o, tuple(dims)))
 
 
 def area(objs: ObjSet) -> Scalar:
-    return Area(objs)
+    return _per_object(objs, Area)
 
 
 def distance(a: ObjSet, b: ObjSet) -> Scalar:

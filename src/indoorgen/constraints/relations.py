@@ -132,3 +132,28 @@ class NegatedRelation(Relation):
 
     def __repr__(self) -> str:
         return f"~{self.inner!r}"
+
+
+def parse_relation(text: str) -> Relation:
+    """Read back a relation from its `repr` (as stored in scene.json)."""
+    import re
+    from ..errors import ConfigError
+    t = text.strip()
+    if t.startswith("~"):
+        return NegatedRelation(parse_relation(t[1:]))
+    if t == "AnyRelation()":
+        return AnyRelation()
+    m = re.fullmatch(r"(\w+)\(([^)]*)\)", t)
+    if not m:
+        raise ConfigError(f"unreadable relation {text!r}")
+    kind, args = m.group(1), [a.strip() for a in m.group(2).split(",")]
+    sub = lambda a: None if a in ("None", "") else Subpart(a)  # noqa: E731
+    if kind == "StableAgainst":
+        return StableAgainst(Subpart(args[0]), Subpart(args[1]), float(args[2]))
+    if kind == "SupportedBy":
+        return StableAgainst(Subpart(args[0]), Subpart(args[1]), float(args[2]), overhang=False)
+    if kind == "CoPlanar":
+        return CoPlanar(Subpart(args[0]), Subpart(args[1]), float(args[2]))
+    if kind == "Touching":
+        return Touching(sub(args[0]), sub(args[1]))
+    raise ConfigError(f"unknown relation kind in {text!r}")

@@ -273,15 +273,18 @@ def _draw_object(ax, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
     c = np.asarray(fp.centroid.coords[0])
     size = math.sqrt(max(fp.area, 1e-6))
     front = obj.pose.front()[:2]
-    arrow_len = float(np.clip(0.45 * size, 0.08, 0.5))
-    ax.add_patch(FancyArrow(c[0], c[1], *(arrow_len * front), width=0.012 * scale ** 0.5,
-                            head_width=0.05 * min(scale ** 0.5, 3.0) + 0.02 * size,
-                            head_length=0.3 * arrow_len, length_includes_head=True,
-                            color="#1f1f1f", alpha=0.75, linewidth=0, zorder=z + 1))
+    px = scale / (0.7 * TARGET_WIDTH_PX)  # metres per pixel, roughly
+    arrow_len = float(np.clip(0.45 * size, 10 * px, 0.5))
+    ax.add_patch(FancyArrow(c[0], c[1], *(arrow_len * front), width=2.0 * px,
+                            head_width=8.0 * px, head_length=min(7.0 * px, 0.5 * arrow_len),
+                            length_includes_head=True, color="#1f1f1f", alpha=0.7,
+                            linewidth=0, zorder=z + 500))
     small = fp.area < 0.15
-    ax.text(c[0], c[1] - 0.06 * min(size, 1.0), short_label(obj.name),
-            fontsize=5.5 if small else 6.5, ha="center", va="top", color="#202020",
-            zorder=z + 2, path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
+    # the label sits behind the arrow's tail so the two never overlap
+    at = c - front * (9.0 * px)
+    ax.text(at[0], at[1], short_label(obj.name), fontsize=5.5 if small else 6.5,
+            ha="center", va="center", color="#202020", zorder=z + 1000,
+            path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
 
 
 def _darker(colour: str, factor: float = 0.65) -> tuple[float, float, float]:

@@ -17,7 +17,7 @@ from typing import Callable
 import numpy as np
 
 from ..assets import factories_with, get_factory
-from ..constraints.bounds import Bound, find_bounds
+from ..constraints.bounds import STAGE_ORDER, Bound, find_bounds, term_stage
 from ..constraints.evaluator import Evaluator, Result
 from ..constraints.expressions import Problem
 from ..rng import child_seed
@@ -41,6 +41,8 @@ class AnnealConfig:
     translate_sigma: float = 2.0   # metres of step std-dev per unit of temperature
     rotate_sigma: float = 6.0      # radians of step std-dev per unit of temperature
     check: bool = False            # verify incremental evaluation against full every step
+    moves: dict[str, float] | None = None  # fixed move weights (benchmarks), else the schedule
+    patience: float = 0.2          # stop once this fraction of the steps brought no gain
 
 
 @dataclass
@@ -56,12 +58,14 @@ class StageStats:
     objects: int = 0
     violation: float = 0.0
     loss: float = 0.0
+    stopped_early: bool = False
 
     def to_json(self) -> dict:
         return {"room": self.room, "stage": self.stage, "steps": self.steps,
                 "accepted": self.accepted, "proposed": self.proposed, "valid": self.valid,
                 "accepted_by_move": self.taken, "seconds": round(self.seconds, 4),
-                "objects": self.objects, "violation": self.violation, "loss": self.loss}
+                "objects": self.objects, "violation": self.violation, "loss": self.loss,
+                "stopped_early": self.stopped_early}
 
 
 class Annealer:
@@ -72,6 +76,12 @@ class Annealer:
         self.state, self.problem, self.ev = state, problem, ev
         self.room, self.stage, self.rng, self.cfg = room, stage, rng, config
         self.namer = namer
+        upto = STAGE_ORDER[stage]
+        self.active_constraints = {n for n, c in problem.constraints.items()
+                                   if STAGE_ORDER[term_stage(c)] <= upto}
+        active = self.active_constraints | {n for n, t in problem.score_terms.items()
+                                            if STAGE_ORDER[term_stage(t.expr)] <= upto}
+        ev.set_active(active)
         self.result: Result = ev.evaluate()
         self.stats = StageStats(room, stage)
         self._unknown_tags: set = set()
@@ -83,7 +93,8 @@ class Annealer:
 
     def _bounds(self) -> list[Bound]:
         rooms = frozenset(self.state.rooms)
-        return [b for b in find_bounds(self.problem, self.ev) if b.stage(rooms) == self.stage]
+        return [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
+                if b.stage(rooms) == self.stage]
 
     def _pick(self, items):
         return items[int(self.rng.integers(len(items)))]
@@ -206,7 +217,7 @@ class Annealer:
         if res is None or not res[2].rotates:
             return None
         if self.rng.random() < 0.25:
-            dyaw = float(self.rng.choice([-1.0, 1.0])) * math.pi / 2
+            dyaw = float(self.rng.choice([-0.5, 0.5, 1.0])) * math.pi
         else:
             dyaw = float(self.rng.normal(0.0, self.cfg.rotate_sigma * self.temperature))
         undo = self._pose_undo(name)
@@ -305,6 +316,10 @@ class Annealer:
 
     # -- the loop -----------------------------------------------------------------------------
     def _weights(self, frac: float) -> tuple[list[str], np.ndarray]:
+        if self.cfg.moves:
+            names = sorted(self.cfg.moves)
+            w = np.array([self.cfg.moves[n] for n in names], float)
+            return names, w / w.sum()
         names = list(MOVES_DISCRETE) + list(MOVES_CONTINUOUS)
         w = [v * (1.0 - 0.8 * frac) for v in MOVES_DISCRETE.values()] + \
             [v * (0.2 + 0.8 * frac) for v in MOVES_CONTINUOUS.values()]
@@ -325,7 +340,13 @@ class Annealer:
         t0 = time.perf_counter()
         cfg, st = self.cfg, self.stats
         self.temperature = cfg.t_start
+        best = (self.result.violation, self.result.loss)
+        last_gain = 0
+        patience = max(60, int(cfg.patience * steps))
         for step in range(steps):
+            if step - last_gain > patience and step > steps // 2 and self.result.violation == 0:
+                st.stopped_early = True
+                break  # converged: nothing has improved for a while
             frac = step / max(1, steps - 1)
             self.temperature = cfg.t_start * (cfg.t_end / cfg.t_start) ** frac
             names, w = self._weights(frac)
@@ -341,6 +362,8 @@ class Annealer:
             new = self.ev.evaluate()
             if self.accept(self.result, new):
                 self.result = new
+                if (new.violation, new.loss + 1e-4) < best:
+                    best, last_gain = (new.violation, new.loss), step
                 st.accepted += 1
                 st.taken[move] = st.taken.get(move, 0) + 1
             else:

@@ -35,6 +35,7 @@ class AssetCache:
         self._placeholders: dict[tuple, Asset] = {}
         self._full: dict[tuple, Asset] = {}
         self._bvh: dict[tuple, fcl.BVHModel] = {}
+        self._hull: dict[tuple, np.ndarray] = {}
         self.builds = 0
 
     def placeholder(self, generator: str, params: dict[str, Any]) -> Asset:
@@ -53,6 +54,17 @@ class AssetCache:
             a = get_factory(generator).create(params)
             self._full[key] = a
         return a
+
+    def hull_2d(self, generator: str, params: dict[str, Any]) -> np.ndarray:
+        """The placeholder's plan-view outline (convex hull of its vertices, local XY)."""
+        key = params_key(generator, params)
+        h = self._hull.get(key)
+        if h is None:
+            import shapely.geometry as sg
+            pts = self.placeholder(generator, params).mesh.vertices[:, :2]
+            h = np.asarray(sg.MultiPoint(pts).convex_hull.exterior.coords)[:-1]
+            self._hull[key] = h
+        return h
 
     def placeholder_bvh(self, generator: str, params: dict[str, Any]) -> fcl.BVHModel:
         key = params_key(generator, params)

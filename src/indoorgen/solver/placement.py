@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 import shapely.geometry as sg
 
 from ..assets import Asset, Surface
@@ -95,17 +96,26 @@ def placements_hold(state: State, name: str, tol: float = 1e-4) -> bool:
     for p in ob.placements:
         parent = state.surface_world(p.parent, p.parent_surface)
         child = ob.asset.surface(p.child_surface).transformed(r, ob.position)
-        poly = parent.polygon
+        if isinstance(p.relation, CoPlanar):
+            continue  # in the plane is all CoPlanar asks (solve_pose guarantees it)
         if isinstance(p.relation, StableAgainst) and p.relation.overhang:
-            xy = _in_parent_2d(parent, child.corners())
-            if not poly.buffer(tol).contains(sg.Polygon(xy)):
-                return False
+            pts = child.corners()
         else:
             c = child.polygon.centroid
-            xy = _in_parent_2d(parent, child.to_world(np.array([[c.x, c.y]])))
-            if not poly.buffer(tol).contains(sg.Point(xy[0])):
-                return False
+            pts = child.to_world(np.array([[c.x, c.y]]))
+        if not _inside(parent.polygon, _in_parent_2d(parent, pts), tol):
+            return False
     return True
+
+
+def _inside(poly: sg.Polygon, xy: np.ndarray, tol: float) -> bool:
+    """Are all points inside `poly` or within `tol` of it? (Corners suffice: a child surface is
+    convex, and walls and collisions catch the rare notch of a non-convex room.)"""
+    inside = shapely.contains_xy(poly, xy[:, 0], xy[:, 1])
+    if inside.all():
+        return True
+    out = xy[~inside]
+    return bool((shapely.distance(poly, shapely.points(out)) <= tol).all())
 
 
 def sample_point(surface: Surface, rng: np.random.Generator, margin: float = 0.0) -> np.ndarray:

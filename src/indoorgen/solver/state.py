@@ -148,10 +148,9 @@ class State:
 
         def f():
             ob = self.objects[o]
-            (x0, y0, _), (x1, y1, _) = ob.asset.mesh.bounds
-            pts = np.array([[x0, y0, 0], [x1, y0, 0], [x1, y1, 0], [x0, y1, 0]])
-            w = pts @ rotation(ob.yaw).T + ob.position
-            return sg.Polygon(w[:, :2])
+            hull = self.cache.hull_2d(ob.generator, ob.params)
+            r = rotation(ob.yaw)[:2, :2]
+            return sg.Polygon(hull @ r.T + ob.position[:2])
         return self._cached(o, "footprint", f)
 
     def outline(self, o: str):
@@ -243,3 +242,20 @@ class State:
             return bool(data.result.is_collision)
         finally:
             self.manager.registerObject(ob.cobj)
+
+
+def state_from_scene(scene, rooms: dict[str, RoomGeometry], cache: AssetCache) -> State:
+    """Rebuild a solver state (placeholders, poses, relations) from a saved Scene, so a scene
+    can be re-evaluated or validated without re-solving."""
+    from ..assets import get_factory
+    from ..constraints.relations import parse_relation
+    st = State(rooms, cache)
+    for o in scene.objects.values():
+        fac = get_factory(o.generator)
+        ob = ObjState(o.name, o.generator, dict(o.params), o.seed, frozenset(fac.tags), o.room,
+                      o.stage, cache.placeholder(o.generator, o.params),
+                      [Placement(parse_relation(r.relation), r.parent, r.child_surface,
+                                 r.parent_surface) for r in o.relations],
+                      np.array(o.pose.position, float), float(o.pose.yaw))
+        st.add(ob)
+    return st

@@ -44,6 +44,10 @@ class PartsFactory(AssetFactory):
     #: whether `create` is a closed (watertight) solid
     closed: ClassVar[bool] = True
 
+    def bottom_is_solid(self, params: dict[str, Any]) -> bool:
+        """Whether the whole `bottom` polygon rests on mesh for these params."""
+        return self.solid_bottom
+
     # ---- to implement
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         raise NotImplementedError

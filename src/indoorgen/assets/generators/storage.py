@@ -1,0 +1,176 @@
+"""Storage: TV stands and bookcases (open side / doors facing +X)."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ...tags import Semantics as S
+from ...tags import Subpart
+from ..base import Param, Surface, register
+from ..parts import Part, bevel_box, box, box_between, cylinder, legs
+from ._common import PartsFactory, bottom_rect, support_rect
+
+OVERLAP = 0.002
+MIN_SHELF_CLEARANCE = 0.25  # books up to ~24 cm tall fit on every shelf
+
+
+@register
+class TVStand(PartsFactory):
+    """A low media cabinet: carcass with 2-4 compartments (open, doors or drawers), on legs or a
+    plinth. Its `top` is a support surface (for the TV)."""
+
+    name = "tv_stand"
+    tags = frozenset({S.Object, S.Furniture, S.Storage, S.TVStand})
+    size_class = "large"
+    slots = ["wood", "front", "metal"]
+    params = {
+        "width": Param(1.2, 2.0, doc="Y extent (m)"),
+        "depth": Param(0.35, 0.5, doc="X extent of the carcass (m)"),
+        "height": Param(0.4, 0.6, doc="height of the top's upper face (m)"),
+        "board_thickness": Param(0.016, 0.025, doc="board thickness (m)"),
+        "n_compartments": Param(2, 4, kind="int", doc="compartments side by side"),
+        "front_style": Param(kind="choice", choices=("open", "doors", "drawers"),
+                             doc="what closes the compartments"),
+        "base_style": Param(kind="choice", choices=("legs", "plinth"), doc="legs or a plinth"),
+        "base_height": Param(0.04, 0.15, doc="leg or plinth height (m)"),
+        "edge_radius": Param(0.0, 0.006, doc="rounding of the top's edges (m)"),
+    }
+
+    def bottom_is_solid(self, params):
+        return self.resolve(params)["base_style"] == "plinth"
+
+    def parts(self, p, detail):
+        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
+        zb = p["base_height"]
+        n = int(p["n_compartments"])
+        out: list[Part] = []
+        er = p["edge_radius"]
+        top = (bevel_box((D, W, t), (0, 0, H - t / 2), er, 2) if detail and er > 1e-4
+               else box((D, W, t), (0, 0, H - t / 2)))
+        out.append(Part(top, "wood"))
+        out.append(Part(box_between((-D / 2, -W / 2, zb), (D / 2, W / 2, zb + t)), "wood"))  # bottom
+        for s in (-1, 1):  # sides
+            out.append(Part(box_between((-D / 2, s * W / 2 - t / 2 - s * t / 2, zb),
+                                        (D / 2, s * W / 2 + t / 2 - s * t / 2, H - t + OVERLAP)), "wood"))
+        out.append(Part(box_between((-D / 2, -W / 2 + t - OVERLAP, zb + t - OVERLAP),
+                                    (-D / 2 + t, W / 2 - t + OVERLAP, H - t + OVERLAP)), "wood"))  # back
+        inner = W - 2 * t
+        cw = (inner - (n - 1) * t) / n
+        for i in range(1, n):  # dividers
+            y = -inner / 2 + i * (cw + t) - t / 2
+            out.append(Part(box_between((-D / 2 + t - OVERLAP, y - t / 2, zb + t - OVERLAP),
+                                        (D / 2 - 0.005, y + t / 2, H - t + OVERLAP)), "wood"))
+        style = p["front_style"]
+        ft = 0.018
+        if style != "open":
+            # closed fronts: fill the carcass so it holds no sealed internal void (a second shell)
+            out.append(Part(box_between((-D / 2 + t - OVERLAP, -W / 2 + t - OVERLAP, zb + t - OVERLAP),
+                                        (D / 2 - ft + OVERLAP, W / 2 - t + OVERLAP, H - t + OVERLAP)),
+                            "wood"))
+            for i in range(n):
+                y0 = -inner / 2 + i * (cw + t)
+                y1 = y0 + cw
+                # fronts fill the opening, overlapping the carcass edges by OVERLAP
+                rows = 1 if style == "doors" else 2
+                z0, z1 = zb + t - OVERLAP, H - t + OVERLAP
+                hgt = (z1 - z0) / rows
+                for r in range(rows):
+                    za, zc = z0 + r * hgt, z0 + (r + 1) * hgt
+                    lo, hi = (D / 2 - ft, y0 - OVERLAP, za), (D / 2, y1 + OVERLAP, zc)
+                    out.append(Part(box_between(lo, hi), "front"))
+                    # handle: a short bar standing 2.5 cm proud of the front
+                    zh = (za + zc) / 2 if style == "drawers" else zc - 0.06
+                    yh = (y0 + y1) / 2 if style == "drawers" else (y1 - 0.04 if i % 2 == 0 else y0 + 0.04)
+                    hl = min(0.12, cw * 0.4)
+                    if style == "doors":
+                        hb = box_between((D / 2 - OVERLAP, yh - 0.006, zh - hl / 2), (D / 2 + 0.025, yh + 0.006, zh + hl / 2))
+                    else:
+                        hb = box_between((D / 2 - OVERLAP, yh - hl / 2, zh - 0.006), (D / 2 + 0.025, yh + hl / 2, zh + 0.006))
+                    out.append(Part(hb, "metal"))
+        if p["base_style"] == "plinth":
+            out.append(Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, zb + OVERLAP)), "wood"))
+        else:
+            for leg in legs((D, W), 0.02, 0.04, 0.0, zb + OVERLAP, taper=0.7 if detail else 1.0,
+                            round_legs=True, circumscribed=not detail, sections=16 if detail else 8):
+                out.append(Part(leg, "metal"))
+        return out
+
+    def extra_surfaces(self, p):
+        W, D, H, zb = p["width"], p["depth"], p["height"], p["base_height"]
+        z0 = 0.0 if p["base_style"] == "plinth" else zb
+        return [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),
+                bottom_rect((0, 0, 0), D / 2, W / 2),  # the carcass footprint, handles excluded
+                Surface.rect("back", Subpart.Back, (-D / 2, 0, (z0 + H) / 2), (-1, 0, 0), (0, 1, 0),
+                             W / 2, (H - z0) / 2)]
+
+
+def bookcase_levels(p: dict[str, Any]) -> tuple[int, float, float]:
+    """(number of shelf levels, clearance between them, top of the bottom board). Levels are
+    `n_shelves` reduced until each gets >= 25 cm of clearance (the height range ensures >= 3)."""
+    H, t, ph = p["height"], p["board_thickness"], p["plinth_height"]
+    z_b = ph + t
+    k = int(p["n_shelves"])
+    while k > 1:
+        clear = (H - t - z_b - (k - 1) * t) / k
+        if clear >= MIN_SHELF_CLEARANCE:
+            break
+        k -= 1
+    clear = (H - t - z_b - (k - 1) * t) / k
+    return k, clear, z_b
+
+
+@register
+class Bookcase(PartsFactory):
+    """An open bookcase: sides, back panel, top, a solid plinth and 3-6 shelf levels, each a
+    support surface `shelf_i` (shelf_0 = the bottom board)."""
+
+    name = "bookcase"
+    tags = frozenset({S.Object, S.Furniture, S.Storage, S.Bookcase})
+    size_class = "large"
+    slots = ["wood", "back"]
+    solid_bottom = True
+    params = {
+        "width": Param(0.6, 1.2, doc="Y extent (m)"),
+        "depth": Param(0.25, 0.4, doc="X extent (m)"),
+        "height": Param(0.95, 2.1, doc="Z extent (m)"),
+        "board_thickness": Param(0.016, 0.025, doc="board thickness (m)"),
+        "n_shelves": Param(3, 6, kind="int",
+                           doc="shelf levels incl. the bottom board; reduced if the height cannot "
+                               "give each >= 0.25 m of clearance"),
+        "plinth_height": Param(0.04, 0.1, doc="plinth height under the bottom board (m)"),
+        "back_thickness": Param(0.004, 0.012, doc="back panel thickness (m)"),
+        "shelf_setback": Param(0.0, 0.02, doc="how far shelves stop short of the front (m)"),
+    }
+
+    def parts(self, p, detail):
+        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
+        bt, sb = p["back_thickness"], p["shelf_setback"]
+        k, clear, z_b = bookcase_levels(p)
+        out: list[Part] = [
+            Part(box_between((-D / 2, -W / 2, H - t), (D / 2, W / 2, H)), "wood"),  # top
+            Part(box_between((-D / 2, -W / 2, 0.0), (-D / 2 + bt, W / 2, H - t + OVERLAP)), "back"),
+            Part(box_between((-D / 2 + bt - OVERLAP, -W / 2 + t - OVERLAP, 0.0),
+                             (D / 2, W / 2 - t + OVERLAP, p["plinth_height"] + OVERLAP)), "wood"),
+        ]
+        for s in (-1, 1):
+            out.append(Part(box_between((-D / 2 + bt - OVERLAP, min(s * W / 2, s * (W / 2 - t)), 0.0),
+                                        (D / 2, max(s * W / 2, s * (W / 2 - t)), H - t + OVERLAP)), "wood"))
+        for i in range(k):
+            zt = z_b + i * (clear + t)
+            x1 = D / 2 if i == 0 else D / 2 - sb
+            out.append(Part(box_between((-D / 2 + bt - OVERLAP, -W / 2 + t - OVERLAP, zt - t),
+                                        (x1, W / 2 - t + OVERLAP, zt)), "wood"))
+        return out
+
+    def extra_surfaces(self, p):
+        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
+        bt, sb = p["back_thickness"], p["shelf_setback"]
+        k, clear, z_b = bookcase_levels(p)
+        out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02)]
+        iw = W - 2 * t
+        for i in range(k):
+            zt = z_b + i * (clear + t)
+            x0, x1 = -D / 2 + bt, (D / 2 if i == 0 else D / 2 - sb)
+            out.append(support_rect(f"shelf_{i}", ((x0 + x1) / 2, 0, zt), (x1 - x0 - 0.02) / 2,
+                                    (iw - 0.02) / 2))
+        return out

@@ -1,0 +1,172 @@
+"""An independent check of a generated scene, sharing none of the solver's bookkeeping.
+
+It rebuilds every object's *full* mesh from (generator, params) and the room from its polygon,
+then checks with manifold3d booleans and plain geometry:
+
+- no two meshes (objects, walls, floor, ceiling) interpenetrate by more than 1 mm;
+- every object rests on or hangs from its declared parent surface within 5 mm;
+- every door's clearance zone is free of objects;
+- dining chairs face the table they are pulled up to;
+- the room's constraint program, evaluated from scratch, has no hard violation.
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import manifold3d
+import numpy as np
+import shapely.geometry as sg
+import trimesh
+
+from .assets import get_factory
+from .constraints.relations import CONTACT_GAP, parse_relation
+from .errors import ConfigError
+from .floorplan.room import build_room
+from .scene import Scene
+from .tags import Semantics
+
+PENETRATION_TOL = 0.001
+SUPPORT_TOL = 0.005
+
+
+def _manifold(mesh: trimesh.Trimesh) -> manifold3d.Manifold:
+    return manifold3d.Manifold(manifold3d.Mesh(
+        vert_properties=np.asarray(mesh.vertices, np.float32),
+        tri_verts=np.asarray(mesh.faces, np.uint32)))
+
+
+def _penetration(a: manifold3d.Manifold, b: manifold3d.Manifold) -> float:
+    """Smallest extent of the intersection volume's bounding box (0 if they don't overlap)."""
+    inter = a ^ b
+    if inter.is_empty() or inter.volume() < 1e-12:
+        return 0.0
+    lo, hi = np.array(inter.bounding_box()[:3]), np.array(inter.bounding_box()[3:])
+    return float(np.min(hi - lo))
+
+
+def _world(scene_obj, mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+    m = mesh.copy()
+    m.apply_transform(scene_obj.pose.matrix())
+    return m
+
+
+def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any]:
+    """Check `scene`; return a report with `ok` and the list of problems found per check."""
+    rooms = {n: build_room(r) for n, r in scene.rooms.items()}
+    meshes, assets = {}, {}
+    for n, o in scene.objects.items():
+        a = get_factory(o.generator).create(o.params)
+        assets[n] = a
+        meshes[n] = _world(o, a.mesh)
+    solids: dict[str, trimesh.Trimesh] = dict(meshes)
+    for rn, g in rooms.items():
+        for i, w in enumerate(g.walls):
+            solids[f"{rn}/wall_{i}"] = w
+        solids[f"{rn}/floor"] = g.floor
+        solids[f"{rn}/ceiling"] = g.ceiling
+
+    # 1. interpenetration (AABB prefilter, then exact manifold intersection)
+    names = sorted(solids)
+    bounds = np.array([solids[n].bounds for n in names])
+    man: dict[str, manifold3d.Manifold] = {}
+    penetrating = []
+    for i, a in enumerate(names):
+        lo, hi = bounds[i]
+        overlap = np.all(bounds[i + 1:, 0] < hi - PENETRATION_TOL, axis=1) & \
+            np.all(bounds[i + 1:, 1] > lo + PENETRATION_TOL, axis=1)
+        for j in np.nonzero(overlap)[0] + i + 1:
+            b = names[j]
+            if a not in meshes and b not in meshes:
+                continue  # architecture against architecture
+            ma = man.setdefault(a, _manifold(solids[a]))
+            mb = man.setdefault(b, _manifold(solids[b]))
+            d = _penetration(ma, mb)
+            if d > PENETRATION_TOL:
+                penetrating.append({"a": a, "b": b, "depth_m": round(d, 4)})
+
+    # 2. support: each declared relation's surfaces are parallel, facing, at the margin
+    unsupported = []
+    for n, o in scene.objects.items():
+        for r in o.relations:
+            rel = parse_relation(r.relation)
+            child = assets[n].surface(r.child_surface).transformed(o.pose.rotation(),
+                                                                    np.array(o.pose.position))
+            if r.parent in rooms:
+                parent = next(s for s in rooms[r.parent].surfaces if s.name == r.parent_surface)
+            else:
+                po = scene.objects[r.parent]
+                parent = assets[r.parent].surface(r.parent_surface).transformed(
+                    po.pose.rotation(), np.array(po.pose.position))
+            gaps = (child.corners() - parent.origin) @ parent.normal - rel.margin
+            facing = float(np.dot(child.normal, parent.normal))
+            if facing > -0.999 or np.abs(gaps).max() > SUPPORT_TOL:
+                unsupported.append({"object": n, "relation": r.relation, "parent": r.parent,
+                                    "gap_m": round(float(np.abs(gaps).max()), 4),
+                                    "facing": round(facing, 4)})
+
+    # 3. door clearance zones
+    blocked = []
+    for rn, g in rooms.items():
+        for k, zone in enumerate(g.door_zones):
+            for n, m in meshes.items():
+                if m.bounds[0][2] > 2.0:
+                    continue
+                fp = sg.MultiPoint(m.vertices[:, :2]).convex_hull
+                if fp.intersection(zone).area > 1e-6:
+                    blocked.append({"room": rn, "door": k, "object": n})
+
+    # 4. dining chairs face their table
+    misfacing = []
+    for n, o in scene.objects.items():
+        if Semantics.DiningChair.value not in o.tags:
+            continue
+        for r in o.relations:
+            if r.parent in scene.objects and Semantics.DiningTable.value in scene.objects[r.parent].tags:
+                t = scene.objects[r.parent]
+                to_table = np.array(t.pose.position[:2]) - np.array(o.pose.position[:2])
+                cos = float(np.dot(o.pose.front()[:2], to_table) / (np.linalg.norm(to_table) + 1e-12))
+                if cos < math.cos(math.radians(35)):
+                    misfacing.append({"chair": n, "table": r.parent, "cos": round(cos, 3)})
+
+    # 5. the program's hard constraints, evaluated from scratch
+    violations: dict[str, dict[str, float]] = {}
+    if program_check:
+        violations = program_violations(scene, rooms)
+    n_violated = sum(1 for v in violations.values() for x in v.values() if x > 1e-9)
+    ok = not (penetrating or unsupported or blocked or misfacing or n_violated)
+    return {"ok": ok, "objects": len(scene.objects), "interpenetrating": penetrating,
+            "unsupported": unsupported, "door_zone_blocked": blocked,
+            "chairs_not_facing_table": misfacing, "hard_violations": violations,
+            "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP}
+
+
+def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
+    """Each room's built-in program evaluated fully (a fresh evaluator) on the saved scene."""
+    from .constraints.evaluator import Evaluator
+    from .constraints.expressions import scene as scene_set
+    from .programs import ROOM_PROGRAMS
+    from .solver.assets_cache import AssetCache
+    from .solver.state import state_from_scene
+    state = state_from_scene(scene, rooms, AssetCache())
+    out = {}
+    for rn, room in scene.rooms.items():
+        prog = ROOM_PROGRAMS.get(room.room_type)
+        if prog is None:
+            continue
+        res = Evaluator(prog(scene_set()[Semantics.Room].named(rn)), state).evaluate()
+        out[rn] = {k: v for k, v in res.violations.items() if v > 1e-9}
+    return out
+
+
+def validate_scene_dir(path: Path) -> dict[str, Any]:
+    f = Path(path) / "scene.json"
+    try:
+        scene = Scene.from_json(json.loads(f.read_text()))
+    except FileNotFoundError:
+        raise ConfigError(f"{f} does not exist; pass a directory written by indoorgen generate") from None
+    except (ValueError, KeyError, TypeError) as e:
+        raise ConfigError(f"{f} is not a valid scene.json ({type(e).__name__}: {e})") from None
+    return validate_scene(scene)

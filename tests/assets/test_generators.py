@@ -1,0 +1,323 @@
+"""Every registered generator x 10 seeds against the asset contracts (see assets/base.py)."""
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import manifold3d as m3d
+import numpy as np
+import pytest
+import shapely.geometry as sg
+import trimesh
+
+from indoorgen.assets.base import Param, factory_names, get_factory
+from indoorgen.assets.parts import union
+from indoorgen.errors import ParameterError
+from indoorgen.tags import Semantics, Subpart
+
+EXPECTED = {
+    "dining_table_rect", "dining_table_round", "dining_chair", "sofa", "armchair",
+    "coffee_table", "side_table", "tv_stand", "tv", "bookcase", "floor_lamp", "rug",
+    "wall_art", "book", "plate", "cup", "vase",
+}
+NAMES = factory_names()
+SEEDS = range(10)
+CASES = [(n, s) for n in NAMES for s in SEEDS]
+TABLES = {"dining_table_rect", "dining_table_round", "coffee_table", "side_table"}
+RECT_TABLES = TABLES - {"dining_table_round"}
+BACK_ON_MESH = {"bookcase", "tv_stand", "wall_art"}
+TOL = 1e-3  # 1 mm
+
+
+@lru_cache(maxsize=None)
+def build(name: str, seed: int):
+    f = get_factory(name)
+    p = f.sample_params(np.random.default_rng(seed))
+    return f, p, f.placeholder(p), f.create(p)
+
+
+def distances(mesh: trimesh.Trimesh, pts: np.ndarray) -> np.ndarray:
+    """Exact distance from each point to the mesh surface (brute force over nearby triangles)."""
+    tris = mesh.triangles
+    lo, hi = tris.min(axis=1), tris.max(axis=1)
+    out = np.empty(len(pts))
+    for i, q in enumerate(pts):
+        near = np.all((lo <= q + 2e-3) & (hi >= q - 2e-3), axis=1)
+        if not near.any():
+            out[i] = np.inf
+            continue
+        t = tris[near]
+        cp = trimesh.triangles.closest_point(t, np.repeat(q[None], len(t), axis=0))
+        out[i] = np.linalg.norm(cp - q, axis=1).min()
+    return out
+
+
+def sample_polygon(poly: sg.Polygon) -> np.ndarray:
+    """Deterministic points inside a polygon: a representative point, the centroid, points
+    90% of the way to each vertex and a small grid."""
+    c = np.asarray(poly.representative_point().coords[0])
+    pts = [c, np.asarray(poly.centroid.coords[0])]
+    verts = np.asarray(poly.exterior.coords)[:-1]
+    step = max(1, len(verts) // 8)
+    pts += [c + 0.9 * (v - c) for v in verts[::step]]
+    x0, y0, x1, y1 = poly.bounds
+    for a in (0.2, 0.5, 0.8):
+        for b in (0.2, 0.5, 0.8):
+            pts.append(np.array([x0 + a * (x1 - x0), y0 + b * (y1 - y0)]))
+    return np.array([q for q in pts if poly.contains(sg.Point(q))])
+
+
+def to_local(surface, pts3: np.ndarray) -> np.ndarray:
+    d = pts3 - surface.origin
+    return np.c_[d @ surface.u, d @ surface.v]
+
+
+# ------------------------------------------------------------------------------- registry
+def test_all_generators_registered():
+    assert EXPECTED <= set(NAMES), EXPECTED - set(NAMES)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_factory_declaration(name):
+    f = get_factory(name)
+    assert f.name == name
+    assert Semantics.Object in f.tags
+    assert f.size_class in ("large", "medium", "small")
+    assert 6 <= len(f.params) <= 15, len(f.params)
+    for k, prm in f.params.items():
+        assert isinstance(prm, Param)
+        assert prm.doc, f"{name}.{k} undocumented"
+        if prm.kind in ("float", "int"):
+            assert prm.low < prm.high
+        if prm.kind == "choice":
+            assert len(prm.choices) >= 2
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_validate_params_rejects_bad_values(name):
+    f = get_factory(name)
+    with pytest.raises(ParameterError):
+        f.validate_params({"no_such_param": 1})
+    for k, prm in f.params.items():
+        if prm.kind in ("float", "int"):
+            with pytest.raises(ParameterError):
+                f.validate_params({k: prm.high + 1})
+            with pytest.raises(ParameterError):
+                f.validate_params({k: prm.low - 1})
+            assert f.validate_params({k: prm.low})[k] == prm.low
+        elif prm.kind == "choice":
+            with pytest.raises(ParameterError):
+                f.validate_params({k: "__nope__"})
+    with pytest.raises(ParameterError):
+        f.placeholder({"no_such_param": 1})
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_sampled_params_in_range(name, seed):
+    f, p, _, _ = build(name, seed)
+    assert set(p) == set(f.params)
+    for k, v in p.items():
+        prm = f.params[k]
+        if prm.kind == "float":
+            assert prm.low <= v <= prm.high
+        elif prm.kind == "int":
+            assert isinstance(v, int) and prm.low <= v <= prm.high
+        elif prm.kind == "bool":
+            assert isinstance(v, bool)
+        else:
+            assert v in prm.choices
+    assert f.validate_params(p) == p
+
+
+# ------------------------------------------------------------------------------- meshes
+@pytest.mark.parametrize("name,seed", CASES)
+def test_full_mesh(name, seed):
+    f, p, _, a = build(name, seed)
+    m = a.mesh
+    assert len(m.faces) > 0
+    if a.closed:
+        assert m.is_watertight
+        assert m.is_winding_consistent
+        assert m.volume > 0
+        assert m.body_count == 1, "loose shells"
+    assert (m.area_faces > 1e-12).all(), "degenerate faces"
+    limit = 30000 if f.size_class == "large" else 5000 if f.size_class == "small" else 20000
+    assert len(m.faces) <= limit
+    assert a.face_slots is not None and len(a.face_slots) == len(m.faces)
+    assert a.face_slots.min() >= 0 and a.face_slots.max() < len(a.slots)
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_local_frame(name, seed):
+    _, _, ph, a = build(name, seed)
+    for m in (a.mesh, ph.mesh):
+        lo, hi = m.bounds
+        assert abs(lo[2]) < TOL
+        assert np.all(np.abs((lo[:2] + hi[:2]) / 2) < TOL)
+    ext = a.extents
+    assert np.all(ext > 0.001)
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_placeholder(name, seed):
+    f, _, ph, a = build(name, seed)
+    assert len(ph.mesh.faces) < 600
+    assert np.abs(ph.mesh.bounds - a.mesh.bounds).max() <= 0.02
+    assert ph.face_slots is not None and len(ph.face_slots) == len(ph.mesh.faces)
+    assert ph.face_slots.max() < len(ph.slots)
+    # the same surfaces, exactly
+    assert [s.name for s in ph.surfaces] == [s.name for s in a.surfaces]
+    for s0, s1 in zip(ph.surfaces, a.surfaces):
+        assert s0.subpart == s1.subpart
+        assert np.allclose(s0.origin, s1.origin) and np.allclose(s0.normal, s1.normal)
+        assert np.allclose(s0.u, s1.u) and s0.polygon.equals(s1.polygon)
+
+
+@pytest.mark.parametrize("name,seed", [(n, s) for n in NAMES for s in range(3)])
+def test_placeholder_contains_full(name, seed):
+    """The cheap parts enclose the detailed ones: at most a sliver of the full solid (< 3% of its
+    volume, or < 2 cm^3) lies outside the placeholder."""
+    f, p, _, _ = build(name, seed)
+    full = m3d.Manifold.batch_boolean([q.solid for q in f.parts(p, True)], m3d.OpType.Add)
+    cheap = m3d.Manifold.batch_boolean([q.solid for q in f.parts(p, False)], m3d.OpType.Add)
+    excess = (full - cheap).volume()
+    assert excess <= max(0.03 * full.volume(), 2e-6), (excess, full.volume())
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_deterministic(name, seed):
+    f, p, ph, a = build(name, seed)
+    a2, ph2 = f.create(dict(p)), f.placeholder(dict(p))
+    assert np.array_equal(a.mesh.vertices, a2.mesh.vertices)
+    assert np.array_equal(a.mesh.faces, a2.mesh.faces)
+    assert np.array_equal(a.face_slots, a2.face_slots)
+    assert np.array_equal(ph.mesh.vertices, ph2.mesh.vertices)
+    p2 = f.sample_params(np.random.default_rng(seed))
+    assert p2 == p
+
+
+# ------------------------------------------------------------------------------- surfaces
+@pytest.mark.parametrize("name,seed", CASES)
+def test_standard_surfaces(name, seed):
+    _, _, _, a = build(name, seed)
+    d, w, h = a.extents
+    names = {s.name for s in a.surfaces}
+    assert len(names) == len(a.surfaces), "duplicate surface names"
+    for s in a.surfaces:
+        assert abs(np.linalg.norm(s.normal) - 1) < 1e-9 and abs(np.dot(s.normal, s.u)) < 1e-9
+        assert s.polygon.is_valid and s.polygon.area > 0
+    b = a.surface("bottom")
+    assert b.subpart == Subpart.Bottom and np.allclose(b.normal, (0, 0, -1))
+    assert np.allclose(b.corners()[:, 2], 0)
+    back, front = a.surface("back"), a.surface("front")
+    assert back.subpart == Subpart.Back and np.allclose(back.normal, (-1, 0, 0))
+    assert front.subpart == Subpart.Front and np.allclose(front.normal, (1, 0, 0))
+    assert np.allclose(back.corners()[:, 0], -d / 2, atol=TOL)
+    assert np.allclose(front.corners()[:, 0], d / 2, atol=TOL)
+    if name in TABLES:
+        top = a.surface("top")
+        assert top.subpart == Subpart.SupportSurface and np.allclose(top.normal, (0, 0, 1))
+        assert abs(top.origin[2] - h) < TOL
+        sides = [s for s in a.surfaces if s.subpart == Subpart.Side]
+        assert sides and all(s.name.startswith("side_") and s.name[5:].isdigit() for s in sides)
+    else:
+        assert a.surface("side_left").subpart == Subpart.Side
+        assert a.surface("side_right").subpart == Subpart.Side
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_surfaces_lie_on_mesh(name, seed):
+    f, p, _, a = build(name, seed)
+    m = a.mesh
+    checked = [s for s in a.surfaces if s.subpart == Subpart.SupportSurface]
+    if name in BACK_ON_MESH:
+        checked.append(a.surface("back"))
+    bottom = a.surface("bottom")
+    if f.bottom_is_solid(p):
+        checked.append(bottom)
+    for s in checked:
+        pts = s.to_world(sample_polygon(s.polygon))
+        assert len(pts) >= 3
+        dist = distances(m, pts)
+        assert dist.max() < TOL, (s.name, dist.max())
+    # the mesh rests on z=0 at >= 3 points, all inside the bottom polygon
+    low = m.vertices[m.vertices[:, 2] < TOL]
+    assert len(low) >= 3
+    region = bottom.polygon.buffer(TOL)
+    assert all(region.contains(sg.Point(q)) for q in to_local(bottom, low))
+
+
+@pytest.mark.parametrize("name,seed", [(n, s) for n in sorted(RECT_TABLES) for s in SEEDS])
+def test_rect_table_sides(name, seed):
+    _, _, _, a = build(name, seed)
+    d, w, h = a.extents
+    sides = {s.name: s for s in a.surfaces if s.subpart == Subpart.Side}
+    assert sorted(sides) == ["side_0", "side_1", "side_2", "side_3"]
+    normals = {tuple(np.round(s.normal).astype(int)) for s in sides.values()}
+    assert normals == {(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0)}
+    for s in sides.values():
+        c = s.corners()
+        assert abs(c[:, 2].min()) < 1e-9 and abs(c[:, 2].max() - h) < TOL  # full height
+        half = np.array([d, w, 0]) / 2
+        assert abs(np.dot(s.origin, s.normal) - np.dot(half, np.abs(s.normal))) < TOL  # outward
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_round_table_sides_tangent(seed):
+    _, p, _, a = build("dining_table_round", seed)
+    r = a.extents[0] / 2
+    assert abs(r - p["radius"]) < TOL
+    n = p["n_sides"]
+    sides = [s for s in a.surfaces if s.subpart == Subpart.Side]
+    assert [s.name for s in sides] == [f"side_{i}" for i in range(n)]
+    for s in sides:
+        xy = s.origin[:2]
+        assert abs(np.linalg.norm(xy) - r) < 1e-6  # tangent plane: distance from axis == r
+        assert np.allclose(s.normal[:2], xy / np.linalg.norm(xy)) and abs(s.normal[2]) < 1e-9
+        x0, y0, x1, y1 = s.polygon.bounds
+        assert abs((x1 - x0) - 2 * r * math.tan(math.pi / n)) < 1e-6
+        assert abs((y1 - y0) - a.extents[2]) < TOL
+    top = a.surface("top")
+    assert top.subpart == Subpart.SupportSurface
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_bookcase_shelves(seed):
+    _, p, _, a = build("bookcase", seed)
+    shelves = sorted((s for s in a.surfaces if s.name.startswith("shelf_")),
+                     key=lambda s: s.origin[2])
+    assert len(shelves) >= 3
+    assert all(s.subpart == Subpart.SupportSurface for s in shelves)
+    zs = [s.origin[2] for s in shelves] + [a.extents[2] - p["board_thickness"]]
+    assert min(np.diff(zs)) >= 0.25 - 1e-9  # every level fits a 25 cm book
+    assert a.surface("top").subpart == Subpart.SupportSurface
+
+
+def test_tv_stand_top_and_small_objects_fit():
+    _, _, _, stand = build("tv_stand", 0)
+    assert stand.surface("top").subpart == Subpart.SupportSurface
+    for name in ("book", "plate", "cup", "vase"):
+        f = get_factory(name)
+        assert f.size_class == "small"
+        _, _, _, a = build(name, 0)
+        assert a.extents.max() < 0.6
+
+
+def test_cup_is_hollow():
+    f = get_factory("cup")
+    p = f.sample_params(np.random.default_rng(0))
+    p["handle"] = True
+    a = f.create(p)
+    assert a.mesh.is_watertight and a.mesh.body_count == 1
+    solid_vol = math.pi * p["radius"] ** 2 * p["height"]
+    assert a.mesh.volume < 0.6 * solid_vol  # the cavity is really there
+
+
+def test_union_keeps_part_slots():
+    from indoorgen.assets.parts import Part, box
+
+    parts = [Part(box((1, 1, 1), (0, 0, 0.5)), "wood"), Part(box((0.2, 0.2, 2), (0, 0, 1)), "metal")]
+    mesh, fs, slots = union(parts)
+    assert slots == ["wood", "metal"] and mesh.is_watertight
+    centers = mesh.triangles_center
+    assert (fs[centers[:, 2] > 1.01] == 1).all() and (fs[centers[:, 2] < 0.99] == 0).any()

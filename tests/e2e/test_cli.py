@@ -1,0 +1,85 @@
+"""The CLI as a user runs it: outputs, determinism and one-line errors with exit status 2."""
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import matplotlib.image as mpimg
+import pytest
+from pxr import Usd, UsdGeom
+
+CLI = [sys.executable, "-m", "indoorgen.cli"]
+
+
+def run(*args, cwd=None):
+    return subprocess.run(CLI + list(args), capture_output=True, text=True, cwd=cwd, timeout=300)
+
+
+def test_generate_writes_every_output(tmp_path):
+    out = tmp_path / "scene"
+    r = run("generate", "--seed", "3", "--room", "dining_room", "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["plan.png", "report.json", "scene.json",
+                                                     "scene.usda"]
+    scene = json.loads((out / "scene.json").read_text())
+    report = json.loads((out / "report.json").read_text())
+    assert len(scene["objects"]) == report["objects"] > 10
+    assert {"large", "medium", "small"} == {s["stage"] for s in report["stages"]}
+    for s in report["stages"]:
+        assert s["steps"] > 0 and s["seconds"] > 0
+    stage = Usd.Stage.Open(str(out / "scene.usda"))
+    assert UsdGeom.GetStageUpAxis(stage) == "Z"
+    assert stage.GetDefaultPrim().GetPath() == "/World"
+    for o in scene["objects"]:
+        prim = stage.GetPrimAtPath(f"/World/Objects/{o['name']}")
+        assert prim.IsValid(), o["name"]
+        assert prim.GetAttribute("indoorgen:generator").Get() == o["generator"]
+    img = mpimg.imread(out / "plan.png")
+    assert img.shape[0] > 300 and (img[..., :3] < 0.9).any()
+    v = run("validate", str(out))
+    assert v.returncode == 0, v.stdout[-2000:]
+
+
+def test_default_command_writes_scene_seed_dir(tmp_path):
+    r = run("generate", "--seed", "0", "-q", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "scene_0" / "scene.json").is_file()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
+def test_same_seed_same_scene_json_bytes(tmp_path):
+    for d in ("a", "b"):
+        assert run("generate", "--seed", "7", "-q", "--out", str(tmp_path / d)).returncode == 0
+    assert (tmp_path / "a" / "scene.json").read_bytes() == (tmp_path / "b" / "scene.json").read_bytes()
+
+
+BAD_PROGRAM = """
+from indoorgen.constraints import Problem, scene
+def bad_range(room):
+    return Problem(constraints={{"x": scene().count().in_range(5, 2)}})
+def bad_generator(room):
+    return Problem(constraints={{"x": scene().of_generator("hovercraft").count() >= 1}})
+"""
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--room", "ballroom"], "unknown room type 'ballroom'"),
+    (["--polygon", "[[0,0],[1,1],[2,2]]"], "area"),
+    (["--program", "{prog}:bad_range"], "in_range(5.0, 2.0)"),
+    (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),
+    (["--out", "/proc/indoorgen_cannot_write_here"], "cannot write"),
+])
+def test_bad_input_one_line_exit_2_no_output(tmp_path, args, words):
+    prog = tmp_path / "prog.py"
+    prog.write_text(BAD_PROGRAM.format())
+    args = [a.replace("{prog}", str(prog)) for a in args]
+    if "--out" not in args:
+        args += ["--out", str(tmp_path / "out")]
+    r = run("generate", "--seed", "0", *args)
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1, r.stderr
+    assert words in lines[0]
+    assert not (tmp_path / "out").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
