@@ -66,7 +66,7 @@ def bad_generator(room):
 @pytest.mark.parametrize("args, words", [
     (["--room", "ballroom"], "unknown room type 'ballroom'"),
     (["--polygon", "[[0,0],[1,1],[2,2]]"], "area"),
-    (["--program", "{prog}:bad_range"], "in_range(5.0, 2.0)"),
+    (["--program", "{prog}:bad_range"], "in_range(5, 2)"),
     (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),
     (["--out", "/proc/indoorgen_cannot_write_here"], "cannot write"),
 ])

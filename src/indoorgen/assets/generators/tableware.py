@@ -8,7 +8,7 @@ import numpy as np
 from ...tags import Semantics as S
 from ...tags import Subpart
 from ..base import Param, register
-from ..parts import Part, box_between, circle_polygon, lathe, torus
+from ..parts import Part, box_between, circle_polygon, cylinder, lathe, torus
 from ._common import PartsFactory, support_polygon
 
 
@@ -47,8 +47,7 @@ class Plate(PartsFactory):
     def parts(self, p, detail):
         R, h, th = p["radius"], p["rim_height"], p["thickness"]
         if not detail:
-            return [Part(lathe([(0.0, 0.0), (R * p["foot_frac"], 0.0), (R, h - th), (R, h), (0.0, h)],
-                               16, circumscribed=True), "ceramic")]
+            return [Part(cylinder(R, h, (0, 0, 0), 16, circumscribed=True), "ceramic")]
         under = self.underside(p, 10)
         top = [(r, z + th) for r, z in reversed(under)]
         prof = [(0.0, 0.0)] + under + top + [(0.0, th)]
