@@ -139,7 +139,11 @@ def test_full_mesh(name, seed):
         assert m.is_watertight
         assert m.is_winding_consistent
         assert m.volume > 0
-        assert m.body_count == 1, "loose shells"
+        # one closed shell per link: the body and each moving part (door leaf, drawer)
+        assert m.body_count == len(a.links), "loose shells"
+        for link in a.links:
+            lm = a.link_mesh(link)
+            assert lm.is_watertight and lm.body_count == 1, link
     assert (m.area_faces > 1e-12).all(), "degenerate faces"
     limit = 30000 if f.size_class == "large" else 5000 if f.size_class == "small" else 20000
     assert len(m.faces) <= limit
@@ -321,3 +325,46 @@ def test_union_keeps_part_slots():
     assert slots == ["wood", "metal"] and mesh.is_watertight
     centers = mesh.triangles_center
     assert (fs[centers[:, 2] > 1.01] == 1).all() and (fs[centers[:, 2] < 0.99] == 0).any()
+
+
+# ------------------------------------------------------------------ joints, UVs, collision
+def _solid(mesh: trimesh.Trimesh) -> m3d.Manifold:
+    return m3d.Manifold(m3d.Mesh(vert_properties=np.asarray(mesh.vertices, np.float32),
+                                 tri_verts=np.asarray(mesh.faces, np.uint32)))
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_joints_move_parts_clear_of_the_body(name, seed):
+    """Every joint's child link, swept through its range, never passes through the body (the
+    intersection volume stays under 1 cm^3) and every moving link has exactly one joint."""
+    _, _, _, a = build(name, seed)
+    assert sorted(j.child for j in a.joints) == sorted(a.links[1:])
+    if not a.joints:
+        return
+    body = _solid(a.link_mesh("base"))
+    for j in a.joints:
+        assert j.kind in ("revolute", "prismatic") and j.lower < j.upper
+        assert j.parent in a.links and j.child in a.links
+        child = a.link_mesh(j.child)
+        for q in np.linspace(j.lower, j.upper, 7):
+            moved = child.copy()
+            moved.apply_transform(j.transform(q))
+            overlap = (body ^ _solid(moved)).volume()
+            assert overlap < 1e-6, (j.name, q, overlap)
+        # fully open, the part really moved (by >= 5 cm somewhere)
+        moved = trimesh.transform_points(child.vertices, j.transform(j.upper))
+        assert np.linalg.norm(moved - child.vertices, axis=1).max() > 0.05, j.name
+
+
+@pytest.mark.parametrize("name,seed", CASES)
+def test_uvs_and_collision_pieces(name, seed):
+    _, _, _, a = build(name, seed)
+    assert a.corner_uv is not None and a.corner_uv.shape == (len(a.mesh.faces), 3, 2)
+    assert np.isfinite(a.corner_uv).all()
+    # no face maps to a degenerate UV triangle wider than it is (projection never collapses)
+    assert a.collision and all(link in a.links for link, _ in a.collision)
+    for _, piece in a.collision:
+        assert piece.is_watertight and piece.is_convex
+    pts = np.vstack([p.vertices for _, p in a.collision])
+    lo, hi = a.mesh.bounds
+    assert (pts >= lo - 1e-6).all() and (pts <= hi + 1e-6).all()

@@ -116,7 +116,10 @@ class Surface:
 
 @dataclass
 class Joint:
-    """An articulation: `child_faces` of the asset mesh move about/along `axis` through `origin`."""
+    """An articulation: link `child` moves relative to link `parent`, turning about (revolute) or
+    sliding along (prismatic) `axis` through `origin`, both in the asset frame at the closed pose.
+    Joint values run from `lower` to `upper` (radians or metres); 0 is the pose the mesh is built
+    in (door shut, drawer in)."""
 
     name: str
     kind: str  # "revolute" | "prismatic"
@@ -124,12 +127,34 @@ class Joint:
     origin: np.ndarray
     lower: float
     upper: float
-    child_mesh: trimesh.Trimesh | None = None
+    child: str
+    parent: str = "base"
+
+    def transform(self, value: float) -> np.ndarray:
+        """4x4 transform of the child link at joint value `value`."""
+        axis = np.asarray(self.axis, float) / np.linalg.norm(self.axis)
+        m = np.eye(4)
+        if self.kind == "prismatic":
+            m[:3, 3] = axis * value
+            return m
+        rot = trimesh.transformations.rotation_matrix(value, axis, np.asarray(self.origin, float))
+        return rot
+
+    def translated(self, offset: np.ndarray) -> "Joint":
+        return Joint(self.name, self.kind, np.asarray(self.axis, float),
+                     np.asarray(self.origin, float) + offset, self.lower, self.upper,
+                     self.child, self.parent)
 
 
 @dataclass
 class Asset:
-    """A built object: its mesh, named surfaces, material slot per face and joints."""
+    """A built object: its mesh, named surfaces, material slot per face, and its articulation.
+
+    The mesh is the concatenation of one closed shell per link ("base" first); `face_links`
+    says which link each face belongs to and `joints` how the links move. `corner_uv` holds a
+    texture coordinate per face corner (F, 3, 2), in metres, so tileable materials map at true
+    scale. `collision` lists convex pieces (link name, mesh) for simulators, which never collide
+    with the render mesh."""
 
     mesh: trimesh.Trimesh
     surfaces: list[Surface]
@@ -137,6 +162,10 @@ class Asset:
     slots: list[str] = field(default_factory=lambda: ["body"])
     joints: list[Joint] = field(default_factory=list)
     closed: bool = True
+    links: list[str] = field(default_factory=lambda: ["base"])
+    face_links: np.ndarray | None = None
+    corner_uv: np.ndarray | None = None
+    collision: list[tuple[str, trimesh.Trimesh]] = field(default_factory=list)
 
     def surface(self, name: str) -> Surface:
         for s in self.surfaces:
@@ -150,6 +179,37 @@ class Asset:
     @property
     def extents(self) -> np.ndarray:
         return self.mesh.bounds[1] - self.mesh.bounds[0]
+
+    def link_faces(self, link: str) -> np.ndarray:
+        """Indices of the faces of `link`."""
+        if self.face_links is None:
+            return np.arange(len(self.mesh.faces)) if link == "base" else np.zeros(0, int)
+        return np.nonzero(self.face_links == self.links.index(link))[0]
+
+    def link_mesh(self, link: str) -> trimesh.Trimesh:
+        """The closed shell of one link, in the asset frame at the closed pose."""
+        return self.mesh.submesh([self.link_faces(link)], append=True, repair=False)
+
+    def posed(self, values: dict[str, float]) -> trimesh.Trimesh:
+        """The whole mesh with joints set to `values` (joint name -> value; missing: 0).
+        Chained joints (a link whose parent is not the base) compose parent-first."""
+        mesh = self.mesh.copy()
+        if not self.joints or self.face_links is None:
+            return mesh
+        by_child = {j.child: j for j in self.joints}
+        verts = mesh.vertices.copy()
+        for li, link in enumerate(self.links):
+            m, cur = np.eye(4), link
+            while cur in by_child:
+                j = by_child[cur]
+                m = j.transform(values.get(j.name, 0.0)) @ m
+                cur = j.parent
+            if np.allclose(m, np.eye(4)):
+                continue
+            idx = np.unique(mesh.faces[self.face_links == li])
+            verts[idx] = trimesh.transform_points(self.mesh.vertices[idx], m)
+        mesh.vertices = verts
+        return mesh
 
 
 def _unit(v) -> np.ndarray:
@@ -185,6 +245,9 @@ class AssetFactory:
     #: "large" (floor furniture), "medium" (wall / beside furniture) or "small" (on objects);
     #: informational: stages are decided by relations in the constraint program.
     size_class: ClassVar[str] = "large"
+    #: weighted material choices per slot ({"legs": {"oak": 2, "brushed_steel": 1}}), overriding
+    #: the material library's defaults for slots of the same name
+    material_choices: ClassVar[dict[str, dict[str, float]]] = {}
 
     def sample_params(self, rng: np.random.Generator) -> dict[str, Any]:
         """Draw every documented parameter from its range (in sorted-name order, for stability)."""

@@ -33,10 +33,13 @@ SIMPLIFY_TOL = 1e-5
 
 @dataclass(frozen=True)
 class Part:
-    """One solid piece of an asset and the name of its material slot ("wood", "metal"...)."""
+    """One solid piece of an asset, the name of its material slot ("wood", "metal"...) and the
+    link it belongs to: "base" for the fixed body, another name for a part that moves on a joint
+    (a door leaf, a drawer). Parts of one link are unioned into one closed shell."""
 
     solid: m3d.Manifold
     slot: str
+    link: str = "base"
 
 
 def _round_sections(sections: int) -> int:
@@ -329,3 +332,201 @@ def circle_polygon(radius: float, sections: int = 32, center: tuple[float, float
     n = _round_sections(sections)
     a = np.arange(n) * 2 * math.pi / n
     return sg.Polygon(np.c_[center[0] + radius * np.cos(a), center[1] + radius * np.sin(a)])
+
+
+# ------------------------------------------------------------------------ links, UVs, collision
+def link_names(parts: Iterable[Part]) -> list[str]:
+    """The links the parts use, "base" first, the rest in order of appearance."""
+    out = ["base"]
+    for p in parts:
+        if p.link not in out:
+            out.append(p.link)
+    return out
+
+
+def union_links(parts: Sequence[Part], slots: Sequence[str] | None = None,
+                subtract: Iterable[m3d.Manifold] = ()
+                ) -> tuple[trimesh.Trimesh, np.ndarray, list[str], list[str], np.ndarray]:
+    """`union` per link, concatenated: one closed shell per link. Returns the mesh, per-face slot
+    indices, slot names, link names and per-face link indices. `subtract` cuts the base only."""
+    parts = [p for p in parts if not p.solid.is_empty()]
+    table = _slot_table(parts, slots)
+    links = link_names(parts)
+    meshes, fslots, flinks = [], [], []
+    for li, link in enumerate(links):
+        mine = [p for p in parts if p.link == link]
+        if not mine:
+            continue
+        mesh, fs, _ = union(mine, table, subtract if link == "base" else ())
+        meshes.append(mesh)
+        fslots.append(fs)
+        flinks.append(np.full(len(mesh.faces), li, np.int64))
+    if len(meshes) == 1:
+        return meshes[0], fslots[0], table, links, flinks[0]
+    mesh = trimesh.util.concatenate(meshes)
+    return mesh, np.concatenate(fslots), table, links, np.concatenate(flinks)
+
+
+def box_uv(vertices: np.ndarray, faces: np.ndarray, scale: float = 1.0) -> np.ndarray:
+    """Texture coordinates per face corner (F, 3, 2) by box projection: each face is projected
+    along the axis its normal is closest to, in metres times `scale`. Tileable materials then
+    map at true scale on every face with no stretching beyond 45 degree slopes."""
+    tri = np.asarray(vertices, float)[np.asarray(faces)]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    axis = np.argmax(np.abs(n), axis=1)
+    # the two coordinates kept for each projection axis (x -> (y, z), y -> (x, z), z -> (x, y))
+    keep = np.array([[1, 2], [0, 2], [0, 1]])[axis]
+    rows = np.arange(len(tri))[:, None, None]
+    uv = tri[rows, np.arange(3)[None, :, None], keep[:, None, :]]
+    return uv * scale
+
+
+def convex_pieces(parts: Sequence[Part], max_pieces: int = 48) -> list[tuple[str, m3d.Manifold]]:
+    """Convex collision pieces (link, hull) for simulators: the convex hull of each part, since
+    generators build objects from simple parts. Beyond `max_pieces` per link (foliage, many
+    slats), neighbouring parts are grouped by their centres and each group hulled."""
+    out: list[tuple[str, m3d.Manifold]] = []
+    for link in link_names(parts):
+        mine = [p.solid for p in parts if p.link == link and not p.solid.is_empty()]
+        if len(mine) > max_pieces:
+            centres = np.array([(np.asarray(s.bounding_box()[:3]) + s.bounding_box()[3:]) / 2
+                                for s in mine])
+            groups = _group_by_position(centres, max_pieces)
+            mine = [solid_union([mine[i] for i in g]) for g in groups]
+        out.extend((link, s.hull()) for s in mine)
+    return out
+
+
+def _group_by_position(points: np.ndarray, k: int) -> list[list[int]]:
+    """Split points into at most k spatially compact groups by recursive median cuts along the
+    longest axis (deterministic, no RNG)."""
+    groups = [list(range(len(points)))]
+    while len(groups) < k:
+        i = max(range(len(groups)), key=lambda g: len(groups[g]))
+        g = groups[i]
+        if len(g) < 2:
+            break
+        pts = points[g]
+        ax = int(np.argmax(pts.max(axis=0) - pts.min(axis=0)))
+        order = [g[j] for j in np.argsort(pts[:, ax], kind="stable")]
+        half = len(order) // 2
+        groups[i:i + 1] = [order[:half], order[half:]]
+    return groups
+
+
+def manifold_to_trimesh(man: m3d.Manifold) -> trimesh.Trimesh:
+    v, f = _mesh_arrays(man)
+    return trimesh.Trimesh(v, f, process=False)
+
+
+# --------------------------------------------------------------------------- moving parts
+#: clearance between a moving part and the body it moves against (m)
+MOVING_GAP = 0.002
+
+
+def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = 0.03,
+               thickness: float = 0.012) -> m3d.Manifold:
+    """A bar handle on a +X-facing front: a bar `length` long (vertical or horizontal) held
+    `standoff` proud of the front by two posts; `center` is on the front face. The posts sink
+    1 mm into the front so that the handle unions with it into one shell."""
+    cx, cy, cz = (float(c) for c in center)
+    t, half = thickness, length / 2
+    xb0, xb1 = cx + standoff - t, cx + standoff
+    if vertical:
+        bar = box_between((xb0, cy - t / 2, cz - half), (xb1, cy + t / 2, cz + half))
+        ends = [(cy, cz - 0.8 * half), (cy, cz + 0.8 * half)]
+    else:
+        bar = box_between((xb0, cy - half, cz - t / 2), (xb1, cy + half, cz + t / 2))
+        ends = [(cy - 0.8 * half, cz), (cy + 0.8 * half, cz)]
+    posts = [box_between((cx - 0.001, y - t / 2, z - t / 2), (xb0 + 0.001, y + t / 2, z + t / 2))
+             for y, z in ends]
+    return solid_union([bar] + posts)
+
+
+def knob(center: Vec3, radius: float = 0.015, standoff: float = 0.025) -> m3d.Manifold:
+    """A round knob on a +X-facing front at `center`."""
+    cx, cy, cz = (float(c) for c in center)
+    stem = rod((cx - 0.001, cy, cz), (cx + standoff * 0.6, cy, cz), radius * 0.45, 12)
+    head = rod((cx + standoff * 0.5, cy, cz), (cx + standoff, cy, cz), radius, 16)
+    return solid_union([stem, head])
+
+
+def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thickness: float,
+                hinge: str, link: str, handle: str = "bar", slot: str = "front",
+                handle_slot: str = "metal", gap: float = MOVING_GAP
+                ) -> tuple[list[Part], "DoorJoint"]:
+    """A door leaf covering the opening y0..y1, z0..z1 of a +X-facing front whose face is at
+    `front_x`, hinged on its `hinge` side ("left" = low y, "right" = high y, "bottom" = a
+    drop-down flap like an oven door, "top" = a lift-up flap). The leaf stands `gap` in front of
+    the face, so it swings outward without touching the body. Returns its parts (on `link`) and
+    the joint description (axis through the leaf's outer hinge edge, 0 = shut)."""
+    x0, x1 = front_x + gap, front_x + gap + thickness
+    leaf = box_between((x0, y0, z0), (x1, y1, z1))
+    parts = [Part(leaf, slot, link)]
+    w, h = y1 - y0, z1 - z0
+    if hinge in ("left", "right"):
+        yh = y1 - min(0.05, w * 0.2) if hinge == "left" else y0 + min(0.05, w * 0.2)
+        zc = z0 + h * (0.5 if h < 0.5 else 0.75 if z0 < 0.5 else 0.2)
+        zc = min(max(zc, z0 + 0.06), z1 - 0.06)
+        hl = min(0.14, h * 0.4)
+        grip = (x1, yh, zc)
+        vertical = True
+    else:
+        zh = z1 - min(0.05, h * 0.2) if hinge == "bottom" else z0 + min(0.05, h * 0.2)
+        grip = (x1, (y0 + y1) / 2, zh)
+        hl = min(0.3, w * 0.6)
+        vertical = False
+    if handle == "bar":
+        parts.append(Part(bar_handle(grip, hl, vertical), handle_slot, link))
+    elif handle == "knob":
+        parts.append(Part(knob(grip), handle_slot, link))
+    if hinge == "left":
+        axis, origin = (0.0, 0.0, -1.0), (x1, y0, z0)
+    elif hinge == "right":
+        axis, origin = (0.0, 0.0, 1.0), (x1, y1, z0)
+    elif hinge == "bottom":
+        axis, origin = (0.0, 1.0, 0.0), (x1, y0, z0)
+    elif hinge == "top":
+        axis, origin = (0.0, -1.0, 0.0), (x1, y0, z1)
+    else:
+        raise ValueError(f"hinge must be left, right, bottom or top, got {hinge!r}")
+    return parts, DoorJoint("revolute", np.array(axis), np.array(origin), link)
+
+
+def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: float,
+           thickness: float, link: str, board: float = 0.012, handle: str = "bar",
+           slot: str = "front", box_slot: str = "wood", handle_slot: str = "metal",
+           gap: float = MOVING_GAP) -> tuple[list[Part], "DoorJoint"]:
+    """A drawer for the opening y0..y1, z0..z1 of a +X-facing front at `front_x`: a front panel
+    `gap` proud of the face plus an open-topped box `depth` deep that slides inside the opening
+    with `gap` clearance all round. Returns its parts (on `link`) and a prismatic joint along +X
+    (0 = shut; open it at most `depth` minus a little so it stays in its runners)."""
+    fx0, fx1 = front_x + gap, front_x + gap + thickness
+    parts = [Part(box_between((fx0, y0, z0), (fx1, y1, z1)), slot, link)]
+    # the box inside the opening, clear of it by 2*gap on each side, below and above
+    by0, by1, bz0 = y0 + 2 * gap, y1 - 2 * gap, z0 + 2 * gap
+    bz1 = max(bz0 + 0.03, z1 - 0.02)
+    bx0, bx1 = front_x - depth, fx0 + 0.001
+    b = board
+    shell = [box_between((bx0, by0, bz0), (bx1, by1, bz0 + b)),                # bottom
+             box_between((bx0, by0, bz0), (bx0 + b, by1, bz1)),                # back
+             box_between((bx0, by0, bz0), (bx1, by0 + b, bz1)),                # sides
+             box_between((bx0, by1 - b, bz0), (bx1, by1, bz1))]
+    parts.append(Part(solid_union(shell), box_slot, link))
+    grip = (fx1, (y0 + y1) / 2, (z0 + z1) / 2)
+    if handle == "bar":
+        parts.append(Part(bar_handle(grip, min(0.16, (y1 - y0) * 0.5), False), handle_slot, link))
+    elif handle == "knob":
+        parts.append(Part(knob(grip), handle_slot, link))
+    return parts, DoorJoint("prismatic", np.array([1.0, 0.0, 0.0]), np.array(grip), link)
+
+
+@dataclass(frozen=True)
+class DoorJoint:
+    """How a moving part built here moves (kind, axis, origin, link); the generator adds the
+    joint's name and range when it turns this into an `assets.base.Joint`."""
+
+    kind: str
+    axis: np.ndarray
+    origin: np.ndarray
+    link: str

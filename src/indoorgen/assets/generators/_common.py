@@ -16,8 +16,9 @@ import numpy as np
 import shapely.geometry as sg
 
 from ...tags import Subpart
-from ..base import Asset, AssetFactory, Param, Surface, box_surfaces
-from ..parts import Part, concat, union
+from ..base import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
+from ..parts import (DoorJoint, Part, box_uv, concat, convex_pieces, manifold_to_trimesh,
+                     union_links)
 
 
 def default_value(p: Param) -> Any:
@@ -51,6 +52,11 @@ class PartsFactory(AssetFactory):
     # ---- to implement
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         raise NotImplementedError
+
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
+        """The articulations of these params, in the design frame (same frame as `parts`): one
+        per moving link (door leaf, drawer, lid), its child being the link its parts are on."""
+        return []
 
     def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Surfaces beyond the bounding-box ones, in the design frame (same frame as `parts`).
@@ -94,10 +100,23 @@ class PartsFactory(AssetFactory):
         return self._asset(p, mesh, fs, slots, offset, ext)
 
     def create(self, params: dict[str, Any]) -> Asset:
+        """The detailed asset: one watertight shell per link, UVs, joints and convex pieces."""
         p = self.resolve(params)
         _, offset, ext = self._layout(p)
-        mesh, fs, slots = union(self.parts(p, True), self.slots)
-        return self._asset(p, mesh, fs, slots, offset, ext)
+        parts = self.parts(p, True)
+        mesh, fs, slots, links, face_links = union_links(parts, self.slots)
+        asset = self._asset(p, mesh, fs, slots, offset, ext)
+        asset.links, asset.face_links = links, face_links
+        asset.joints = [j.translated(offset) for j in self.joints(p)]
+        asset.corner_uv = box_uv(asset.mesh.vertices, asset.mesh.faces)
+        asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
+                           for link, h in convex_pieces(parts)]
+        return asset
+
+
+def make_joint(name: str, moving: DoorJoint, lower: float, upper: float) -> Joint:
+    """A named `Joint` with range [lower, upper] from a moving part's description."""
+    return Joint(name, moving.kind, moving.axis, moving.origin, lower, upper, moving.link)
 
 
 # ------------------------------------------------------------------------- surface helpers

@@ -7,11 +7,13 @@ from typing import Any
 from ...tags import Semantics as S
 from ...tags import Subpart
 from ..base import Param, Surface, register
-from ..parts import Part, bevel_box, box, box_between, cylinder, legs
-from ._common import PartsFactory, bottom_rect, support_rect
+from ..parts import MOVING_GAP, Part, bevel_box, box, box_between, cylinder, drawer, hinged_door, legs
+from ._common import PartsFactory, bottom_rect, make_joint, support_rect
 
 OVERLAP = 0.002
-MIN_SHELF_CLEARANCE = 0.25  # books up to ~24 cm tall fit on every shelf
+MIN_SHELF_CLEARANCE = 0.25
+#: how far doors or drawer fronts and their handles stand proud of a carcass (gap, leaf, handle)
+FRONT_PROUD = MOVING_GAP + 0.018 + 0.03  # books up to ~24 cm tall fit on every shelf
 
 
 @register
@@ -60,33 +62,12 @@ class TVStand(PartsFactory):
             y = -inner / 2 + i * (cw + t) - t / 2
             out.append(Part(box_between((-D / 2 + t - OVERLAP, y - t / 2, zb + t - OVERLAP),
                                         (D / 2 - 0.005, y + t / 2, H - t + OVERLAP)), "wood"))
-        style = p["front_style"]
-        ft = 0.018
-        if style != "open":
-            # closed fronts: fill the carcass so it holds no sealed internal void (a second shell)
-            out.append(Part(box_between((-D / 2 + t - OVERLAP, -W / 2 + t - OVERLAP, zb + t - OVERLAP),
-                                        (D / 2 - ft + OVERLAP, W / 2 - t + OVERLAP, H - t + OVERLAP)),
-                            "wood"))
-            for i in range(n):
-                y0 = -inner / 2 + i * (cw + t)
-                y1 = y0 + cw
-                # fronts fill the opening, overlapping the carcass edges by OVERLAP
-                rows = 1 if style == "doors" else 2
-                z0, z1 = zb + t - OVERLAP, H - t + OVERLAP
-                hgt = (z1 - z0) / rows
-                for r in range(rows):
-                    za, zc = z0 + r * hgt, z0 + (r + 1) * hgt
-                    lo, hi = (D / 2 - ft, y0 - OVERLAP, za), (D / 2, y1 + OVERLAP, zc)
-                    out.append(Part(box_between(lo, hi), "front"))
-                    # handle: a short bar standing 2.5 cm proud of the front
-                    zh = (za + zc) / 2 if style == "drawers" else zc - 0.06
-                    yh = (y0 + y1) / 2 if style == "drawers" else (y1 - 0.04 if i % 2 == 0 else y0 + 0.04)
-                    hl = min(0.12, cw * 0.4)
-                    if style == "doors":
-                        hb = box_between((D / 2 - OVERLAP, yh - 0.006, zh - hl / 2), (D / 2 + 0.025, yh + 0.006, zh + hl / 2))
-                    else:
-                        hb = box_between((D / 2 - OVERLAP, yh - hl / 2, zh - 0.006), (D / 2 + 0.025, yh + hl / 2, zh + 0.006))
-                    out.append(Part(hb, "metal"))
+        if p["front_style"] != "open":
+            if detail:
+                out += [part for parts, _ in self._fronts(p) for part in parts]
+            else:  # closed compartments: their contents, the fronts and handles as one block
+                out.append(Part(box_between((-D / 2 + t, -W / 2 + t, zb + t),
+                                            (D / 2 + FRONT_PROUD, W / 2 - t, H - t)), "front"))
         if p["base_style"] == "plinth":
             out.append(Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, zb + OVERLAP)), "wood"))
         else:
@@ -94,6 +75,36 @@ class TVStand(PartsFactory):
                             round_legs=True, circumscribed=not detail, sections=16 if detail else 8):
                 out.append(Part(leg, "metal"))
         return out
+
+    def _fronts(self, p):
+        """Each compartment's door (alternately hinged left and right) or pair of drawers:
+        a list of (parts, moving-part description)."""
+        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
+        zb, n = p["base_height"], int(p["n_compartments"])
+        inner = W - 2 * t
+        cw = (inner - (n - 1) * t) / n
+        z0, z1 = zb + t, H - t
+        out = []
+        for i in range(n):
+            y0 = -inner / 2 + i * (cw + t)
+            y1 = y0 + cw
+            if p["front_style"] == "doors":
+                out.append(hinged_door(D / 2, y0 + 0.002, y1 - 0.002, z0 + 0.002, z1 - 0.002,
+                                       0.018, "left" if i % 2 == 0 else "right", f"door_{i}"))
+            else:
+                zm = (z0 + z1) / 2
+                for r, (za, zc) in enumerate(((z0, zm - t / 2), (zm + t / 2, z1))):
+                    out.append(drawer(D / 2, y0 + 0.002, y1 - 0.002, za + 0.002, zc - 0.002,
+                                      D - t - 0.02, 0.018, f"drawer_{i}_{r}"))
+        return out
+
+    def joints(self, p):
+        if p["front_style"] == "open":
+            return []
+        depth = p["depth"] - p["board_thickness"] - 0.02
+        return [make_joint(f"{m.link}_joint", m, 0.0, math.radians(100))
+                if m.kind == "revolute" else make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth)
+                for _, m in self._fronts(p)]
 
     def extra_surfaces(self, p):
         W, D, H, zb = p["width"], p["depth"], p["height"], p["base_height"]
