@@ -283,9 +283,11 @@ def union(parts: Iterable[Part], slots: Sequence[str] | None = None,
     default = table.index(parts[0].slot) if parts else 0
     for i, oid in enumerate(run_ids):
         face_slots[run_index[i]:run_index[i + 1]] = id_slot.get(int(oid), default)
-    verts, faces, keep = collapse_short_edges(verts, faces)
+    verts, faces, keep = collapse_short_edges(verts, faces, SIMPLIFY_TOL)
+    face_slots = face_slots[keep]
+    faces, face_slots = flip_caps(verts, faces, face_slots)
     mesh = trimesh.Trimesh(verts, faces, process=False)
-    return mesh, face_slots[keep], table
+    return mesh, face_slots, table
 
 
 def collapse_short_edges(verts: np.ndarray, faces: np.ndarray, tol: float = 1e-6
@@ -316,6 +318,41 @@ def collapse_short_edges(verts: np.ndarray, faces: np.ndarray, tol: float = 1e-6
     f = f[keep]
     used, inv = np.unique(f, return_inverse=True)
     return verts[used], inv.reshape(-1, 3), keep
+
+
+def flip_caps(verts: np.ndarray, faces: np.ndarray, face_slots: np.ndarray,
+              min_area: float = 1e-11) -> tuple[np.ndarray, np.ndarray]:
+    """Remove zero-area "cap" triangles (a vertex lying on the opposite edge), which booleans of
+    boards meeting at T-junctions leave behind. A cap (a, b, c) with c on edge ab and its
+    neighbour (b, a, d) across that edge become (c, a, d) and (b, c, d): the neighbour split at c.
+    The mesh stays closed and consistently wound; slots follow the neighbour."""
+    faces = faces.copy()
+    for _ in range(8):
+        tri = verts[faces]
+        area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+        caps = np.nonzero(area < min_area)[0]
+        if not len(caps):
+            break
+        owner = {(int(f[i]), int(f[(i + 1) % 3])): k for k, f in enumerate(faces) for i in range(3)}
+        done: set[int] = set()
+        for k in caps:
+            if k in done:
+                continue
+            f = faces[k]
+            # the longest edge is the one the third vertex lies on
+            lengths = [np.linalg.norm(verts[f[(i + 1) % 3]] - verts[f[i]]) for i in range(3)]
+            i = int(np.argmax(lengths))
+            a, b, c = int(f[i]), int(f[(i + 1) % 3]), int(f[(i + 2) % 3])
+            n = owner.get((b, a))
+            if n is None or n in done:
+                continue
+            g = faces[n]
+            d = next(int(v) for v in g if v not in (a, b))
+            faces[k] = (c, a, d)
+            faces[n] = (b, c, d)
+            face_slots[k] = face_slots[n]
+            done.update((k, n))
+    return faces, face_slots
 
 
 def solid_union(solids: Iterable[m3d.Manifold]) -> m3d.Manifold:
@@ -530,3 +567,72 @@ class DoorJoint:
     axis: np.ndarray
     origin: np.ndarray
     link: str
+
+
+# ----------------------------------------------------------------------------------- cabinets
+def carcass(depth: float, width: float, z0: float, z1: float, board: float,
+            back: float = 0.006, shelves: Sequence[float] = (), dividers: Sequence[float] = (),
+            slot: str = "wood", back_slot: str | None = None, top: bool = True) -> list[Part]:
+    """An open-fronted cabinet box spanning x in [-depth/2, depth/2] (front at +depth/2), y in
+    [-width/2, width/2], z in [z0, z1]: two sides, a bottom, a top (unless `top` is False,
+    e.g. under a countertop), a back panel `back` thick, fixed shelves whose upper faces are at
+    the heights in `shelves`, and full-height vertical dividers centred on the y values in
+    `dividers`. Boards overlap by 1 mm so the union is one shell."""
+    d2, w2, t, o = depth / 2, width / 2, board, 0.001
+    bs = back_slot or slot
+    solids = [
+        Part(box_between((-d2, -w2, z0), (d2, -w2 + t, z1)), slot),            # sides
+        Part(box_between((-d2, w2 - t, z0), (d2, w2, z1)), slot),
+        Part(box_between((-d2, -w2 + t - o, z0), (d2, w2 - t + o, z0 + t)), slot),  # bottom
+        Part(box_between((-d2, -w2 + t - o, z0 + t - o), (-d2 + back, w2 - t + o, z1 - (t if top else 0) + o)), bs),
+    ]
+    if top:
+        solids.append(Part(box_between((-d2, -w2 + t - o, z1 - t), (d2, w2 - t + o, z1)), slot))
+    for zs in shelves:
+        solids.append(Part(box_between((-d2 + back - o, -w2 + t - o, zs - t),
+                                       (d2 - 0.01, w2 - t + o, zs)), slot))
+    for yd in dividers:
+        solids.append(Part(box_between((-d2 + back - o, yd - t / 2, z0 + t - o),
+                                       (d2, yd + t / 2, z1 - (t if top else 0) + o)), slot))
+    return solids
+
+
+@dataclass(frozen=True)
+class Front:
+    """One cell of a cabinet front: the opening y0..y1, z0..z1 and what closes it: "left" or
+    "right" (a door hinged on that side), "flap_down" / "flap_up" (hinged at the bottom / top),
+    "drawer", or "open" (nothing)."""
+
+    y0: float
+    y1: float
+    z0: float
+    z1: float
+    kind: str
+
+
+def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thickness: float = 0.018,
+                   handle: str = "bar", prefix: str = "", slot: str = "front",
+                   handle_slot: str = "metal", reveal: float = 0.002
+                   ) -> list[tuple[list[Part], DoorJoint]]:
+    """Doors, flaps and drawers for the `cells` of a +X front at `front_x`, each on its own link
+    (`door_0`, `drawer_1`...); each cell is shrunk by `reveal` on every edge so neighbours never
+    touch. Drawer boxes reach `depth` behind the front. Returns (parts, motion) per moving cell."""
+    out = []
+    for i, c in enumerate(cells):
+        y0, y1, z0, z1 = c.y0 + reveal, c.y1 - reveal, c.z0 + reveal, c.z1 - reveal
+        if c.kind == "open":
+            continue
+        if c.kind == "drawer":
+            out.append(drawer(front_x, y0, y1, z0, z1, depth, thickness, f"{prefix}drawer_{i}",
+                              handle=handle, slot=slot, handle_slot=handle_slot))
+        else:
+            hinge = {"left": "left", "right": "right", "flap_down": "bottom", "flap_up": "top"}.get(c.kind)
+            if hinge is None:
+                raise ValueError(f"unknown front kind {c.kind!r}")
+            out.append(hinged_door(front_x, y0, y1, z0, z1, thickness, hinge, f"{prefix}door_{i}",
+                                   handle=handle, slot=slot, handle_slot=handle_slot))
+    return out
+
+
+#: how far cabinet fronts and their handles stand proud of the carcass (gap + leaf + bar handle)
+FRONT_PROUD = MOVING_GAP + 0.018 + 0.03

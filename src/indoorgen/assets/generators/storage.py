@@ -7,13 +7,12 @@ from typing import Any
 from ...tags import Semantics as S
 from ...tags import Subpart
 from ..base import Param, Surface, register
-from ..parts import MOVING_GAP, Part, bevel_box, box, box_between, cylinder, drawer, hinged_door, legs
+from ..parts import (FRONT_PROUD, Front, Part, bevel_box, box, box_between, cabinet_fronts, carcass,
+                     legs)
 from ._common import PartsFactory, bottom_rect, make_joint, support_rect
 
 OVERLAP = 0.002
-MIN_SHELF_CLEARANCE = 0.25
-#: how far doors or drawer fronts and their handles stand proud of a carcass (gap, leaf, handle)
-FRONT_PROUD = MOVING_GAP + 0.018 + 0.03  # books up to ~24 cm tall fit on every shelf
+MIN_SHELF_CLEARANCE = 0.25  # books up to ~24 cm tall fit on every shelf
 
 
 @register
@@ -41,27 +40,43 @@ class TVStand(PartsFactory):
     def bottom_is_solid(self, params):
         return self.resolve(params)["base_style"] == "plinth"
 
+    def _cells(self, p) -> tuple[list[Front], list[float]]:
+        """The compartments' fronts (each a door, alternately hinged left and right, or two
+        drawers) and the dividers' y positions."""
+        W, H, t = p["width"], p["height"], p["board_thickness"]
+        zb, n = p["base_height"], int(p["n_compartments"])
+        inner = W - 2 * t
+        cw = (inner - (n - 1) * t) / n
+        z0, z1 = zb + t, H - t
+        cells, dividers = [], []
+        for i in range(n):
+            y0 = -inner / 2 + i * (cw + t)
+            y1 = y0 + cw
+            if i:
+                dividers.append(y0 - t / 2)
+            if p["front_style"] == "doors":
+                cells.append(Front(y0, y1, z0, z1, "left" if i % 2 == 0 else "right"))
+            elif p["front_style"] == "drawers":
+                zm = (z0 + z1) / 2
+                cells += [Front(y0, y1, z0, zm, "drawer"), Front(y0, y1, zm, z1, "drawer")]
+            else:
+                cells.append(Front(y0, y1, z0, z1, "open"))
+        return cells, dividers
+
+    def _fronts(self, p):
+        cells, _ = self._cells(p)
+        depth = p["depth"] - p["board_thickness"] - 0.02
+        return cabinet_fronts(p["depth"] / 2, cells, depth)
+
     def parts(self, p, detail):
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         zb = p["base_height"]
-        n = int(p["n_compartments"])
-        out: list[Part] = []
+        _, dividers = self._cells(p)
+        out = carcass(D, W, zb, H - t + OVERLAP, t, back=t, dividers=dividers, top=False)
         er = p["edge_radius"]
         top = (bevel_box((D, W, t), (0, 0, H - t / 2), er, 2) if detail and er > 1e-4
                else box((D, W, t), (0, 0, H - t / 2)))
         out.append(Part(top, "wood"))
-        out.append(Part(box_between((-D / 2, -W / 2, zb), (D / 2, W / 2, zb + t)), "wood"))  # bottom
-        for s in (-1, 1):  # sides
-            out.append(Part(box_between((-D / 2, s * W / 2 - t / 2 - s * t / 2, zb),
-                                        (D / 2, s * W / 2 + t / 2 - s * t / 2, H - t + OVERLAP)), "wood"))
-        out.append(Part(box_between((-D / 2, -W / 2 + t - OVERLAP, zb + t - OVERLAP),
-                                    (-D / 2 + t, W / 2 - t + OVERLAP, H - t + OVERLAP)), "wood"))  # back
-        inner = W - 2 * t
-        cw = (inner - (n - 1) * t) / n
-        for i in range(1, n):  # dividers
-            y = -inner / 2 + i * (cw + t) - t / 2
-            out.append(Part(box_between((-D / 2 + t - OVERLAP, y - t / 2, zb + t - OVERLAP),
-                                        (D / 2 - 0.005, y + t / 2, H - t + OVERLAP)), "wood"))
         if p["front_style"] != "open":
             if detail:
                 out += [part for parts, _ in self._fronts(p) for part in parts]
@@ -76,34 +91,9 @@ class TVStand(PartsFactory):
                 out.append(Part(leg, "metal"))
         return out
 
-    def _fronts(self, p):
-        """Each compartment's door (alternately hinged left and right) or pair of drawers:
-        a list of (parts, moving-part description)."""
-        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
-        zb, n = p["base_height"], int(p["n_compartments"])
-        inner = W - 2 * t
-        cw = (inner - (n - 1) * t) / n
-        z0, z1 = zb + t, H - t
-        out = []
-        for i in range(n):
-            y0 = -inner / 2 + i * (cw + t)
-            y1 = y0 + cw
-            if p["front_style"] == "doors":
-                out.append(hinged_door(D / 2, y0 + 0.002, y1 - 0.002, z0 + 0.002, z1 - 0.002,
-                                       0.018, "left" if i % 2 == 0 else "right", f"door_{i}"))
-            else:
-                zm = (z0 + z1) / 2
-                for r, (za, zc) in enumerate(((z0, zm - t / 2), (zm + t / 2, z1))):
-                    out.append(drawer(D / 2, y0 + 0.002, y1 - 0.002, za + 0.002, zc - 0.002,
-                                      D - t - 0.02, 0.018, f"drawer_{i}_{r}"))
-        return out
-
     def joints(self, p):
-        if p["front_style"] == "open":
-            return []
-        depth = p["depth"] - p["board_thickness"] - 0.02
-        return [make_joint(f"{m.link}_joint", m, 0.0, math.radians(100))
-                if m.kind == "revolute" else make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth)
+        return [make_joint(f"{m.link}_joint", m, 0.0, math.radians(100)) if m.kind == "revolute"
+                else make_joint(f"{m.link}_joint", m, 0.0, 0.8 * (p["depth"] - p["board_thickness"] - 0.02))
                 for _, m in self._fronts(p)]
 
     def extra_surfaces(self, p):
