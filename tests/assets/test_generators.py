@@ -14,6 +14,7 @@ from indoorgen.assets.base import Param, factory_names, get_factory
 from indoorgen.assets.parts import union
 from indoorgen.errors import ParameterError
 from indoorgen.tags import Semantics, Subpart
+from support.assetcheck import build, distances, sample_polygon, to_local
 
 EXPECTED = {
     "dining_table_rect", "dining_table_round", "dining_chair", "sofa", "armchair",
@@ -27,49 +28,6 @@ TABLES = {"dining_table_rect", "dining_table_round", "coffee_table", "side_table
 RECT_TABLES = TABLES - {"dining_table_round"}
 BACK_ON_MESH = {"bookcase", "tv_stand", "wall_art"}
 TOL = 1e-3  # 1 mm
-
-
-@lru_cache(maxsize=None)
-def build(name: str, seed: int):
-    f = get_factory(name)
-    p = f.sample_params(np.random.default_rng(seed))
-    return f, p, f.placeholder(p), f.create(p)
-
-
-def distances(mesh: trimesh.Trimesh, pts: np.ndarray) -> np.ndarray:
-    """Exact distance from each point to the mesh surface (brute force over nearby triangles)."""
-    tris = mesh.triangles
-    lo, hi = tris.min(axis=1), tris.max(axis=1)
-    out = np.empty(len(pts))
-    for i, q in enumerate(pts):
-        near = np.all((lo <= q + 2e-3) & (hi >= q - 2e-3), axis=1)
-        if not near.any():
-            out[i] = np.inf
-            continue
-        t = tris[near]
-        cp = trimesh.triangles.closest_point(t, np.repeat(q[None], len(t), axis=0))
-        out[i] = np.linalg.norm(cp - q, axis=1).min()
-    return out
-
-
-def sample_polygon(poly: sg.Polygon) -> np.ndarray:
-    """Deterministic points inside a polygon: a representative point, the centroid, points
-    90% of the way to each vertex and a small grid."""
-    c = np.asarray(poly.representative_point().coords[0])
-    pts = [c, np.asarray(poly.centroid.coords[0])]
-    verts = np.asarray(poly.exterior.coords)[:-1]
-    step = max(1, len(verts) // 8)
-    pts += [c + 0.9 * (v - c) for v in verts[::step]]
-    x0, y0, x1, y1 = poly.bounds
-    for a in (0.2, 0.5, 0.8):
-        for b in (0.2, 0.5, 0.8):
-            pts.append(np.array([x0 + a * (x1 - x0), y0 + b * (y1 - y0)]))
-    return np.array([q for q in pts if poly.contains(sg.Point(q))])
-
-
-def to_local(surface, pts3: np.ndarray) -> np.ndarray:
-    d = pts3 - surface.origin
-    return np.c_[d @ surface.u, d @ surface.v]
 
 
 # ------------------------------------------------------------------------------- registry
