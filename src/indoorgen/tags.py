@@ -117,6 +117,7 @@ class Semantics(str, Enum):
     DeskLamp = "desk_lamp"
     WallSconce = "wall_sconce"
     # -- storage and lighting: more tags here
+    TableLamp = "table_lamp"
     # decor
     Mirror = "mirror"
     PottedPlant = "potted_plant"
