@@ -1,0 +1,732 @@
+"""More seating: side chairs, upholstered chairs, office chairs, bar stools, stools/ottomans,
+L-shaped sectional sofas and benches. Front (+X) is where one sits from.
+
+The module also holds the shape helpers that beds.py and tables_more.py reuse: swept tubes
+(bentwood and tubular-steel frames), slanted posts (splayed legs), rounded slabs, extruded side
+profiles (moulded shells) and the bounding-box pieces placeholders are made of.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Iterable, Sequence
+
+import manifold3d as m3d
+import numpy as np
+import shapely.geometry as sg
+
+from ...tags import Semantics as S
+from ..base import Joint, Param, Surface, register
+from ..parts import (Part, bevel_box, box, box_between, circle_polygon, cylinder, frame, lathe,
+                     legs, torus)
+from ._common import PartsFactory, support_polygon, support_rect
+
+OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
+
+
+# ===================================================================================== helpers
+def _unit_rows(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def fillet_path(points: Sequence[Sequence[float]], radius: float, segments: int = 5) -> np.ndarray:
+    """The polyline `points` (N, 3) with every interior corner rounded by a circular arc of
+    `radius` (shrunk where the neighbouring segments are too short), sampled with `segments`
+    steps per arc: the centre line of a bent tube."""
+    pts = np.asarray(points, float)
+    if len(pts) < 3:
+        return pts
+    b = pts[1:-1]
+    u, v = pts[:-2] - b, pts[2:] - b
+    lu, lv = np.linalg.norm(u, axis=1), np.linalg.norm(v, axis=1)
+    u, v = u / lu[:, None], v / lv[:, None]
+    ang = np.arccos(np.clip(np.einsum("ij,ij->i", u, v), -1.0, 1.0))  # interior angles
+    bent = ang < math.pi - 1e-3
+    half = np.where(bent, ang / 2, 0.25)
+    t = np.minimum(np.minimum(radius / np.tan(half), 0.5 * lu), 0.5 * lv)
+    r = t * np.tan(half)
+    bis = _unit_rows(np.where(bent[:, None], u + v, 1.0))
+    centre = b + bis * (r / np.sin(half))[:, None]
+    e0, e1 = b + u * t[:, None] - centre, b + v * t[:, None] - centre
+    w = np.arccos(np.clip(np.einsum("ij,ij->i", e0, e1) / np.maximum(r * r, 1e-18), -1.0, 1.0))
+    w = np.maximum(w, 1e-9)
+    sp = np.linspace(0.0, 1.0, segments + 1)[None, :, None]
+    arcs = ((np.sin((1 - sp) * w[:, None, None]) * e0[:, None, :]
+             + np.sin(sp * w[:, None, None]) * e1[:, None, :]) / np.sin(w)[:, None, None]
+            + centre[:, None, :])
+    arcs = np.where(bent[:, None, None], arcs, b[:, None, :])
+    return _dedupe(np.vstack([pts[:1], arcs.reshape(-1, 3), pts[-1:]]))
+
+
+def _tangents(pts: np.ndarray) -> np.ndarray:
+    seg = _unit_rows(np.diff(pts, axis=0))
+    tang = np.empty_like(pts)
+    tang[0], tang[-1] = seg[0], seg[-1]
+    tang[1:-1] = _unit_rows(seg[:-1] + seg[1:])
+    return tang
+
+
+def tube_rings(path: Sequence[Sequence[float]], radius: float, sections: int = 12) -> np.ndarray:
+    """The vertex rings (len(path), sections, 3) of `tube(path, radius, sections)`: circles of
+    `radius` perpendicular to the path, carried along by parallel transport (no twist)."""
+    pts = np.asarray(path, float)
+    n = max(4, int(math.ceil(sections / 4.0)) * 4)
+    tang = _tangents(pts)
+    ref = np.array([0.0, 0.0, 1.0]) if abs(tang[0][2]) < 0.9 else np.array([1.0, 0.0, 0.0])
+    nrm = np.empty_like(pts)
+    cur = np.cross(tang[0], ref)
+    for i in range(len(pts)):  # parallel transport of the ring's reference direction
+        cur = cur - np.dot(cur, tang[i]) * tang[i]
+        cur = cur / np.linalg.norm(cur)
+        nrm[i] = cur
+    bin_ = np.cross(tang, nrm)
+    a = 2 * np.pi * np.arange(n) / n
+    return (pts[:, None, :] + radius * (np.cos(a)[None, :, None] * nrm[:, None, :]
+                                        + np.sin(a)[None, :, None] * bin_[:, None, :]))
+
+
+def tube(path: Sequence[Sequence[float]], radius: float, sections: int = 12) -> m3d.Manifold:
+    """A round tube of `radius` swept along the polyline `path` (use `fillet_path` for bends),
+    with flat end caps perpendicular to the path."""
+    pts = np.asarray(path, float)
+    rings = tube_rings(pts, radius, sections)
+    m, n = rings.shape[:2]
+    verts = np.vstack([rings.reshape(-1, 3), pts[0], pts[-1]])
+    i = np.arange(m - 1)[:, None]
+    k = np.arange(n)[None, :]
+    q0, q1 = i * n + k, i * n + (k + 1) % n
+    q2, q3 = (i + 1) * n + (k + 1) % n, (i + 1) * n + k
+    side = np.concatenate([np.stack([q0, q1, q2], -1).reshape(-1, 3),
+                           np.stack([q0, q2, q3], -1).reshape(-1, 3)])
+    s_c, e_c = m * n, m * n + 1
+    kk = np.arange(n)
+    cap0 = np.stack([np.full(n, s_c), (kk + 1) % n, kk], -1)
+    cap1 = np.stack([np.full(n, e_c), (m - 1) * n + kk, (m - 1) * n + (kk + 1) % n], -1)
+    faces = np.vstack([side, cap0, cap1])
+    mesh = m3d.Mesh(vert_properties=np.asarray(verts, np.float32),
+                    tri_verts=np.asarray(faces, np.uint32))
+    return m3d.Manifold(mesh)
+
+
+def tube_boxes(path: Sequence[Sequence[float]], radius: float, n_boxes: int = 4
+               ) -> list[m3d.Manifold]:
+    """Placeholder boxes that together contain `tube(path, radius)`: the path split into
+    `n_boxes` runs, each boxed with the exact extents of its end rings."""
+    pts = np.asarray(path, float)
+    tang = _tangents(pts)
+    half = radius * np.sqrt(np.clip(1.0 - tang ** 2, 0.0, 1.0))
+    lo, hi = pts - half, pts + half
+    cuts = np.unique(np.linspace(0, len(pts) - 1, min(n_boxes, len(pts) - 1) + 1).round().astype(int))
+    return [box_between(lo[a:b + 1].min(axis=0), hi[a:b + 1].max(axis=0))
+            for a, b in zip(cuts[:-1], cuts[1:])]
+
+
+def post(bottom: Sequence[float], top: Sequence[float], r_bottom: float,
+         r_top: float | None = None, sections: int = 16, circumscribed: bool = False,
+         square: bool = False) -> m3d.Manifold:
+    """A straight or slanted leg from point `bottom` to point `top` whose horizontal sections
+    are circles (or squares, `square=True`) of radius r_bottom at the bottom and r_top at the
+    top: its foot stands flat on the floor however far it is splayed. `circumscribed` makes the
+    polygon contain the true circle, with the same bounding box (for placeholders)."""
+    rt = r_bottom if r_top is None else r_top
+    if square:
+        ring = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)], float)
+    else:
+        n = max(4, int(math.ceil(sections / 4.0)) * 4)
+        k = 1.0 / math.cos(math.pi / n) if circumscribed else 1.0
+        a = 2 * np.pi * np.arange(n) / n + (math.pi / n if circumscribed else 0.0)
+        ring = k * np.c_[np.cos(a), np.sin(a)]
+    b, t = np.asarray(bottom, float), np.asarray(top, float)
+    pts = np.vstack([np.c_[b[0] + r_bottom * ring[:, 0], b[1] + r_bottom * ring[:, 1],
+                           np.full(len(ring), b[2])],
+                     np.c_[t[0] + rt * ring[:, 0], t[1] + rt * ring[:, 1], np.full(len(ring), t[2])]])
+    return m3d.Manifold.hull_points(pts)
+
+
+def rounded_slab(dx: float, dy: float, z0: float, z1: float, corner: float,
+                 center: Sequence[float] = (0.0, 0.0), sections: int = 32) -> m3d.Manifold:
+    """A slab dx (X) by dy (Y) from z0 to z1 whose plan has corners rounded by `corner` (half
+    the smaller side: a stadium or a disc). Its bounding box is exact."""
+    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
+    n = max(4, int(math.ceil(sections / 4.0)) * 4)
+    a = 2 * np.pi * np.arange(n) / n
+    circ = r * np.c_[np.cos(a), np.sin(a)]
+    pts = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            c = np.array([center[0] + sx * (dx / 2 - r), center[1] + sy * (dy / 2 - r)])
+            for z in (z0, z1):
+                pts.append(np.c_[c[0] + circ[:, 0], c[1] + circ[:, 1], np.full(n, z)])
+    return m3d.Manifold.hull_points(np.vstack(pts))
+
+
+def rounded_rect_polygon(dx: float, dy: float, corner: float, inset: float,
+                         center: Sequence[float] = (0.0, 0.0)) -> sg.Polygon:
+    """The plan of `rounded_slab(dx, dy, ..., corner)` shrunk by `inset`, as a shapely polygon
+    (for support surfaces on rounded seats and tops)."""
+    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
+    core = sg.box(center[0] - dx / 2 + r, center[1] - dy / 2 + r,
+                  center[0] + dx / 2 - r, center[1] + dy / 2 - r)
+    if r - inset > 1e-4:
+        return core.buffer(r - inset, 16)
+    return core.buffer(r - inset, 16, join_style=2)
+
+
+def thick_polyline(center: Sequence[Sequence[float]], thickness: float) -> np.ndarray:
+    """The outline (a closed 2D polygon) of a band `thickness` wide around a 2D polyline."""
+    c = np.asarray(center, float)
+    seg = _unit_rows(np.diff(c, axis=0))
+    tang = np.empty_like(c)
+    tang[0], tang[-1] = seg[0], seg[-1]
+    tang[1:-1] = _unit_rows(seg[:-1] + seg[1:])
+    nrm = np.c_[-tang[:, 1], tang[:, 0]]
+    scale = np.ones(len(c))
+    scale[1:-1] = 1.0 / np.maximum(np.einsum("ij,ij->i", seg[:-1], tang[1:-1]), 0.3)
+    off = nrm * (thickness / 2 * scale)[:, None]
+    return np.vstack([c + off, (c - off)[::-1]])
+
+
+def profile_slab(outline_xz: np.ndarray, y0: float, y1: float) -> m3d.Manifold:
+    """A 2D outline in the XZ plane (side view) extruded across Y from y0 to y1."""
+    pts = np.asarray(outline_xz, float)
+    area = 0.5 * float(np.dot(pts[:, 0], np.roll(pts[:, 1], -1)) - np.dot(pts[:, 1], np.roll(pts[:, 0], -1)))
+    cs = m3d.CrossSection([pts], m3d.FillRule.Positive if area > 0 else m3d.FillRule.Negative)
+    return m3d.Manifold.extrude(cs, float(y1 - y0)).rotate((90.0, 0.0, 0.0)).translate((0.0, float(y1), 0.0))
+
+
+def shear_points(points: np.ndarray, z0: float, tilt_deg: float) -> np.ndarray:
+    """`shear_back` applied to points (N, 3)."""
+    pts = np.array(points, float).reshape(-1, 3)
+    pts[:, 0] -= math.tan(math.radians(tilt_deg)) * (pts[:, 2] - z0)
+    return pts
+
+
+def soft_sheared(extents: Sequence[float], center: Sequence[float], radius: float, z0: float,
+                 tilt_deg: float, detail: bool) -> m3d.Manifold:
+    """A bevelled box leaning back by `tilt_deg` about z0 (an upholstered back), or for a
+    placeholder the box around it (a sheared plain box would reach further than its rounded
+    corners do, so its bounding box would not match)."""
+    solid = shear_back(bevel_box(extents, center, radius, 2), z0, tilt_deg)
+    return solid if detail else aabb_box([solid])
+
+
+def shear_back(solid: m3d.Manifold, z0: float, tilt_deg: float) -> m3d.Manifold:
+    """Lean `solid` backwards (-X) by `tilt_deg` about height z0 (a shear: horizontal sections
+    keep their shape, so a placeholder box sheared alike still contains what it contained)."""
+    if abs(tilt_deg) <= 1e-6:
+        return solid
+    k = math.tan(math.radians(tilt_deg))
+    return solid.transform(np.array([[1.0, 0.0, -k, k * z0], [0.0, 1.0, 0.0, 0.0],
+                                     [0.0, 0.0, 1.0, 0.0]]))
+
+
+def aabb_box(solids: Iterable[m3d.Manifold]) -> m3d.Manifold:
+    """One box covering the bounding boxes of `solids` (a placeholder piece)."""
+    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+    for s in solids:
+        bb = np.asarray(s.bounding_box(), float)
+        lo, hi = np.minimum(lo, bb[:3]), np.maximum(hi, bb[3:])
+    return box_between(lo, hi)
+
+
+def points_box(points: np.ndarray, pad: float) -> m3d.Manifold:
+    """The box around `points` (N, 3) grown by `pad` on every side (a placeholder piece)."""
+    pts = np.asarray(points, float)
+    return box_between(pts.min(axis=0) - pad, pts.max(axis=0) + pad)
+
+
+def rod_between(p0: Sequence[float], p1: Sequence[float], radius: float, detail: bool,
+                sections: int = 12) -> m3d.Manifold:
+    """A round rod from p0 to p1, or (detail=False) the box of its bounding box."""
+    if detail:
+        return tube([p0, p1], radius, sections)
+    return tube_boxes([p0, p1], radius, 1)[0]
+
+
+def splay_legs(corners: Sequence[tuple[float, float]], z_top: float, r_top: float,
+               r_foot: float, splay: float, detail: bool, slot: str, square: bool = False,
+               sections: int = 16) -> tuple[list[Part], list[tuple[np.ndarray, np.ndarray]]]:
+    """Legs from the (x, y) `corners` under a seat at height z_top down to feet pushed `splay`
+    metres further out (radially from the origin). Returns the parts and each leg's
+    (foot, top) centre points, for rungs and rings."""
+    out, axes = [], []
+    for cx, cy in corners:
+        d = math.hypot(cx, cy)
+        ux, uy = (cx / d, cy / d) if d > 1e-9 else (0.0, 0.0)
+        foot = np.array([cx + ux * splay, cy + uy * splay, 0.0])
+        top = np.array([cx, cy, z_top])
+        out.append(Part(post(foot, top, r_foot, r_top, sections if detail else 8,
+                             circumscribed=not detail, square=square), slot))
+        axes.append((foot, top))
+    return out, axes
+
+
+def leg_point(axis: tuple[np.ndarray, np.ndarray], z: float) -> np.ndarray:
+    """The centre of a leg (foot, top) at height z."""
+    foot, top = axis
+    t = (z - foot[2]) / (top[2] - foot[2])
+    return foot + t * (top - foot)
+
+
+def seat_surface(name: str, z: float, plan: sg.Polygon) -> Surface:
+    """An upward support surface at height z with the (x, y) polygon `plan`."""
+    return support_polygon(name, (0.0, 0.0, z), plan)
+
+
+# ================================================================================ side chair
+@register
+class SideChair(PartsFactory):
+    """A light armless side chair, four families: a Windsor (thick saddle seat, splayed turned
+    legs with an H-stretcher, spindle back under a bowed crest rail), a bentwood bistro chair
+    (round-ish seat, leg ring, back legs bent into one hoop with spindles), a cantilever chair
+    (one tubular-steel S frame per side, no back legs, padded seat and back) and a moulded
+    plastic shell on splayed legs. Seat size, height, back height and lean, leg thickness and
+    splay, seat roundness and spindle count vary."""
+
+    name = "side_chair"
+    tags = frozenset({S.Object, S.Furniture, S.Seating, S.Chair, S.SideChair})
+    size_class = "large"
+    slots = ["wood", "metal", "plastic", "fabric"]
+    params = {
+        "style": Param(kind="choice", choices=("windsor", "bentwood", "cantilever", "shell"),
+                       doc="chair family"),
+        "seat_width": Param(0.40, 0.48, doc="seat Y extent (m)"),
+        "seat_depth": Param(0.40, 0.47, doc="seat X extent (m)"),
+        "seat_height": Param(0.43, 0.48, doc="height of the seat's upper face (m)"),
+        "seat_thickness": Param(0.02, 0.045, doc="seat board / shell / pad thickness (m)"),
+        "seat_roundness": Param(0.03, 0.24, doc="corner radius of the seat's plan (m); "
+                                                 "half the width makes it round"),
+        "back_height": Param(0.32, 0.48, doc="height of the back above the seat (m)"),
+        "back_tilt": Param(3.0, 14.0, doc="backwards lean of the back (degrees)"),
+        "leg_thickness": Param(0.022, 0.036, doc="leg (or frame tube) diameter (m)"),
+        "leg_splay": Param(0.0, 0.05, doc="how far the feet stand out beyond the leg tops "
+                                          "(cantilever: how far the runners reach forward) (m)"),
+        "n_spindles": Param(3, 9, kind="int", doc="back spindles (Windsor, bentwood)"),
+    }
+
+    # ---- pieces shared by the styles
+    def _seat_plan(self, p) -> tuple[float, float, float]:
+        sd, sw = p["seat_depth"], p["seat_width"]
+        return sd, sw, min(p["seat_roundness"], 0.5 * min(sd, sw) - 0.001)
+
+    def parts(self, p, detail):
+        return getattr(self, "_" + p["style"])(p, detail)
+
+    def _windsor(self, p, detail):
+        sd, sw, rc = self._seat_plan(p)
+        sh, st = p["seat_height"], max(p["seat_thickness"], 0.035)
+        lt, tilt, splay = p["leg_thickness"], p["back_tilt"], p["leg_splay"]
+        z0 = sh - st
+        seat = rounded_slab(sd, sw, z0, sh, rc) if detail else box((sd, sw, st), (0, 0, sh - st / 2))
+        out = [Part(seat, "wood")]
+        ix, iy = sd / 2 - 0.06, sw / 2 - 0.06
+        corners = [(sx * ix, sy * iy) for sx in (-1, 1) for sy in (-1, 1)]
+        lp, axes = splay_legs(corners, z0 + OVERLAP, lt / 2, lt * 0.35, splay, detail, "wood")
+        out += lp
+        # H-stretcher: a rung between front and back leg on each side, one across the middle
+        zs, rr = 0.17, lt * 0.3
+        mids = []
+        for j in (0, 1):  # corners 0/2 are y=-, 1/3 are y=+
+            a, b = leg_point(axes[j], zs), leg_point(axes[j + 2], zs)
+            out.append(Part(rod_between(a, b, rr, detail), "wood"))
+            mids.append((a + b) / 2)
+        out.append(Part(rod_between(mids[0], mids[1], rr, detail), "wood"))
+        # spindle back under a bowed crest rail, leaning back about the seat's top
+        n, zc = int(p["n_spindles"]), sh + p["back_height"] - 0.02
+        yc, xb, bow = sw / 2 - 0.05, -sd / 2 + 0.045, 0.04
+        ys = np.linspace(-yc, yc, 25)
+        crest = np.c_[xb - bow * (1 - (ys / yc) ** 2), ys, np.full(len(ys), zc)]
+        spindles = []
+        for i, y in enumerate(np.linspace(-yc + 0.01, yc - 0.01, n + 2)):
+            x = xb - bow * (1 - (y / yc) ** 2)
+            spindles.append(((xb + 0.3 * (x - xb), y, sh - 0.01), (x, y, zc),
+                             0.011 if i in (0, n + 1) else 0.0065))
+        if detail:
+            back = [tube([a, b], r, 10) for a, b, r in spindles] + [tube(crest, 0.02, 12)]
+            out += [Part(shear_back(b, sh, tilt), "wood") for b in back]
+        else:
+            pts = [tube_rings(crest, 0.02, 12)] + [tube_rings(sp[:2], sp[2], 10) for sp in spindles]
+            out.append(Part(points_box(shear_points(np.vstack(pts), sh, tilt), 0.0), "wood"))
+        return out
+
+    def _bentwood(self, p, detail):
+        sd, sw, rc = self._seat_plan(p)
+        sh, st = p["seat_height"], p["seat_thickness"]
+        lt, tilt, splay = p["leg_thickness"], p["back_tilt"], p["leg_splay"]
+        z0, r = sh - st, lt / 2
+        seat = rounded_slab(sd, sw, z0, sh, rc) if detail else box((sd, sw, st), (0, 0, sh - st / 2))
+        out = [Part(seat, "wood")]
+        # legs on a circle inside the seat, so that one ring ties all four
+        R = 0.5 * min(sd, sw) - 0.045
+        c45 = R * math.sqrt(0.5)
+        fl, ax_f = splay_legs([(c45, -c45), (c45, c45)], z0 + OVERLAP, r, r * 0.8, splay,
+                              detail, "wood")
+        out += fl
+        # the back legs and the back hoop: one bent piece from foot to foot
+        k = math.tan(math.radians(tilt))
+        xb, yb = -c45, c45
+        zt = sh + p["back_height"] - r
+        hoop_r = yb
+        zh = zt - hoop_r
+        sfx, sfy = (-splay * math.sqrt(0.5), splay * math.sqrt(0.5))
+        arc = np.linspace(math.pi, 0.0, 13)
+        top = [(xb - k * (zh + hoop_r * math.sin(a) - sh), hoop_r * math.cos(a),
+                zh + hoop_r * math.sin(a)) for a in arc]
+        path = ([(xb + sfx, -yb - sfy, 0.0), (xb + sfx, -yb - sfy, 0.03), (xb, -yb, sh)] + top
+                + [(xb, yb, sh), (xb + sfx, yb + sfy, 0.03), (xb + sfx, yb + sfy, 0.0)])
+        path = fillet_path(_dedupe(path), 0.05, 4)
+        out += [Part(s, "wood") for s in ([tube(path, r, 12)] if detail else tube_boxes(path, r, 8))]
+        # a ring between the legs
+        zr = 0.2
+        ring_r = math.hypot(*leg_point(ax_f[0], zr)[:2])
+        if detail:
+            out.append(Part(torus(ring_r, lt * 0.3, (0, 0, zr), 48, 8), "wood"))
+        else:
+            rr = ring_r + lt * 0.3
+            out.append(Part(box((2 * rr, 2 * rr, lt * 0.6), (0, 0, zr)), "wood"))
+        # spindles from a low back rail up to the hoop
+        zr0, xs0 = sh + 0.1, xb - k * 0.1
+        rail = ((xs0, -yb, zr0), (xs0, yb, zr0))
+        n = int(p["n_spindles"])
+        ys = np.linspace(-yb, yb, n + 2)[1:-1]
+        zy = zh + np.sqrt(np.maximum(hoop_r ** 2 - ys ** 2, 0.0))
+        if detail:
+            out.append(Part(tube(rail, r * 0.6, 10), "wood"))
+            out += [Part(tube([(xs0, y, zr0), (xb - k * (z - sh), y, z)], r * 0.45, 8), "wood")
+                    for y, z in zip(ys, zy)]
+        else:
+            pts = np.vstack([rail, np.c_[xb - k * (zy - sh), ys, zy]])
+            out.append(Part(points_box(pts, r * 0.6), "wood"))
+        return out
+
+    def _cantilever(self, p, detail):
+        sd, sw, rc = self._seat_plan(p)
+        sh = p["seat_height"]
+        st = max(p["seat_thickness"], 0.03)
+        rt = min(max(p["leg_thickness"] / 2, 0.011), 0.015)
+        k = math.tan(math.radians(p["back_tilt"]))
+        ys = sw / 2 - rt - 0.01
+        zr = sh - st - rt + OVERLAP  # seat rail centre line, just under the pad
+        xf_floor = sd / 2 + 0.03 + p["leg_splay"]
+        xr = -sd / 2 + 0.04
+        ztop = sh + p["back_height"] - 0.02
+        out: list[Part] = []
+        for s in (-1, 1):
+            pts = [(xr - 0.02, s * ys, rt), (xf_floor, s * ys, rt), (sd / 2 - 0.01, s * ys, zr),
+                   (xr, s * ys, zr), (xr - k * (ztop - zr), s * ys, ztop)]
+            path = fillet_path(pts, 0.07, 6)
+            out += [Part(q, "metal") for q in ([tube(path, rt, 16)] if detail else tube_boxes(path, rt, 6))]
+        out.append(Part(rod_between((xr - 0.01, -ys, rt), (xr - 0.01, ys, rt), rt, detail, 16), "metal"))
+        seat = (bevel_box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2), min(0.015, st / 3), 2)
+                if detail else box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2)))
+        out.append(Part(seat, "fabric"))
+        zb0 = sh + 0.12
+        bt = 0.03
+        back = soft_sheared((bt + rt * 0.3, sw, ztop + 0.02 - zb0),
+                            (xr + (bt - rt * 0.3) / 2, 0, (zb0 + ztop + 0.02) / 2), 0.012, zr,
+                            p["back_tilt"], detail)
+        out.append(Part(back, "fabric"))
+        return out
+
+    def _shell(self, p, detail):
+        sd, sw, rc = self._seat_plan(p)
+        sh = p["seat_height"]
+        t = 0.45 * p["seat_thickness"] + 0.006
+        k = math.tan(math.radians(p["back_tilt"] + 6))
+        zs = sh - t / 2  # centre line of the seat pan
+        ztop = sh + p["back_height"]
+        xr = -sd / 2 + 0.02
+        centre = fillet_path([(sd / 2, zs - 0.025, 0), (sd / 2 - 0.05, zs, 0), (xr, zs, 0),
+                              (xr - k * (ztop - zs), ztop - t / 2, 0)], 0.09, 8)[:, :2]
+        outline = thick_polyline(centre, t)
+        nseg = len(centre) - 1
+        out: list[Part] = []
+        if detail:
+            shell = profile_slab(outline, -sw / 2, sw / 2) ^ _front_round(sd, sw, rc)
+            out.append(Part(shell, "plastic"))
+        else:
+            # the band's quads, grouped: seat pan, bend, back
+            quads = [np.vstack([outline[i], outline[i + 1], outline[-i - 1], outline[-i - 2]])
+                     for i in range(nseg)]
+            groups = np.array_split(np.arange(nseg), 3)
+            for g in groups:
+                q = np.vstack([quads[i] for i in g])
+                out.append(Part(box_between((q[:, 0].min(), -sw / 2, q[:, 1].min()),
+                                            (min(q[:, 0].max(), sd / 2), sw / 2, q[:, 1].max())),
+                                "plastic"))
+        lt, splay = p["leg_thickness"], p["leg_splay"]
+        zt = sh - t + OVERLAP
+        ix, iy = sd / 2 - 0.08, sw / 2 - 0.07
+        corners = [(sx * ix, sy * iy) for sx in (-1, 1) for sy in (-1, 1)]
+        lp, axes = splay_legs(corners, zt - 0.012, lt / 2, lt * 0.4, splay + 0.02, detail, "wood")
+        out += lp
+        plate = box_between((-ix - lt / 2, -iy - lt / 2, zt - 0.012 - OVERLAP), (ix + lt / 2, iy + lt / 2, zt))
+        out.append(Part(plate, "metal"))
+        zs0 = 0.18
+        for j in (0, 1):
+            a, b = leg_point(axes[j], zs0), leg_point(axes[j + 2], zs0)
+            out.append(Part(rod_between(a, b, 0.005, detail, 8), "metal"))
+        return out
+
+    def extra_surfaces(self, p):
+        sd, sw, rc = self._seat_plan(p)
+        style, sh = p["style"], p["seat_height"]
+        plan = rounded_rect_polygon(sd, sw, rc, 0.02)
+        c45 = (0.5 * min(sd, sw) - 0.045) * math.sqrt(0.5)  # bentwood back posts
+        x_back = {"windsor": -sd / 2 + 0.08, "bentwood": -c45 + p["leg_thickness"] / 2 + 0.02,
+                  "cantilever": -sd / 2 + 0.09, "shell": -sd / 2 + 0.12}[style]
+        x_front = sd / 2 - (0.08 if style == "shell" else 0.025)
+        if style == "cantilever":
+            plan = sg.box(-sd / 2 + 0.03, -sw / 2 + 0.03, sd / 2 - 0.04, sw / 2 - 0.03)
+        plan = plan.intersection(sg.box(x_back, -sw, x_front, sw))
+        return [seat_surface("seat", sh, plan)]
+
+
+def _dedupe(points: Sequence[Sequence[float]]) -> np.ndarray:
+    arr = np.asarray(points, float)
+    keep = np.r_[True, np.linalg.norm(np.diff(arr, axis=0), axis=1) > 1e-6]
+    return arr[keep]
+
+
+def _front_round(sd: float, sw: float, rc: float) -> m3d.Manifold:
+    """A tall rounded prism that trims a shell's plan to a seat with rounded front corners."""
+    return rounded_slab(sd, sw, -1.0, 3.0, rc) + box_between((-2.0, -sw / 2, -1.0), (0.0, sw / 2, 3.0))
+
+
+# ========================================================================= upholstered chair
+@register
+class UpholsteredChair(PartsFactory):
+    """A padded accent / dining chair: a thick upholstered seat block and back (plain, vertical
+    channel tufting, or a wingback), no arms, padded arms or wooden arm rests on posts, and
+    tapered wooden, turned round or thin metal legs."""
+
+    name = "upholstered_chair"
+    tags = frozenset({S.Object, S.Furniture, S.Seating, S.Chair, S.UpholsteredChair})
+    size_class = "large"
+    slots = ["upholstery", "wood", "metal"]
+    params = {
+        "seat_width": Param(0.46, 0.60, doc="seat Y extent (m)"),
+        "seat_depth": Param(0.46, 0.58, doc="seat X extent (m)"),
+        "seat_height": Param(0.42, 0.48, doc="height of the seat's upper face (m)"),
+        "seat_thickness": Param(0.08, 0.14, doc="padded seat block thickness (m)"),
+        "back_height": Param(0.35, 0.60, doc="height of the back above the seat (m)"),
+        "back_thickness": Param(0.06, 0.12, doc="back X thickness (m)"),
+        "back_tilt": Param(4.0, 15.0, doc="backwards lean of the back (degrees)"),
+        "back_style": Param(kind="choice", choices=("plain", "channel", "wing"),
+                            doc="plain padded back, vertical channels, or a wingback"),
+        "n_channels": Param(3, 7, kind="int", doc="vertical channels of a channel back"),
+        "arms": Param(kind="choice", choices=("none", "padded", "wood"), doc="arm style"),
+        "leg_style": Param(kind="choice", choices=("tapered", "round", "metal"),
+                           doc="tapered square wood, turned round wood or thin metal legs"),
+        "corner_radius": Param(0.01, 0.04, doc="rounding of the upholstery edges (m)"),
+    }
+    ARM_W = 0.08  # padded arm width (m)
+    ARM_H = 0.20  # arm top above the seat (m)
+
+    def parts(self, p, detail):
+        sd, sw, sh, st = p["seat_depth"], p["seat_width"], p["seat_height"], p["seat_thickness"]
+        bh, bt, tilt, cr = p["back_height"], p["back_thickness"], p["back_tilt"], p["corner_radius"]
+        z0 = sh - st
+        k = math.tan(math.radians(tilt))
+
+        def soft(ext, ctr, r, seg=2):
+            return bevel_box(ext, ctr, r, seg) if detail else box(ext, ctr)
+
+        out = [Part(soft((sd, sw, st), (0, 0, sh - st / 2), min(cr, st / 3)), "upholstery")]
+        ztop = sh + bh
+        back_ctr = (-sd / 2 + bt / 2, 0, (z0 + ztop) / 2)
+        back = []
+        if p["back_style"] == "channel":
+            n = int(p["n_channels"])
+            cw = sw / n
+            for i in range(n):
+                yc = -sw / 2 + (i + 0.5) * cw
+                w = cw + (0.008 if 0 < i < n - 1 else 0.004)
+                yc += 0.002 if i == 0 else -0.002 if i == n - 1 else 0.0
+                back.append(bevel_box((bt, w, ztop - z0), (back_ctr[0], yc, back_ctr[2]),
+                                      0.45 * min(bt, cw), 3))
+        else:
+            back.append(bevel_box((bt, sw, ztop - z0), back_ctr, min(cr * 1.5, bt / 2.5), 2))
+        if p["back_style"] == "wing":
+            zw0 = sh + 0.3 * bh
+            for s in (-1, 1):
+                back.append(bevel_box((0.24, 0.07, ztop - zw0), (-sd / 2 + 0.12, s * (sw / 2 - 0.035),
+                                                                 (zw0 + ztop) / 2), min(cr, 0.03), 2))
+        back = [shear_back(b, z0, tilt) for b in back]
+        if detail:
+            out += [Part(b, "upholstery") for b in back]
+        else:  # boxes around the leaning back (and wings): see `soft_sheared`
+            out.append(Part(aabb_box(back[:len(back) - 2] if p["back_style"] == "wing" else back),
+                            "upholstery"))
+            out += [Part(aabb_box([b]), "upholstery") for b in back[len(back) - 2:]
+                    if p["back_style"] == "wing"]
+        arms = p["arms"]
+        za = sh + self.ARM_H
+        if arms == "padded":
+            for s in (-1, 1):
+                y0, y1 = sw / 2 - 0.006, sw / 2 + self.ARM_W
+                out.append(Part(soft((sd, y1 - y0, za - z0), (0, s * (y0 + y1) / 2, (z0 + za) / 2),
+                                     min(cr, 0.03)), "upholstery"))
+        elif arms == "wood":
+            xr0 = -sd / 2 + bt / 2 - k * (za - z0)
+            for s in (-1, 1):
+                yc = s * (sw / 2 + 0.015)
+                out.append(Part(soft((sd / 2 + 0.02 - xr0, 0.05, 0.025),
+                                     ((xr0 + sd / 2 + 0.02) / 2, yc, za - 0.0125), 0.008), "wood"))
+                yp = s * (sw / 2 + 0.012)
+                out.append(Part(box_between((sd / 2 - 0.075, yp - 0.0175, z0 + 0.01),
+                                            (sd / 2 - 0.04, yp + 0.0175, za - 0.025 + OVERLAP)), "wood"))
+        style = p["leg_style"]
+        lt = {"tapered": 0.045, "round": 0.045, "metal": 0.024}[style]
+        taper = {"tapered": 0.6, "round": 0.7, "metal": 1.0}[style] if detail else 1.0
+        for leg in legs((sd, sw), 0.03, lt, 0.0, z0 + 0.02, taper=taper,
+                        round_legs=style != "tapered", circumscribed=not detail,
+                        sections=16 if detail else 8):
+            out.append(Part(leg, "metal" if style == "metal" else "wood"))
+        return out
+
+    def extra_surfaces(self, p):
+        sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
+        m = min(p["corner_radius"], p["seat_thickness"] / 3) + 0.01
+        x0, x1 = -sd / 2 + p["back_thickness"] + 0.01, sd / 2 - m
+        return [support_rect("seat", ((x0 + x1) / 2, 0, sh), (x1 - x0) / 2, sw / 2 - m)]
+
+
+# ============================================================================== office chair
+@register
+class OfficeChair(PartsFactory):
+    """A swivel office chair: five-star base on twin-wheel casters, gas-lift column with a
+    shroud, seat mechanism, padded seat, a padded or mesh back on a spine, optional armrests
+    and headrest. Everything above the gas spring turns on a revolute `swivel` joint."""
+
+    name = "office_chair"
+    tags = frozenset({S.Object, S.Furniture, S.Seating, S.Chair, S.OfficeChair})
+    size_class = "large"
+    slots = ["plastic", "fabric", "metal"]
+    params = {
+        "base_radius": Param(0.28, 0.34, doc="distance of the casters from the column (m)"),
+        "caster_radius": Param(0.022, 0.032, doc="caster wheel radius (m)"),
+        "seat_height": Param(0.42, 0.54, doc="height of the seat's upper face (m)"),
+        "seat_width": Param(0.46, 0.54, doc="seat Y extent (m)"),
+        "seat_depth": Param(0.44, 0.52, doc="seat X extent (m)"),
+        "seat_thickness": Param(0.06, 0.10, doc="seat cushion thickness (m)"),
+        "back_height": Param(0.45, 0.68, doc="back panel height (m)"),
+        "back_tilt": Param(4.0, 16.0, doc="backwards lean of the back (degrees)"),
+        "back_style": Param(kind="choice", choices=("padded", "mesh"),
+                            doc="upholstered back or a mesh stretched on a frame"),
+        "armrests": Param(kind="bool", doc="add armrests"),
+        "headrest": Param(kind="bool", doc="add a headrest above the back"),
+    }
+    SEAT_X = 0.02  # the seat sits slightly forward of the column (m)
+
+    def _levels(self, p) -> dict[str, float]:
+        cr = p["caster_radius"]
+        z_tip = 2 * cr + 0.025  # underside of the star's arm tips
+        z_hub0 = z_tip + 0.02
+        z_hub1 = z_hub0 + 0.045
+        z_seat0 = p["seat_height"] - p["seat_thickness"]
+        z_mech0 = z_seat0 - 0.045
+        z_gas = z_mech0 - 0.045
+        return dict(tip=z_tip, hub0=z_hub0, hub1=z_hub1, seat0=z_seat0, mech0=z_mech0, gas=z_gas)
+
+    def _base(self, p, detail) -> list[Part]:
+        L = self._levels(p)
+        cr, R = p["caster_radius"], p["base_radius"]
+        n = 16 if detail else 8
+        out = [Part(cylinder(0.05, L["hub1"] + 0.01 - (L["hub0"] - 0.005), (0, 0, L["hub0"] - 0.005),
+                             n * 2, circumscribed=not detail), "plastic")]
+        for i in range(5):
+            th = math.pi + 2 * math.pi * i / 5
+            d, t = np.array([math.cos(th), math.sin(th), 0.0]), np.array([-math.sin(th), math.cos(th), 0.0])
+            arm_pts = []
+            for dist, hw, za, zb in ((0.03, 0.026, L["hub0"], L["hub1"]),
+                                     (R + 0.02, 0.018, L["tip"], L["tip"] + 0.03)):
+                for sy in (-1, 1):
+                    for z in (za, zb):
+                        arm_pts.append(d * dist + t * sy * hw + (0, 0, z))
+            arm_pts = np.array(arm_pts)
+            out.append(Part(m3d.Manifold.hull_points(arm_pts) if detail else points_box(arm_pts, 0.0),
+                            "plastic"))
+            # caster: a twin wheel on a horizontal axle, its hood and a swivel stem
+            c = d * (R + 0.02)
+            wheel = cylinder(cr, 0.045, (0, 0, -0.0225), 16).rotate((90.0, 0.0, 0.0)).rotate(
+                (0.0, 0.0, math.degrees(th) + 90.0)).translate((float(c[0]), float(c[1]), cr))
+            hood = box((2.2 * cr, 0.02, cr + 0.012), (0, 0, 0)).rotate(
+                (0.0, 0.0, math.degrees(th))).translate((float(c[0]), float(c[1]), 1.5 * cr + 0.006))
+            sc = d * R
+            stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr), n)
+            pieces = [wheel, hood, stem]
+            if detail:
+                out += [Part(wheel, "plastic"), Part(hood, "metal"), Part(stem, "metal")]
+            else:
+                out.append(Part(aabb_box(pieces), "plastic"))
+        zc0 = L["hub1"]
+        out.append(Part(cylinder(0.028, L["gas"] - zc0 + OVERLAP, (0, 0, zc0 - OVERLAP), n * 2,
+                                 circumscribed=not detail), "metal"))
+        hs = 0.6 * (L["gas"] - zc0)
+        out.append(Part(cylinder(0.042, hs, (0, 0, zc0 - OVERLAP), n * 2,
+                                 radius_top=0.034 if detail else None, circumscribed=not detail),
+                        "plastic"))
+        return out
+
+    def _seat(self, p, detail) -> list[Part]:
+        L = self._levels(p)
+        sd, sw, sh, st = p["seat_depth"], p["seat_width"], p["seat_height"], p["seat_thickness"]
+        bh, tilt = p["back_height"], p["back_tilt"]
+        x0 = self.SEAT_X
+        n = 16 if detail else 8
+        link = "seat"
+
+        def soft(ext, ctr, r):
+            return bevel_box(ext, ctr, r, 2) if detail else box(ext, ctr)
+
+        out = [Part(cylinder(0.016, L["mech0"] - L["gas"] - 0.002 + OVERLAP, (0, 0, L["gas"] + 0.002), n,
+                             circumscribed=not detail), "metal", link),
+               Part(box_between((-0.11, -0.1, L["mech0"]), (0.12, 0.1, L["seat0"] + OVERLAP)), "metal", link),
+               Part(soft((sd, sw, st), (x0, 0, sh - st / 2), min(0.03, st / 3)), "fabric", link)]
+        # spine: under the seat to the back, then up behind the back panel
+        xb = x0 - sd / 2  # seat rear
+        zs0 = L["seat0"] - 0.04
+        out.append(Part(box_between((xb - 0.065, -0.03, zs0), (-0.08, 0.03, L["seat0"] - 0.01)), "metal", link))
+        zb0, zb1 = sh + 0.05, sh + 0.05 + bh
+        spine = box_between((xb - 0.065, -0.03, zs0), (xb - 0.022, 0.03, zb0 + 0.5 * bh))
+        out.append(Part(shear_back(spine, sh, tilt), "metal", link))
+        bw = 0.95 * sw
+        soft_back = []
+        if p["back_style"] == "padded":
+            back = []
+            soft_back.append(((0.06, bw, bh), (xb, 0, (zb0 + zb1) / 2)))
+        else:
+            ring = frame(bw, bh, 0.03, 0.035, (xb - 0.0125, 0, (zb0 + zb1) / 2))
+            mesh = box((0.008, bw - 0.06 + 2 * OVERLAP, bh - 0.06 + 2 * OVERLAP), (xb - 0.0125, 0, (zb0 + zb1) / 2))
+            back = ([Part(ring, "plastic", link), Part(mesh, "fabric", link)] if detail else
+                    [Part(box((0.035, bw, bh), (xb - 0.0125, 0, (zb0 + zb1) / 2)), "plastic", link)])
+        if p["headrest"]:
+            back.append(Part(box_between((xb - 0.03, -0.02, zb1 - 0.05), (xb - 0.002, 0.02, zb1 + 0.1)),
+                             "metal", link))
+            soft_back.append(((0.06, 0.28, 0.13), (xb - 0.01, 0, zb1 + 0.08 + 0.065 - OVERLAP)))
+        out += [Part(shear_back(b.solid, sh, tilt), b.slot, link) for b in back]
+        out += [Part(soft_sheared(ext, ctr, 0.025, sh, tilt, detail), "fabric", link)
+                for ext, ctr in soft_back]
+        if p["armrests"]:
+            za = sh + 0.2
+            for s in (-1, 1):
+                ya = s * (sw / 2 + 0.02)
+                out.append(Part(box_between((-0.07, min(s * 0.06, s * (sw / 2 + 0.035)), zs0 + 0.005),
+                                            (0.01, max(s * 0.06, s * (sw / 2 + 0.035)), L["seat0"] - 0.01)),
+                                "metal", link))
+                out.append(Part(box_between((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP)),
+                                "plastic", link))
+                out.append(Part(soft((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012), "plastic", link))
+        return out
+
+    def parts(self, p, detail):
+        return self._base(p, detail) + self._seat(p, detail)
+
+    def joints(self, p):
+        return [Joint("swivel", "revolute", np.array([0.0, 0.0, 1.0]), np.zeros(3), -math.pi,
+                      math.pi, "seat")]
+
+    def extra_surfaces(self, p):
+        sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
+        m = min(0.03, p["seat_thickness"] / 3) + 0.01
+        return [support_rect("seat", (self.SEAT_X, 0, sh), sd / 2 - m, sw / 2 - m)]
