@@ -101,6 +101,7 @@ class Semantics(str, Enum):
     BunkBed = "bunk_bed"
     Desk = "desk"
     ConsoleTable = "console_table"
+    SectionalSofa = "sectional_sofa"
     # -- seating, beds, tables: more tags here
     # storage and lighting
     Wardrobe = "wardrobe"
