@@ -167,7 +167,9 @@ class Door:
 
 @dataclass
 class Room:
-    """A room: a simple polygon (counter-clockwise, metres) extruded to `height`."""
+    """A room: a simple polygon (counter-clockwise, metres) extruded to `height`. In a home,
+    `storey` is its storey's level and `elevation` the z of its floor (written to JSON only when
+    not 0, so single rooms serialise as before)."""
 
     name: str
     room_type: str
@@ -176,18 +178,22 @@ class Room:
     wall_thickness: float = 0.12
     storey: int = 0
     doors: list[Door] = field(default_factory=list)
+    elevation: float = 0.0
 
     def to_json(self) -> dict:
-        return {"name": self.name, "type": self.room_type,
-                "polygon": [[_r(x), _r(y)] for x, y in self.polygon],
-                "height": _r(self.height), "wall_thickness": _r(self.wall_thickness),
-                "storey": self.storey, "doors": [d.to_json() for d in self.doors]}
+        out = {"name": self.name, "type": self.room_type,
+               "polygon": [[_r(x), _r(y)] for x, y in self.polygon],
+               "height": _r(self.height), "wall_thickness": _r(self.wall_thickness),
+               "storey": self.storey, "doors": [d.to_json() for d in self.doors]}
+        if self.elevation:
+            out["elevation"] = _r(self.elevation)
+        return out
 
     @staticmethod
     def from_json(d: dict) -> "Room":
         return Room(d["name"], d["type"], [tuple(p) for p in d["polygon"]], float(d["height"]),
                     float(d["wall_thickness"]), int(d["storey"]),
-                    [Door.from_json(x) for x in d["doors"]])
+                    [Door.from_json(x) for x in d["doors"]], float(d.get("elevation", 0.0)))
 
 
 @dataclass

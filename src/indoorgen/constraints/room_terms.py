@@ -1,0 +1,433 @@
+"""Room-level terms of the constraint DSL, for floorplan programs (Infinigen Indoors, D.3).
+
+A floorplan program is an ordinary `Problem` whose objects are rooms (tagged `Semantics.Room`
+plus their type, e.g. ``"bedroom"``) and storeys (tagged ``"storey"``)::
+
+    rooms = scene()[Semantics.Room]
+    bedrooms = rooms_of(rooms, "bedroom")
+    Problem(constraints={"bedrooms see outside": bedrooms.all(
+                lambda r: longest_exterior_wall(r) >= 1.5)},
+            score_terms={"square rooms": rooms.sum(
+                lambda r: (aspect_ratio(r) - 1) ** 2).minimize()})
+
+Every term here is a `GeometricTerm`: it watches the rooms it reads, so the incremental
+`Evaluator` recomputes, after a floorplan move, only the terms of the 1-3 rooms the move changed
+(plus the few terms that read a changed room indirectly, such as a path through it).
+
+The terms read a *room view*: an `ObjectView` over rooms that also offers the methods of
+`RoomView` below. `RoomView` computes everything from room polygons, so a view over any plan
+(generated or predefined) only has to supply the abstract methods; the floorplan solver's grid
+view overrides the measures it can get faster from its cell grid.
+"""
+from __future__ import annotations
+
+import math
+from functools import reduce
+from typing import Callable, Iterable
+
+import numpy as np
+import shapely
+import shapely.geometry as sg
+
+from ..tags import Semantics
+from .expressions import GeometricTerm, ObjSet, Scalar, _scalar
+
+#: Tag of storey objects; the id of the staircase placeholder (watched by the staircase terms).
+STOREY = "storey"
+STAIR_PLACEHOLDER = "stair_placeholder"
+#: Shortest straight shared wall (m) that takes a door (0.8-0.9 m leaf, margins, wall ends).
+MIN_DOOR_WALL = 1.5
+#: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
+CORNER_TURN_DEG = 20.0
+
+
+# --------------------------------------------------------------------------------------------
+# the view
+
+
+class RoomView:
+    """Polygon-based room measures and the `ObjectView` methods, for a plan of rooms.
+
+    Subclasses supply `room_ids`, `storey_ids`, `polygon`, `room_type`, `level`, `neighbours`,
+    `contour`, `entry_point`, `entry_room`, `stair_polygon` and `typical_area`; everything else
+    has a polygon-based default here. Measures are cached per room until `invalidate(rooms)`.
+    """
+
+    def __init__(self):
+        self._cache: dict[str, dict] = {}
+
+    # -- to supply ---------------------------------------------------------------------------
+    def room_ids(self) -> list[str]: raise NotImplementedError
+    def storey_ids(self) -> list[str]: raise NotImplementedError
+    def polygon(self, o: str) -> sg.Polygon: raise NotImplementedError
+    def room_type(self, o: str) -> str: raise NotImplementedError
+    def level(self, o: str) -> int: raise NotImplementedError
+    def neighbours(self, o: str) -> list[str]: raise NotImplementedError
+    def contour(self, level: int) -> sg.Polygon: raise NotImplementedError
+    def entry_point(self, level: int) -> np.ndarray: raise NotImplementedError
+    def entry_room(self, level: int) -> str: raise NotImplementedError
+    def stair_polygon(self) -> sg.Polygon | None: raise NotImplementedError
+    def typical_area(self, o: str) -> float: raise NotImplementedError
+
+    def min_area(self, o: str) -> float:
+        """Smallest acceptable area of o (m^2); none by default."""
+        return 0.0
+
+    # -- caching -----------------------------------------------------------------------------
+    def invalidate(self, rooms: Iterable[str]) -> None:
+        """Forget cached measures of `rooms` (call after they changed)."""
+        for r in rooms:
+            self._cache.pop(r, None)
+
+    def cached(self, o: str, key, fn: Callable[[], object]):
+        d = self._cache.setdefault(o, {})
+        if key not in d:
+            d[key] = fn()
+        return d[key]
+
+    # -- ObjectView ----------------------------------------------------------------------------
+    def all_ids(self) -> frozenset[str]:
+        return frozenset(self.room_ids()) | frozenset(self.storey_ids())
+
+    def tags(self, o: str) -> frozenset:
+        if o.startswith(STOREY):
+            return frozenset({STOREY})
+        return frozenset({Semantics.Room, self.room_type(o)})
+
+    def generator(self, o: str) -> str:
+        return ""
+
+    def relations(self, o: str) -> list:
+        return []
+
+    def center(self, o: str) -> np.ndarray:
+        c = self.polygon(o).centroid
+        return np.array([c.x, c.y, 0.0])
+
+    def front(self, o: str) -> np.ndarray:
+        return np.array([1.0, 0.0, 0.0])
+
+    def side_axis(self, o: str) -> np.ndarray:
+        return np.array([0.0, 1.0, 0.0])
+
+    def front_point(self, o: str) -> np.ndarray:
+        return self.center(o)
+
+    def yaw(self, o: str) -> float:
+        return 0.0
+
+    def extents(self, o: str) -> np.ndarray:
+        x0, y0, x1, y1 = self.polygon(o).bounds
+        return np.array([x1 - x0, y1 - y0, 0.0])
+
+    def footprint(self, o: str) -> sg.Polygon:
+        return self.polygon(o)
+
+    def outline(self, o: str):
+        return self.polygon(o).exterior
+
+    def world_mesh(self, o: str):
+        return None
+
+    def support_polygon(self, o: str):
+        return None
+
+    # -- measures (polygon-based defaults) -------------------------------------------------
+    def storey_level(self, s: str) -> int:
+        return int(s.rsplit("_", 1)[1])
+
+    def area(self, o: str) -> float:
+        return self.polygon(o).area
+
+    def ideal_area(self, o: str) -> float:
+        """Typical area of o's type, as a share of its storey's typical total, times the
+        storey's area (D.3 "typical room area")."""
+        lv = self.level(o)
+        total = math.fsum(self.typical_area(r) for r in self.room_ids() if self.level(r) == lv)
+        return self.typical_area(o) / total * self.contour(lv).area
+
+    def aspect_ratio(self, o: str) -> float:
+        x0, y0, x1, y1 = self.polygon(o).bounds
+        w, h = x1 - x0, y1 - y0
+        return max(w / h, h / w) if min(w, h) > 0 else math.inf
+
+    def convexity(self, o: str) -> float:
+        p = self.polygon(o)
+        return p.convex_hull.area / p.area if p.area > 0 else math.inf
+
+    def wall_count(self, o: str) -> float:
+        return float(len(_corners(self.polygon(o))))
+
+    def wall_lines(self, o: str) -> tuple[frozenset, frozenset]:
+        """Distinct x of vertical and y of horizontal walls of o (1 mm resolution)."""
+        def f():
+            pts = np.asarray(self.polygon(o).exterior.coords)
+            d = np.diff(pts, axis=0)
+            xs = np.round(pts[:-1, 0][np.abs(d[:, 0]) < 1e-9], 3)
+            ys = np.round(pts[:-1, 1][np.abs(d[:, 1]) < 1e-9], 3)
+            return frozenset(xs.tolist()), frozenset(ys.tolist())
+        return self.cached(o, "lines", f)
+
+    def exterior_length(self, o: str) -> float:
+        ring = self.contour(self.level(o)).exterior.buffer(1e-6)
+        return self.polygon(o).exterior.intersection(ring).length
+
+    def longest_exterior_wall(self, o: str) -> float:
+        ring = self.contour(self.level(o)).exterior.buffer(1e-6)
+        return max((sg.LineString(s).length for s in _segments(self.polygon(o))
+                    if ring.contains(sg.LineString(s))), default=0.0)
+
+    def exterior_corners(self, o: str) -> float:
+        c = self.contour(self.level(o))
+        pts = _corners(c)
+        if not len(pts):
+            return 0.0
+        ring = self.polygon(o).exterior
+        return float(sum(1 for p in pts if ring.distance(sg.Point(p)) < 1e-6))
+
+    def narrow_area(self, o: str, width: float) -> float:
+        """Area lost by opening the room with a `width` square (erode, then buffer back): the
+        parts of the room narrower than `width` (D.3 "narrow passages")."""
+        p = self.polygon(o)
+        r = width / 2 - 1e-4
+        opened = p.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
+        return max(0.0, p.area - opened.intersection(p).area)
+
+    def shared_wall(self, a: str, b: str) -> tuple[float, np.ndarray | None]:
+        """The longest straight wall a and b share: (length, midpoint)."""
+        common = self.polygon(a).exterior.intersection(self.polygon(b).exterior.buffer(1e-6))
+        lines = [g for g in getattr(common, "geoms", [common]) if g.length > 0]
+        best, mid = 0.0, None
+        for ln in lines:
+            for s in _segments_of_line(ln):
+                length = float(np.linalg.norm(s[1] - s[0]))
+                if length > best:
+                    best, mid = length, (s[0] + s[1]) / 2
+        return best, mid
+
+    def missing_doors(self, o: str) -> float:
+        """Graph neighbours of o on its storey that o shares no door-wide wall with."""
+        return float(sum(1 for n in self.neighbours(o)
+                         if self.shared_wall(o, n)[0] < MIN_DOOR_WALL - 1e-6))
+
+    def passage_point(self, a: str, b: str) -> np.ndarray:
+        """Where one walks from a into b: the middle of their longest shared wall."""
+        _, mid = self.shared_wall(a, b)
+        if mid is None:
+            ca, cb = self.center(a)[:2], self.center(b)[:2]
+            return (ca + cb) / 2
+        return mid
+
+    def entry_path(self, o: str) -> list[str]:
+        """Rooms from the storey's entry room to o along the room graph (fewest rooms)."""
+        import networkx as nx
+        lv = self.level(o)
+        g = self.storey_graph(lv)
+        return nx.shortest_path(g, self.entry_room(lv), o)
+
+    def storey_graph(self, level: int):
+        import networkx as nx
+        g = nx.Graph()
+        for r in self.room_ids():
+            if self.level(r) == level:
+                g.add_node(r)
+                g.add_edges_from((r, n) for n in self.neighbours(r))
+        return g
+
+    def path_directness(self, o: str) -> float:
+        """L1 distance from the storey's entry to o's centre divided by the L1 length of the walk
+        through the rooms of `entry_path` (1 = no detour; D.3 "shortest path to entrance")."""
+        path = self.entry_path(o)
+        pts = [np.asarray(self.entry_point(self.level(o)), float)[:2]]
+        pts += [self.passage_point(a, b) for a, b in zip(path, path[1:])]
+        pts.append(self.center(o)[:2])
+        pts = np.asarray(pts)
+        walk = float(np.abs(np.diff(pts, axis=0)).sum())
+        direct = float(np.abs(pts[-1] - pts[0]).sum())
+        return direct / walk if walk > 1e-9 else 1.0
+
+    def stair_coverage(self, o: str) -> float:
+        sp = self.stair_polygon()
+        if sp is None or sp.area <= 0:
+            return 1.0
+        return self.polygon(o).intersection(sp).area / sp.area
+
+    def stair_iou(self, o: str) -> float:
+        sp = self.stair_polygon()
+        if sp is None:
+            return 1.0
+        p = self.polygon(o)
+        inter = p.intersection(sp).area
+        return inter / (p.area + sp.area - inter)
+
+
+def _segments(poly: sg.Polygon) -> list[np.ndarray]:
+    pts = np.asarray(poly.exterior.coords)
+    return [pts[i:i + 2] for i in range(len(pts) - 1)]
+
+
+def _segments_of_line(line) -> list[np.ndarray]:
+    """Straight pieces of a (multi)line, merging collinear consecutive segments."""
+    pts = np.asarray(line.coords)
+    out, start = [], pts[0]
+    for i in range(1, len(pts) - 1):
+        d0, d1 = pts[i] - pts[i - 1], pts[i + 1] - pts[i]
+        if abs(d0[0] * d1[1] - d0[1] * d1[0]) > 1e-9:
+            out.append(np.array([start, pts[i]]))
+            start = pts[i]
+    out.append(np.array([start, pts[-1]]))
+    return out
+
+
+def _corners(poly: sg.Polygon) -> np.ndarray:
+    """Vertices of the outline where it turns by more than CORNER_TURN_DEG."""
+    pts = np.asarray(poly.exterior.coords)[:-1]
+    d0 = pts - np.roll(pts, 1, axis=0)
+    d1 = np.roll(pts, -1, axis=0) - pts
+    turn = np.abs(np.arctan2(d0[:, 0] * d1[:, 1] - d0[:, 1] * d1[:, 0], (d0 * d1).sum(axis=1)))
+    return pts[turn > math.radians(CORNER_TURN_DEG)]
+
+
+# --------------------------------------------------------------------------------------------
+# set helpers
+
+
+def rooms_of(rooms: ObjSet, *types: str) -> ObjSet:
+    """The members of `rooms` of any of `types` (room type names, e.g. "bedroom")."""
+    return reduce(lambda a, b: a | b, (rooms[str(getattr(t, "value", t))] for t in types))
+
+
+class OnStorey(ObjSet):
+    """The members of a set that lie on the storey (or storeys) of another set."""
+
+    def compute(self, ev, env):
+        objs, storeys = ev.get(self.children[0], env), ev.get(self.children[1], env)
+        view = ev.view
+        levels = {view.storey_level(s) for s in storeys}
+        return frozenset(o for o in objs if view.level(o) in levels)
+
+    def label(self):
+        return "on_storey"
+
+
+def on_storey(rooms: ObjSet, storey: ObjSet) -> ObjSet:
+    """The members of `rooms` on the storey `storey` (usually a loop variable over
+    ``scene()["storey"]``)."""
+    return OnStorey(rooms, storey)
+
+
+# --------------------------------------------------------------------------------------------
+# scalar terms
+
+
+class RoomTerm(GeometricTerm):
+    """Sum over the members of a set (typically one bound room) of a room-view measure, named
+    `measure` and called as ``view.<measure>(room, *args)``."""
+
+    #: measures that read other rooms or the staircase, and what else they watch
+    _DEPENDS: dict[str, Callable] = {
+        "missing_doors": lambda v, o: v.neighbours(o),
+        "path_directness": lambda v, o: [*v.entry_path(o), STAIR_PLACEHOLDER],
+        "stair_coverage": lambda v, o: [STAIR_PLACEHOLDER],
+        "stair_iou": lambda v, o: [STAIR_PLACEHOLDER],
+    }
+
+    def __init__(self, objs: ObjSet, measure: str, *args):
+        super().__init__(objs)
+        self.measure, self.args = measure, args
+
+    def compute(self, ev, env):
+        (s,) = self.members(ev, env)
+        view = ev.view
+        fn = getattr(view, self.measure)
+        dep = self._DEPENDS.get(self.measure)
+        total = []
+        for o in sorted(s):
+            if dep is not None:
+                ev.watch(dep(view, o))
+            total.append(float(fn(o, *self.args)))
+        return math.fsum(total)
+
+    def label(self):
+        return self.measure
+
+
+def _term(measure: str, doc: str):
+    def make(room: ObjSet, *args) -> Scalar:
+        return RoomTerm(room, measure, *args)
+    make.__name__ = measure
+    make.__doc__ = doc
+    return make
+
+
+room_area = _term("area", "Floor area of the room (m^2).")
+min_area = _term("min_area", "Smallest acceptable floor area of the room's type (m^2).")
+ideal_area = _term("ideal_area", "The room's typical-area share of its storey's area (m^2).")
+aspect_ratio = _term("aspect_ratio", "max(w/h, h/w) of the room's bounding box (1 = square).")
+convexity = _term("convexity", "Convex hull area over area (1 = convex).")
+wall_count = _term("wall_count", "Number of the room's corners, hence walls (4 = a rectangle).")
+exterior_length = _term("exterior_length", "Length (m) of the room's outline on the exterior.")
+longest_exterior_wall = _term("longest_exterior_wall",
+                              "Longest straight exterior wall of the room (m): room for a "
+                              "window or the front door.")
+exterior_corners = _term("exterior_corners", "Corners of the storey outline the room holds.")
+missing_doors = _term("missing_doors", "Graph neighbours the room shares no door-wide wall with.")
+path_directness = _term("path_directness",
+                        "Straight-line (L1) over walked distance from the storey's entry to the "
+                        "room through the room graph (1 = no detour).")
+stair_coverage = _term("stair_coverage", "Share of the staircase placeholder inside the room.")
+stair_iou = _term("stair_iou", "Intersection over union of the room and the staircase "
+                               "placeholder.")
+
+
+def narrow_area(room: ObjSet, width: float) -> Scalar:
+    """Area (m^2) of the parts of the room narrower than `width` m: what an erosion by width/2
+    followed by a buffer back removes (D.3 "narrow passages")."""
+    return RoomTerm(room, "narrow_area", float(width))
+
+
+class WallLines(GeometricTerm):
+    """Number of distinct x coordinates of vertical walls plus distinct y coordinates of
+    horizontal walls over all members (D.3 "collinearity": fewer means more aligned walls)."""
+
+    def compute(self, ev, env):
+        (s,) = self.members(ev, env)
+        xs, ys = set(), set()
+        for o in sorted(s):
+            a, b = ev.view.wall_lines(o)
+            xs |= a
+            ys |= b
+        return float(len(xs) + len(ys))
+
+
+def wall_lines(rooms: ObjSet) -> Scalar:
+    """Distinct wall lines among `rooms` (see `WallLines`)."""
+    return WallLines(rooms)
+
+
+class RatioMismatch(Scalar):
+    """max(a/b, b/a): 1 when a equals b, growing as they part (inf if either is 0)."""
+
+    def __init__(self, a: Scalar, b: Scalar):
+        super().__init__(a, b)
+
+    def compute(self, ev, env):
+        a, b = ev.get(self.children[0], env), ev.get(self.children[1], env)
+        if a <= 0 or b <= 0:
+            return 1e6
+        return max(a / b, b / a)
+
+    def label(self):
+        return "ratio_mismatch"
+
+
+def ratio_mismatch(a, b) -> Scalar:
+    """max(a/b, b/a) of two scalars (D.3's typical-area mismatch)."""
+    return RatioMismatch(_scalar(a), _scalar(b))
+
+
+__all__ = ["RoomView", "STOREY", "STAIR_PLACEHOLDER", "MIN_DOOR_WALL", "rooms_of", "on_storey",
+           "room_area", "min_area", "ideal_area", "aspect_ratio", "convexity", "wall_count",
+           "exterior_length", "longest_exterior_wall", "exterior_corners", "missing_doors",
+           "path_directness", "stair_coverage", "stair_iou", "narrow_area", "wall_lines",
+           "ratio_mismatch", "RoomTerm", "WallLines", "OnStorey", "RatioMismatch"]

@@ -1,0 +1,117 @@
+"""Assignment of a storey's rooms to its spaces (Infinigen Indoors, D.2).
+
+A depth-first search gives each room of the storey graph its own space so that:
+
+- graph neighbours share a straight wall long enough for a door (MIN_DOOR_WALL, full cells);
+- bedrooms, garages, balconies and the entrance room have a straight exterior wall of the same
+  length (for a window or the front door);
+- the staircase room's space overlaps the staircase placeholder, and other rooms' spaces do not
+  lose much to it;
+- every room's space is at least the minimum area of its type.
+
+Candidates are tried closest to the room's ideal area first (with a little noise), and the
+search gives up after a budget of expansions so a hopeless subdivision is dropped quickly.
+"""
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+
+from ..constraints.room_terms import MIN_DOOR_WALL
+from .grid import OUTSIDE, Grid, runs
+from .rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
+
+
+def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
+    """Per space: area (m^2, outside the placeholder), placeholder cells, longest straight
+    exterior wall (cells); per pair of spaces: longest straight shared wall (cells)."""
+    n = int(labels.max()) + 1
+    cell = grid.size ** 2
+    lab = labels[labels >= 0]
+    frac = grid.frac[labels >= 0]
+    st = stair[labels >= 0] if stair is not None else np.zeros(len(lab), bool)
+    area = np.bincount(lab, weights=frac * ~st, minlength=n) * cell
+    in_stair = np.bincount(lab, weights=st.astype(float), minlength=n)
+    cells = np.bincount(lab, minlength=n)
+    ext = np.zeros(n, np.int64)
+    door: dict[tuple[int, int], int] = {}
+    for r in runs(labels, grid.full):
+        if r.left == OUTSIDE or r.right == OUTSIDE:
+            s = r.right if r.left == OUTSIDE else r.left
+            ext[s] = max(ext[s], r.length)
+        else:
+            key = (min(r.left, r.right), max(r.left, r.right))
+            door[key] = max(door.get(key, 0), r.length)
+    return area, in_stair, cells, ext, door
+
+
+def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
+           labels: np.ndarray, stair: np.ndarray | None, ideal: dict[str, float],
+           needs_exterior: set[str], budget: int = 3000) -> dict[str, int] | None:
+    """Map every room of `graph` to a distinct space of `labels`, or None if the search finds
+    no assignment within `budget` expansions. `needs_exterior` names rooms beyond the exterior
+    types that need an outside wall (the entrance)."""
+    rooms = list(graph.nodes)
+    n_spaces = int(labels.max()) + 1
+    if n_spaces != len(rooms):
+        return None
+    area, in_stair, cells, ext, door = space_stats(grid, labels, stair)
+    k_door = int(math.ceil(MIN_DOOR_WALL / grid.size - 1e-9))
+    order = [r for r in rooms if room_type_of(r) == STAIRCASE]
+    order += [r for r in nx.bfs_tree(graph, entry) if r not in order]
+    order += [r for r in rooms if r not in order]
+
+    def candidates(r: str, used: set[int], placed: dict[str, int]) -> list[int]:
+        t = room_type_of(r)
+        out = []
+        for s in range(n_spaces):
+            if s in used:
+                continue
+            if t == STAIRCASE:
+                if in_stair[s] == 0:
+                    continue
+            elif in_stair[s] > 0.3 * cells[s]:
+                continue
+            if (t in EXTERIOR_TYPES or r in needs_exterior) and ext[s] < k_door:
+                continue
+            if t != STAIRCASE and area[s] < MIN_AREA[t]:
+                continue
+            if any(door.get((min(s, placed[nb]), max(s, placed[nb])), 0) < k_door
+                   for nb in graph.neighbors(r) if nb in placed):
+                continue
+            out.append(s)
+        noise = rng.normal(0.0, 0.25, len(out))
+        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise)]
+        return [s for _, s in sorted(zip(cost, out))]
+
+    expansions = 0
+    placed: dict[str, int] = {}
+    used: set[int] = set()
+
+    def dfs(i: int) -> bool:
+        nonlocal expansions
+        if i == len(order):
+            return True
+        r = order[i]
+        for s in candidates(r, used, placed):
+            expansions += 1
+            if expansions > budget:
+                return False
+            placed[r], _ = s, used.add(s)
+            if dfs(i + 1):
+                return True
+            del placed[r]
+            used.discard(s)
+        return False
+
+    return dict(placed) if dfs(0) else None
+
+
+def relabel(labels: np.ndarray, mapping: dict[str, int], rooms: list[str]) -> np.ndarray:
+    """Space labels -> room indices (position of each room in `rooms`)."""
+    lut = np.full(int(labels.max()) + 2, OUTSIDE, np.int64)
+    for i, r in enumerate(rooms):
+        lut[mapping[r]] = i
+    return np.where(labels >= 0, lut[labels], OUTSIDE)

@@ -1,0 +1,122 @@
+"""`indoorgen floorplan`: generate (or read) a home's floorplan and write `plan.png`,
+`floorplan.json` and `architecture.usda` into a directory, atomically."""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from ..errors import ConfigError, OutputError
+
+
+def add_floorplan_parser(subparsers) -> None:
+    """Register the `floorplan` subcommand on an argparse subparsers object."""
+    p = subparsers.add_parser(
+        "floorplan", help="generate a multi-room, multi-storey home's floorplan and architecture",
+        description="Writes plan.png, floorplan.json and architecture.usda into --out.")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--floors", type=int, default=1, help="storeys, 1 to 3 (default 1)")
+    p.add_argument("--rooms", default=None,
+                   help="fixed room counts for the whole home, e.g. bedroom=2,bathroom=1")
+    p.add_argument("--area", type=float, default=None,
+                   help="ground-floor area in m^2 (default: from the rooms' typical areas)")
+    p.add_argument("--contour", default=None,
+                   help="JSON file with the ground-floor outline: [[x, y], ...]")
+    p.add_argument("--plan", default=None,
+                   help="a floorplan.json to solidify and draw instead of generating one")
+    p.add_argument("--steps", type=int, default=None, help="annealing steps per storey")
+    p.add_argument("--out", default=None, help="output directory (default ./floorplan_SEED)")
+    p.add_argument("-q", "--quiet", action="store_true")
+    p.set_defaults(func=run_floorplan)
+
+
+def _read_contour(path: str) -> list:
+    try:
+        data = json.loads(Path(path).read_text())
+    except FileNotFoundError:
+        raise ConfigError(f"--contour file {path!r} does not exist") from None
+    except (OSError, ValueError) as e:
+        raise ConfigError(f"--contour file {path!r} is not readable JSON: {e}") from None
+    if isinstance(data, dict):
+        data = data.get("contour", data.get("polygon"))
+    if not isinstance(data, list):
+        raise ConfigError(f"--contour file {path!r} must hold a list of [x, y] points")
+    return data
+
+
+def _check_out(out: Path) -> None:
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"--out {out} exists and is not a directory")
+    probe = out.resolve().parent
+    while not probe.exists():
+        probe = probe.parent
+    if not os.access(probe, os.W_OK | os.X_OK):
+        raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
+
+
+def run_floorplan(args) -> int:
+    """The command: validate arguments, generate or read, solidify, write, report one line."""
+    from .draw import draw_floorplan
+    from .generate import FloorplanConfig, generate_floorplan, storey_pitch
+    from .io import read_floorplan, write_floorplan
+    from .solidify import solidify
+    from .solve import AnnealConfig
+    from .usd import write_architecture_usd
+    from .walls import WallThickness
+
+    t0 = time.perf_counter()
+    if args.seed < 0:
+        raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    if not 1 <= args.floors <= 3:
+        raise ConfigError(f"--floors {args.floors} is out of range; a home has 1 to 3 storeys")
+    if args.steps is not None and args.steps < 0:
+        raise ConfigError(f"--steps must be >= 0, got {args.steps}")
+    if args.area is not None and not args.area > 0:
+        raise ConfigError(f"--area must be a positive number of m^2, got {args.area}")
+    out = Path(args.out or f"floorplan_{args.seed}")
+    _check_out(out)
+    cfg = FloorplanConfig(floors=args.floors, rooms=args.rooms, area=args.area,
+                          contour=_read_contour(args.contour) if args.contour else None)
+    if args.steps is not None:
+        cfg.anneal = AnnealConfig(steps_per_storey=args.steps)
+    if args.plan:
+        fp = read_floorplan(args.plan)
+        pitch = None
+    else:
+        fp = generate_floorplan(args.seed, cfg)
+        pitch = storey_pitch(cfg)
+    walls = WallThickness(cfg.interior_wall, cfg.exterior_wall)
+    arch = solidify(fp, walls, pitch)
+    parent = out.resolve().parent
+    parent.mkdir(parents=True, exist_ok=True)
+    try:
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=parent))
+    except OSError as e:
+        raise OutputError(f"cannot write to {out}: {e.strerror}") from None
+    try:
+        write_floorplan(fp, tmp / "floorplan.json")
+        draw_floorplan(fp, tmp / "plan.png", walls,
+                       title=f"floorplan  seed {args.seed}" if not args.plan else args.plan)
+        write_architecture_usd(arch, tmp / "architecture.usda")
+        if out.exists():
+            old = out.with_name(f".{out.name}.old-{os.getpid()}")
+            out.rename(old)
+            tmp.rename(out)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            tmp.rename(out)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    if not args.quiet:
+        n_rooms = sum(len(s.rooms) for s in fp.storeys)
+        msg = f"{out}: {len(fp.storeys)} storey(s), {n_rooms} rooms"
+        a = fp.info.get("anneal")
+        if a:
+            msg += f", objective {a['objective_start']:.3f} -> {a['objective_end']:.3f}"
+        print(f"{msg}, {time.perf_counter() - t0:.2f} s", file=sys.stdout)
+    return 0

@@ -1,0 +1,269 @@
+"""The floorplan stage end to end: seed (+ config) -> `Floorplan`.
+
+room graph -> outlines and staircase placeholder -> per storey: Mondrian subdivision, merging
+and room assignment, retried until the hard rules hold -> annealing under the floorplan program
+-> doors, open connections, front door, windows and stairs.
+
+All randomness comes from child streams of the seed (`rng.stream(seed, "floorplan", ...)`),
+addressed by purpose and attempt number, so the result is a pure function of seed and config.
+"""
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+import shapely.geometry as sg
+
+from ..constraints.expressions import Problem
+from ..errors import ConfigError, InvalidGeometryError
+from ..rng import stream
+from .assign import assign, relabel
+from .contour import GRID, make_contour, upper_contour, user_contour
+from .graph import HomeGraph, graph_from_spec, sample_home_graph
+from .grid import OUTSIDE, make_grid
+from .openings import place_doors, place_entrance, place_stairs, place_windows
+from .plan import Floorplan, RoomSpec, Storey
+from .rooms import MIN_AREA, TYPICAL_AREA, parse_room_counts, room_type_of
+from .rules import room_problems
+from .solve import AnnealConfig, AnnealStats, anneal
+from .subdivide import merge, mondrian
+from .view import GridPlan
+
+log = logging.getLogger(__name__)
+
+#: The staircase placeholder: two 1 m lanes, 5 m long (a 4 m flight plus landings), in cells.
+STAIR_CELLS = (4, 10)
+#: Attempts at subdividing and assigning one storey, and at the whole home.
+STOREY_ATTEMPTS = 40
+HOME_ATTEMPTS = 6
+
+
+@dataclass
+class FloorplanConfig:
+    """What to generate.
+
+    `floors`: storeys (1-3). `rooms`: fixed counts of room types for the whole home, as a dict or
+    ``"bedroom=2,bathroom=1"``. `area`: ground-floor area in m^2 (default: the rooms' typical
+    areas). `contour`: the ground-floor outline as [[x, y], ...] instead. `graph`: a fixed room
+    graph (`HomeGraph` or its JSON form). `program`: a floorplan constraint program (a callable
+    returning a `Problem`; default `programs.floorplan.floorplan`).
+    """
+
+    floors: int = 1
+    rooms: dict[str, int] | str | None = None
+    area: float | None = None
+    contour: list | None = None
+    graph: HomeGraph | dict | None = None
+    height: float = 2.8
+    slab: float = 0.1
+    interior_wall: float = 0.12
+    exterior_wall: float = 0.24
+    open_prob: float = 0.5
+    program: Callable[[], Problem] | None = None
+    anneal: AnnealConfig = field(default_factory=AnnealConfig)
+
+    def to_json(self) -> dict:
+        return {"floors": self.floors, "rooms": parse_room_counts(self.rooms),
+                "area": self.area, "contour": self.contour, "height": self.height,
+                "slab": self.slab, "interior_wall": self.interior_wall,
+                "exterior_wall": self.exterior_wall, "open_prob": self.open_prob,
+                "program": getattr(self.program, "__name__", None),
+                "steps_per_storey": self.anneal.steps_per_storey}
+
+
+def storey_pitch(cfg: FloorplanConfig) -> float:
+    """Floor-to-floor distance: ceiling slab + floor slab between storeys."""
+    return cfg.height + 2 * cfg.slab
+
+
+def _needed_area(names: list[str]) -> float:
+    return math.fsum(MIN_AREA[room_type_of(n)] for n in names)
+
+
+def _typical(names: list[str]) -> float:
+    return math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
+
+
+def _place_stair(rng: np.random.Generator, grid, storeys_needed: int
+                 ) -> tuple[int, int, int, int] | None:
+    """A random placeholder rectangle of full cells, one cell clear of the outline."""
+    h, w = STAIR_CELLS if rng.random() < 0.5 else STAIR_CELLS[::-1]
+    full = grid.full
+    ny, nx = full.shape
+    cands = []
+    for y in range(1, ny - h):
+        for x in range(1, nx - w):
+            if full[y - 1:y + h + 1, x - 1:x + w + 1].all():
+                cands.append((y, x, y + h, x + w))
+    if not cands:
+        h, w = w, h
+        for y in range(1, ny - h):
+            for x in range(1, nx - w):
+                if full[y - 1:y + h + 1, x - 1:x + w + 1].all():
+                    cands.append((y, x, y + h, x + w))
+    if not cands:
+        return None
+    return cands[int(rng.integers(len(cands)))]
+
+
+class _Failed(Exception):
+    """One home attempt did not work out (the next attempt draws new randomness)."""
+
+
+def _init_storey(seed: int, attempt: int, plan: GridPlan, k: int) -> bool:
+    """Subdivide storey k and assign its rooms until the hard rules hold."""
+    grid = plan.grids[k]
+    names = plan.names[k]
+    g = plan.graph.storeys[k]
+    entry = plan.graph.storey_entry(k)
+    stair = plan.stair_mask()
+    ideal = {n: plan.ideal_area(n) for n in names}
+    need_ext = {plan.graph.entrance} if k == 0 else set()
+    for t in range(STOREY_ATTEMPTS):
+        rng = stream(seed, "floorplan", "init", attempt, k, t)
+        spaces = mondrian(rng, grid, int(math.ceil(1.5 * len(names))))
+        if spaces.max() + 1 < len(names):
+            continue
+        spaces = merge(rng, spaces, len(names))
+        mapping = assign(rng, g, entry, grid, spaces, stair, ideal, need_ext)
+        if mapping is None:
+            continue
+        labels = relabel(spaces, mapping, names)
+        if stair is not None:
+            labels[stair & (labels != OUTSIDE)] = names.index(plan.graph.stairs[k])
+        plan.labels[k] = labels
+        plan.invalidate(names)
+        problems = [p for n in names for p in room_problems(plan, n)]
+        if not problems:
+            log.debug("storey %d initialised after %d attempt(s)", k, t + 1)
+            return True
+        log.debug("storey %d attempt %d: %s", k, t, problems[:3])
+    return False
+
+
+def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
+    """Ground outline, staircase placeholder and upper outlines for one attempt."""
+    rng = stream(seed, "floorplan", "contour", attempt)
+    names = [hg.rooms(k) for k in range(hg.n_storeys)]
+    need = max(_needed_area(n) for n in names)
+    if cfg.contour is not None:
+        ground = user_contour(cfg.contour)
+    else:
+        area = cfg.area if cfg.area is not None else \
+            max(_typical(n) for n in names) * float(rng.uniform(1.0, 1.15))
+        ground = make_contour(rng, float(area))
+    if ground.area < need / 0.8:
+        where = "--contour" if cfg.contour is not None else "--area"
+        raise InvalidGeometryError(
+            f"{where} gives {ground.area:.0f} m^2 per storey, but the rooms "
+            f"({', '.join(sorted(set(room_type_of(r) for r in sum(names, []))))}) need at least "
+            f"{need / 0.8:.0f} m^2 on one storey; give a larger area or fewer rooms")
+    grid0 = make_grid(ground)
+    rect, stair_poly = None, None
+    if hg.n_storeys > 1:
+        rect = _place_stair(rng, grid0, hg.n_storeys)
+        if rect is None:
+            raise InvalidGeometryError(
+                "the outline has no room for a 2 x 5 m staircase; give a larger area or contour")
+        iy0, ix0, iy1, ix1 = rect
+        (x0, y0), (x1, y1) = grid0.to_world(ix0, iy0), grid0.to_world(ix1, iy1)
+        stair_poly = sg.box(x0, y0, x1, y1)
+    contours = [ground]
+    for k in range(1, hg.n_storeys):
+        min_area = max(_needed_area(names[k]) * 1.4, _typical(names[k]) * 0.85)
+        contours.append(upper_contour(rng, contours[-1], stair_poly, min_area))
+    frame = (grid0.origin, grid0.shape)
+    grids = [grid0] + [make_grid(c, frame) for c in contours[1:]]
+    return grids, rect
+
+
+def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, int]) -> GridPlan:
+    if cfg.graph is not None:
+        hg = cfg.graph if isinstance(cfg.graph, HomeGraph) else graph_from_spec(cfg.graph)
+    else:
+        hg = sample_home_graph(lambda a: stream(seed, "floorplan", "graph", attempt, a),
+                               cfg.floors, counts)
+    grids, rect = _contours(seed, attempt, cfg, hg)
+    plan = GridPlan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect)
+    for k in range(hg.n_storeys):
+        if not _init_storey(seed, attempt, plan, k):
+            raise _Failed(f"storey {k}: no subdivision satisfies the room graph "
+                          f"({len(plan.names[k])} rooms in {grids[k].contour.area:.0f} m^2)")
+    return plan
+
+
+def build_plan(seed: int, cfg: FloorplanConfig) -> GridPlan:
+    """An initial plan satisfying the hard rules (before annealing)."""
+    if isinstance(cfg.floors, bool) or not isinstance(cfg.floors, (int, np.integer)) or \
+            not 1 <= cfg.floors <= 3:
+        raise ConfigError(f"--floors {cfg.floors} is out of range; a home has 1 to 3 storeys")
+    if cfg.area is not None and not (cfg.area > 0 and math.isfinite(cfg.area)):
+        raise ConfigError(f"--area {cfg.area} must be a positive number of m^2")
+    if not 2.2 <= cfg.height <= 5.0:
+        raise ConfigError(f"storey height {cfg.height} m is out of range [2.2, 5.0]")
+    counts = parse_room_counts(cfg.rooms)
+    user_fixed = bool(counts) or cfg.area is not None or cfg.contour is not None or \
+        cfg.graph is not None
+    reason = ""
+    for attempt in range(HOME_ATTEMPTS):
+        try:
+            return _attempt(seed, attempt, cfg, counts)
+        except _Failed as e:
+            reason = str(e)
+            log.debug("home attempt %d failed: %s", attempt, e)
+    what = "the given rooms, area or contour" if user_fixed else "this seed"
+    raise InvalidGeometryError(f"cannot lay out {what}: {reason}; try a larger --area or "
+                               "fewer rooms")
+
+
+def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floorplan:
+    """Generate a home's floorplan from `seed`. Same seed + config + version => same plan."""
+    from ..programs.floorplan import floorplan as default_program
+    cfg = config or FloorplanConfig()
+    t0 = time.perf_counter()
+    plan = build_plan(seed, cfg)
+    t1 = time.perf_counter()
+    program = cfg.program or default_program
+    problem = program()
+    if not isinstance(problem, Problem):
+        raise ConfigError(f"floorplan program {getattr(program, '__name__', program)!r} must "
+                          f"return a Problem, got {type(problem).__name__}")
+    acfg = cfg.anneal
+    if cfg.program is None:  # the default program's constraints are the solver's own rules
+        acfg = dataclasses.replace(acfg, constraints_at_ends_only=True)
+    stats = anneal(plan, problem, stream(seed, "floorplan", "anneal"), acfg)
+    t2 = time.perf_counter()
+    fp = to_floorplan(plan, cfg, stream(seed, "floorplan", "openings"))
+    fp.info.update({"seed": seed, "config": cfg.to_json(), "graph": plan.graph.to_json(),
+                    "anneal": stats.to_json(), "stats": stats,
+                    "timings_s": {"init": round(t1 - t0, 4), "anneal": round(t2 - t1, 4),
+                                  "openings": round(time.perf_counter() - t2, 4)}})
+    return fp
+
+
+def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator) -> Floorplan:
+    """The solved plan as data: room polygons, doors, openings, windows, stairs, entrance."""
+    pitch = storey_pitch(cfg)
+    doors, openings = place_doors(plan, rng, cfg.interior_wall, cfg.open_prob, cfg.height)
+    entrance = place_entrance(plan)
+    stairs = place_stairs(plan)
+    windows = place_windows(plan, rng, cfg.exterior_wall, entrance, plan.stair_polygon())
+    storeys = []
+    for k, names in enumerate(plan.names):
+        rooms = []
+        for n in names:
+            pts = np.asarray(plan.polygon(n).exterior.coords)[:-1]
+            rooms.append(RoomSpec(n, room_type_of(n),
+                                  [(round(float(x), 6), round(float(y), 6)) for x, y in pts]))
+        storeys.append(Storey(k, round(k * pitch, 6), cfg.height, rooms, doors[k], windows[k],
+                              openings[k]))
+    return Floorplan(storeys, stairs, entrance)
+
+
+__all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan",
+           "room_problems", "storey_pitch", "GRID", "AnnealStats"]

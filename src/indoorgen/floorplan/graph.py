@@ -1,0 +1,368 @@
+"""Room graphs: which rooms a home has on each storey and which of them connect.
+
+A probabilistic grammar (Infinigen Indoors, Tables 6 and 7) grows each storey's graph from a
+living room: every room, once added, draws its children by type. Then:
+
+- hallways are shared: the other children of a room that has hallways are redistributed among
+  them (with probability `HALLWAY_SHARE`), so a hallway serves several siblings;
+- homes with 2-3 storeys get one staircase room per storey, hung on a hallway (preferring those
+  with few children) or the living room; stairs join consecutive staircase rooms;
+- the ground floor gets an entrance: a hallway if there is one, else the living room;
+- graphs that are not planar or break bathroom privacy are rejected (see `privacy_problems`);
+- user room counts are met by repairing a sampled graph (adding rooms under grammar-valid
+  parents, removing leaves), so unusual counts do not need millions of rejections.
+
+A `HomeGraph` holds one networkx Graph per storey (nodes are room names ``<type>_<k>``, unique
+across the home, with attributes ``type`` and ``level``) plus the entrance and staircase rooms.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from typing import Callable
+
+import networkx as nx
+import numpy as np
+
+from ..errors import ConfigError
+from .rooms import (BALCONY, BATHROOM, BEDROOM, CLOSET, DINING, GARAGE, HALLWAY, KITCHEN, LIVING,
+                    STAIRCASE, UTILITY, check_room_type, room_type_of)
+
+log = logging.getLogger(__name__)
+
+#: Children per parent type on the ground floor (Table 6). A float is a Bernoulli probability of
+#: one child; a tuple is a categorical over 0, 1, 2... children. The paper prints the bedroom row
+#: as Cat(0, .3, .3, .3, 1); we read the last weight as .1, which makes it sum to one.
+GROUND_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
+    LIVING: {LIVING: 0.1, BEDROOM: (0.0, 0.3, 0.3, 0.3, 0.1), CLOSET: 0.1, BATHROOM: 0.4,
+             GARAGE: 0.4, BALCONY: 0.2, DINING: 0.8, UTILITY: 0.2, HALLWAY: (0.5, 0.4, 0.1)},
+    KITCHEN: {GARAGE: 0.1, UTILITY: 0.2},
+    BEDROOM: {BATHROOM: 0.3, CLOSET: 0.5},
+    BATHROOM: {CLOSET: 0.2},
+    DINING: {KITCHEN: 1.0, HALLWAY: 0.2},
+}
+#: Children per parent type on upper floors (Table 7; categoricals are normalised).
+UPPER_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
+    LIVING: {BEDROOM: (0.0, 0.4, 0.5, 0.2), CLOSET: 0.2, BATHROOM: 0.4, BALCONY: 0.4,
+             UTILITY: 0.2, HALLWAY: (0.0, 0.5, 0.5)},
+    BEDROOM: {BATHROOM: 0.3, CLOSET: 0.5},
+    BATHROOM: {CLOSET: 0.2},
+    BALCONY: {UTILITY: 0.4, HALLWAY: 0.1},
+}
+#: Probability that a sibling of a hallway is moved from the common parent onto a hallway.
+HALLWAY_SHARE = 0.6
+#: Graphs with more rooms than this on one storey are resampled (unless counts are fixed).
+MAX_ROOMS_PER_STOREY = 13
+#: Where a room of each type may be attached when a count has to be raised, best first.
+PARENTS: dict[str, tuple[str, ...]] = {
+    LIVING: (LIVING,), DINING: (LIVING,), KITCHEN: (DINING, LIVING), BEDROOM: (HALLWAY, LIVING),
+    BATHROOM: (HALLWAY, LIVING), CLOSET: (BEDROOM, HALLWAY, LIVING), HALLWAY: (LIVING, DINING),
+    GARAGE: (KITCHEN, LIVING), BALCONY: (LIVING, BEDROOM), UTILITY: (KITCHEN, HALLWAY, LIVING),
+}
+#: Types that only live on the ground floor.
+GROUND_ONLY = frozenset({KITCHEN, DINING, GARAGE})
+MAX_STOREYS = 3
+
+
+@dataclass
+class HomeGraph:
+    """The room graph of a home: `storeys[k]` is storey k's graph; `entrance` the ground-floor
+    room with the front door; `stairs[k]` the staircase room of storey k (empty for one
+    storey)."""
+
+    storeys: list[nx.Graph]
+    entrance: str
+    stairs: list[str] = field(default_factory=list)
+
+    @property
+    def n_storeys(self) -> int:
+        return len(self.storeys)
+
+    def rooms(self, level: int | None = None) -> list[str]:
+        """Room names (of one storey, or all), in a stable order."""
+        levels = range(self.n_storeys) if level is None else [level]
+        return [n for k in levels for n in self.storeys[k].nodes]
+
+    def type_counts(self) -> dict[str, int]:
+        out: dict[str, int] = {}
+        for n in self.rooms():
+            out[room_type_of(n)] = out.get(room_type_of(n), 0) + 1
+        return out
+
+    def storey_entry(self, level: int) -> str:
+        """Where one arrives on storey `level`: the entrance room or the staircase room."""
+        return self.entrance if level == 0 else self.stairs[level]
+
+    def home(self) -> nx.Graph:
+        """All storeys in one graph, consecutive staircase rooms joined by 'stair' edges."""
+        g = nx.union_all(self.storeys) if self.storeys else nx.Graph()
+        for a, b in zip(self.stairs, self.stairs[1:]):
+            g.add_edge(a, b, kind="stair")
+        return g
+
+    def to_json(self) -> dict:
+        return {"storeys": [{"rooms": list(g.nodes), "edges": [sorted(e) for e in g.edges]}
+                            for g in self.storeys],
+                "entrance": self.entrance, "stairs": list(self.stairs)}
+
+
+# --------------------------------------------------------------------------------------------
+# sampling
+
+
+def _draw_count(rng: np.random.Generator, spec: float | tuple[float, ...]) -> int:
+    if isinstance(spec, tuple):
+        p = np.asarray(spec, float)
+        return int(rng.choice(len(p), p=p / p.sum()))
+    return int(rng.random() < spec)
+
+
+def grow_storey(rng: np.random.Generator, level: int) -> tuple[nx.Graph, dict[int, int]]:
+    """Grow one storey's tree by the grammar, breadth first from a living room.
+
+    Returns a graph on integer nodes (attribute ``type``) and the parent of each node."""
+    table = GROUND_CHILDREN if level == 0 else UPPER_CHILDREN
+    g = nx.Graph()
+    g.add_node(0, type=LIVING)
+    parent: dict[int, int] = {}
+    queue = [0]
+    while queue and g.number_of_nodes() < 3 * MAX_ROOMS_PER_STOREY:
+        i = queue.pop(0)
+        for child_type, spec in table.get(g.nodes[i]["type"], {}).items():
+            for _ in range(_draw_count(rng, spec)):
+                j = g.number_of_nodes()
+                g.add_node(j, type=child_type)
+                g.add_edge(i, j)
+                parent[j] = i
+                queue.append(j)
+    _share_hallways(rng, g, parent)
+    return g, parent
+
+
+def _share_hallways(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int]) -> None:
+    """Move siblings of hallways from their common parent onto one of the hallways."""
+    for p in sorted(g.nodes):
+        kids = sorted(c for c, q in parent.items() if q == p)
+        halls = [c for c in kids if g.nodes[c]["type"] == HALLWAY]
+        if not halls:
+            continue
+        for c in kids:
+            if g.nodes[c]["type"] in (HALLWAY, KITCHEN) or rng.random() >= HALLWAY_SHARE:
+                continue
+            h = halls[int(rng.integers(len(halls)))]
+            g.remove_edge(p, c)
+            g.add_edge(h, c)
+            parent[c] = h
+
+
+def _hang(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int], room_type: str,
+          hosts: list[int]) -> int:
+    """Add a room of `room_type` under one of `hosts`, preferring hosts with few children."""
+    w = np.array([1.0 / (1 + sum(1 for q in parent.values() if q == h)) for h in hosts])
+    host = hosts[int(rng.choice(len(hosts), p=w / w.sum()))]
+    j = max(g.nodes) + 1
+    g.add_node(j, type=room_type)
+    g.add_edge(host, j)
+    parent[j] = host
+    return j
+
+
+def _of_type(g: nx.Graph, *types: str) -> list[int]:
+    return sorted(n for n in g.nodes if g.nodes[n]["type"] in types)
+
+
+def _repair_counts(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]],
+                   counts: dict[str, int]) -> bool:
+    """Add or remove rooms until the home has `counts[t]` rooms of each given type t. Returns
+    False if a count cannot be met (e.g. no valid parent exists)."""
+    for t in sorted(counts):
+        want = counts[t]
+        have = sum(len(_of_type(g, t)) for g, _ in trees)
+        guard = 0
+        while have > want and guard < 64:
+            guard += 1
+            cands = [(k, n) for k, (g, par) in enumerate(trees) for n in _of_type(g, t)
+                     if n != 0 and n in par]
+            if not cands:
+                return False
+            leaves = [(k, n) for k, n in cands if trees[k][0].degree(n) == 1]
+            k, n = (leaves or cands)[int(rng.integers(len(leaves or cands)))]
+            g, par = trees[k]
+            up = par.pop(n)
+            for c in sorted(g.neighbors(n)):
+                if par.get(c) == n:
+                    g.add_edge(up, c)
+                    par[c] = up
+            g.remove_node(n)
+            have -= 1
+        while have < want and guard < 128:
+            guard += 1
+            levels = [0] if t in GROUND_ONLY else list(range(len(trees)))
+            if t == BEDROOM and len(trees) > 1:
+                levels = levels[1:] + levels[1:] + [0]
+            k = levels[int(rng.integers(len(levels)))]
+            g, par = trees[k]
+            for ptype in PARENTS[t]:
+                hosts = _of_type(g, ptype)
+                if hosts:
+                    _hang(rng, g, par, t, hosts)
+                    have += 1
+                    break
+            else:
+                if all(not any(_of_type(trees[k][0], p) for p in PARENTS[t]) for k in levels):
+                    return False
+    return True
+
+
+def privacy_problems(home: nx.Graph) -> list[str]:
+    """Bathroom privacy (D.1) on a whole-home graph; an empty list when respected.
+
+    - an en-suite bathroom (one next to a bedroom) opens onto that bedroom and closets only;
+    - every bedroom reaches a bathroom without walking through another bedroom.
+    """
+    out = []
+    types = {n: room_type_of(n) for n in home.nodes}
+    for b in sorted(n for n, t in types.items() if t == BATHROOM):
+        beds = [n for n in home.neighbors(b) if types[n] == BEDROOM]
+        others = [n for n in home.neighbors(b) if types[n] not in (BEDROOM, CLOSET)]
+        if len(beds) > 1 or (beds and others):
+            out.append(f"{b} is shared by {sorted(beds + others)}")
+    baths = {n for n, t in types.items() if t == BATHROOM}
+    for bed in sorted(n for n, t in types.items() if t == BEDROOM):
+        allowed = [n for n in home.nodes if types[n] != BEDROOM or n == bed]
+        reach = nx.node_connected_component(home.subgraph(allowed), bed)
+        if baths and not reach & baths:
+            out.append(f"{bed} reaches no bathroom without crossing another bedroom")
+    return out
+
+
+def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[str]:
+    """Why `hg` is not an acceptable home graph (empty if it is): planarity, connectivity,
+    a living room and a bathroom per storey (unless counts are fixed), privacy, counts."""
+    out = []
+    home = hg.home()
+    if not nx.is_connected(home):
+        out.append("the rooms are not all connected")
+    for k, g in enumerate(hg.storeys):
+        if not nx.check_planarity(g)[0]:
+            out.append(f"storey {k} graph is not planar")
+        if not any(room_type_of(n) == LIVING for n in g.nodes):
+            out.append(f"storey {k} has no living room")
+        if counts is None and not any(room_type_of(n) == BATHROOM for n in g.nodes):
+            out.append(f"storey {k} has no bathroom")
+    if not any(room_type_of(n) == BATHROOM for n in home.nodes) and (counts or {}).get(BATHROOM, 1):
+        out.append("the home has no bathroom")
+    out += privacy_problems(home)
+    if counts:
+        have = hg.type_counts()
+        for t, n in sorted(counts.items()):
+            if have.get(t, 0) != n:
+                out.append(f"{have.get(t, 0)} {t} rooms, wanted {n}")
+    return out
+
+
+def _finish(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]]) -> HomeGraph:
+    """Add staircases and the entrance, then give nodes their home-wide names."""
+    n = len(trees)
+    stair_nodes, entrance = [], 0
+    for k, (g, par) in enumerate(trees):
+        if n > 1:
+            hosts = _of_type(g, HALLWAY) or _of_type(g, LIVING)[:1]
+            stair_nodes.append(_hang(rng, g, par, STAIRCASE, hosts))
+        if k == 0:
+            halls = [h for h in _of_type(g, HALLWAY) if h not in stair_nodes]
+            entrance = halls[int(rng.integers(len(halls)))] if halls and rng.random() < 0.6 else 0
+    counters: dict[str, int] = {}
+    storeys, names = [], []
+    for k, (g, _) in enumerate(trees):
+        mapping = {}
+        for node in nx.bfs_tree(g, 0):
+            t = g.nodes[node]["type"]
+            mapping[node] = f"{t}_{counters.get(t, 0)}"
+            counters[t] = counters.get(t, 0) + 1
+        h = nx.Graph()
+        for node in nx.bfs_tree(g, 0):
+            h.add_node(mapping[node], type=g.nodes[node]["type"], level=k)
+        h.add_edges_from(sorted((mapping[a], mapping[b]) for a, b in g.edges))
+        storeys.append(h)
+        names.append(mapping)
+    stairs = [names[k][s] for k, s in enumerate(stair_nodes)]
+    return HomeGraph(storeys, names[0][entrance], stairs)
+
+
+def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: int = 1,
+                      counts: dict[str, int] | None = None, max_attempts: int = 400) -> HomeGraph:
+    """Sample a home graph of `n_storeys` storeys, optionally with fixed counts of room types.
+
+    `rng_for(attempt)` gives the random stream of each attempt, so a rejected attempt never
+    shifts the randomness of the next. Raises ConfigError if no acceptable graph is found."""
+    if not 1 <= n_storeys <= MAX_STOREYS:
+        raise ConfigError(f"--floors {n_storeys} is out of range; a home has 1 to {MAX_STOREYS} "
+                          "storeys")
+    counts = {check_room_type(t): int(c) for t, c in (counts or {}).items()}
+    if STAIRCASE in counts and counts[STAIRCASE] != (n_storeys if n_storeys > 1 else 0):
+        raise ConfigError(f"staircase_room={counts[STAIRCASE]} conflicts with {n_storeys} "
+                          f"storey(s); staircase rooms follow from the number of floors "
+                          f"(one per storey when there are 2 or more)")
+    counts.pop(STAIRCASE, None)
+    if LIVING in counts and counts[LIVING] < n_storeys:
+        raise ConfigError(f"living_room={counts[LIVING]} is too few for {n_storeys} storeys; "
+                          "every storey grows from a living room")
+    last = []
+    for attempt in range(max_attempts):
+        rng = rng_for(attempt)
+        trees = [grow_storey(rng, k) for k in range(n_storeys)]
+        if counts and not _repair_counts(rng, trees, counts):
+            last = ["cannot attach the requested rooms"]
+            continue
+        if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY for g, _ in trees):
+            continue
+        hg = _finish(rng, trees)
+        last = graph_problems(hg, counts or None)
+        if not last:
+            log.debug("home graph after %d attempt(s): %s", attempt + 1, hg.to_json())
+            return hg
+    raise ConfigError(f"no valid room graph for {n_storeys} storey(s) with rooms {counts}: "
+                      f"{'; '.join(last[:3])}")
+
+
+def graph_from_spec(spec: dict) -> HomeGraph:
+    """A user-fixed home graph from ``{"storeys": [{"rooms": [...], "edges": [[a, b], ...]}],
+    "entrance": name, "stairs": [names]}`` (the form `HomeGraph.to_json` writes). Room names
+    must be ``<type>_<k>``. Raises ConfigError naming what is wrong."""
+    try:
+        storeys_spec = spec["storeys"]
+        entrance = spec.get("entrance")
+    except (TypeError, KeyError):
+        raise ConfigError('a room graph must be {"storeys": [{"rooms": [...], "edges": [...]}], '
+                          '"entrance": ROOM}') from None
+    storeys, seen = [], set()
+    for k, s in enumerate(storeys_spec):
+        g = nx.Graph()
+        for name in s.get("rooms", []):
+            t = check_room_type(room_type_of(name))
+            if name in seen:
+                raise ConfigError(f"room name {name!r} is used twice in the graph")
+            seen.add(name)
+            g.add_node(name, type=t, level=k)
+        for a, b in s.get("edges", []):
+            if a not in g or b not in g:
+                raise ConfigError(f"graph edge {a!r}-{b!r} names a room not on storey {k}")
+            g.add_edge(a, b)
+        storeys.append(g)
+    if not 1 <= len(storeys) <= MAX_STOREYS:
+        raise ConfigError(f"the graph has {len(storeys)} storeys; 1 to {MAX_STOREYS} are allowed")
+    stairs = list(spec.get("stairs") or [])
+    if len(storeys) > 1 and len(stairs) != len(storeys):
+        stairs = [next((n for n in g.nodes if room_type_of(n) == STAIRCASE), "") for g in storeys]
+        if not all(stairs):
+            raise ConfigError("a graph with several storeys needs a staircase_room on each storey")
+    if entrance is None:
+        entrance = next(iter(storeys[0].nodes))
+    if entrance not in storeys[0]:
+        raise ConfigError(f"entrance {entrance!r} is not a room on the ground floor")
+    hg = HomeGraph(storeys, entrance, stairs if len(storeys) > 1 else [])
+    problems = [p for p in graph_problems(hg, {}) if "no bathroom" not in p]
+    if problems:
+        raise ConfigError(f"the given room graph is not usable: {'; '.join(problems[:3])}")
+    return hg

@@ -1,0 +1,39 @@
+"""The hard rules every generated floorplan keeps, checked room by room on the solver's plan.
+
+They are the solver's own invariants (the default floorplan program states the same ones as
+constraints): initial plans are resampled until they hold, and annealing rejects a move that
+breaks them for a room it touched before the program is even evaluated.
+"""
+from __future__ import annotations
+
+from ..constraints.room_terms import MIN_DOOR_WALL
+from .rooms import EXTERIOR_TYPES, MIN_AREA, MIN_WIDTH, NARROW_OK_TYPES, STAIRCASE, room_type_of
+from .view import GridPlan
+
+
+def room_problems(plan: GridPlan, o: str) -> list[str]:
+    """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
+    graph neighbour, an outside wall where its type (or the front door) needs one, at least
+    MIN_WIDTH wide (closets excepted), at least its type's minimum area, and the staircase room
+    holding the whole staircase placeholder."""
+    t = room_type_of(o)
+    if plan.outline_points(o) is None:
+        return [f"{o} is not a simple polygon"]
+    out = []
+    if plan.area(o) < MIN_AREA[t] - 1e-9:
+        out.append(f"{o} is smaller than {MIN_AREA[t]} m^2")
+    if t == STAIRCASE and plan.stair_coverage(o) < 0.999:
+        out.append(f"{o} does not hold the stairs")
+    if (t in EXTERIOR_TYPES or o == plan.graph.entrance) and \
+            plan.longest_exterior_wall(o) < MIN_DOOR_WALL - 1e-9:
+        out.append(f"{o} has no outside wall")
+    if t not in NARROW_OK_TYPES and plan.narrow_area(o, MIN_WIDTH) > 0.01:
+        out.append(f"{o} is narrower than {MIN_WIDTH} m")
+    if plan.missing_doors(o):
+        out.append(f"{o} lacks a door-wide wall with a graph neighbour")
+    return out
+
+
+def breaks_rules(plan: GridPlan, rooms) -> bool:
+    """Whether any of `rooms` breaks a rule (stops at the first)."""
+    return any(room_problems(plan, r) for r in sorted(rooms))

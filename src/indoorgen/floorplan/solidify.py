@@ -1,0 +1,421 @@
+"""Solid architecture of a whole home, room by room, in world coordinates (Z up).
+
+For each room this builds a `HomeRoomGeometry`, which is a `floorplan.room.RoomGeometry` (same
+attributes and methods), so the object solver and the validator furnish a room of a home exactly
+as they furnish a single room:
+
+- `room`: a `scene.Room` whose polygon is the room's free floor (inside the wall faces), with
+  its doors and open connections as `scene.Door`s on that polygon's edges, `storey` and
+  `elevation` set;
+- `floor`/`ceiling`: slabs under and over the room's share of the storey (the staircase opening
+  cut where a flight passes);
+- `walls`: the room's share of the storey's walls (its half of each interior wall, the inner
+  half of each exterior wall plus the outer half beside it), with door, opening, window and
+  front-door holes cut by manifold3d booleans;
+- `surfaces`: "floor", "ceiling" and "wall_<i>" (one per edge of the free polygon), normals into
+  the room, as `build_room` makes them;
+- `door_zones`: keep-out regions: each door's swing and clearance (deeper on the side it opens
+  into), a strip in front of open connections, and the stairs with their landings.
+
+Doors, windows and stairs are separate `Element`s (a simple parametric door leaf with casing, a
+window frame with glass, straight stair flights with guard rails round the floor opening).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import manifold3d
+import networkx as nx
+import numpy as np
+import shapely.geometry as sg
+import trimesh
+from shapely.geometry.polygon import orient
+
+from ..assets.base import Surface
+from ..errors import InvalidGeometryError
+from ..scene import Door, Room
+from .plan import DoorSpec, Floorplan, StairSpec, Storey
+from .room import (SLAB_THICKNESS, RoomGeometry, _ceiling_surface, _floor_surface, _to_trimesh,
+                   _wall_surfaces)
+from .walls import (WallFrame, WallThickness, door_frame, entrance_frame, free_polygon,
+                    outer_outline, room_region, wall_footprint, window_frame)
+
+#: Depth of the keep-out zone on the side a door swings into, and on the other side (m).
+SWING_DEPTH = 1.0
+PASS_DEPTH = 0.6
+#: Clear floor kept at the foot and the head of a flight (m).
+STAIR_LANDING = 1.0
+#: Guard rail height and thickness (m).
+RAIL_HEIGHT = 1.0
+RAIL_THICKNESS = 0.05
+#: Door leaf thickness and casing profile (m).
+LEAF = 0.04
+CASING = 0.06
+
+
+@dataclass
+class Element:
+    """An architectural element for export: `meshes` by part name, in world coordinates."""
+
+    name: str
+    kind: str          # "door" | "opening" | "window" | "stair" | "entrance"
+    room: str
+    storey: int
+    meshes: dict[str, trimesh.Trimesh]
+    semantics: list[str] = field(default_factory=list)
+
+
+@dataclass
+class HomeRoomGeometry(RoomGeometry):
+    """`RoomGeometry` of one room of a home, plus where it is: `storey`, `elevation` (its floor's
+    z) and `plan_polygon` (the partition polygon walls are centred on)."""
+
+    storey: int = 0
+    elevation: float = 0.0
+    plan_polygon: sg.Polygon | None = None
+
+    def door_zone_meshes(self, height: float = 2.0) -> list[trimesh.Trimesh]:
+        """Keep-out zones extruded from the room's floor to `height` above it."""
+        return [_to_trimesh(_extrude_poly(z, self.elevation, self.elevation + height))
+                for z in self.door_zones if not z.is_empty]
+
+
+@dataclass
+class Architecture:
+    """A solidified home: per-room geometry plus doors, windows, stairs."""
+
+    floorplan: Floorplan
+    rooms: dict[str, HomeRoomGeometry]
+    elements: list[Element]
+    walls: WallThickness
+
+
+# --------------------------------------------------------------------------------------------
+# manifold helpers
+
+
+def _rings(poly) -> list[np.ndarray]:
+    out = []
+    for p in getattr(poly, "geoms", [poly]):
+        if not isinstance(p, sg.Polygon) or p.is_empty:
+            continue
+        p = orient(p, 1.0)
+        out.append(np.ascontiguousarray(np.asarray(p.exterior.coords)[:-1, :2]))
+        out += [np.ascontiguousarray(np.asarray(h.coords)[:-1, :2]) for h in p.interiors]
+    return out
+
+
+def _extrude_poly(poly, z0: float, z1: float) -> manifold3d.Manifold:
+    """A prism over a shapely (multi)polygon, holes included, from z0 to z1."""
+    rings = _rings(poly)
+    if not rings:
+        return manifold3d.Manifold()
+    cs = manifold3d.CrossSection(rings, manifold3d.FillRule.Positive)
+    return manifold3d.Manifold.extrude(cs, z1 - z0).translate([0.0, 0.0, z0])
+
+
+def _box(frame: WallFrame, width: float, depth: float, z0: float, z1: float) -> manifold3d.Manifold:
+    """A box `width` along the wall and `depth` across it, centred on the frame, z0..z1."""
+    rect = frame.rect(width, -depth / 2, depth / 2)
+    return _extrude_poly(rect, z0, z1)
+
+
+def _subtract(solid: manifold3d.Manifold, cutters: list[manifold3d.Manifold]
+              ) -> manifold3d.Manifold:
+    if not cutters:
+        return solid
+    return manifold3d.Manifold.batch_boolean([solid, *cutters], manifold3d.OpType.Subtract)
+
+
+def _mesh(m: manifold3d.Manifold, what: str) -> trimesh.Trimesh:
+    if m.status() != manifold3d.Error.NoError:
+        raise InvalidGeometryError(f"{what}: solid boolean failed ({m.status()})")
+    return _to_trimesh(m)
+
+
+# --------------------------------------------------------------------------------------------
+# connectivity
+
+
+def room_depths(fp: Floorplan) -> dict[str, int]:
+    """Rooms' distance (in doors) from the front door, going up stairs: doors swing into the
+    deeper room."""
+    g = nx.Graph()
+    for s in fp.storeys:
+        g.add_nodes_from(r.name for r in s.rooms)
+        g.add_edges_from(d.rooms for d in s.doors + s.openings)
+    for st in fp.stairs:
+        a, b = stair_rooms(fp, st)
+        if a and b:
+            g.add_edge(a, b)
+    start = fp.entrance.room if fp.entrance else fp.storeys[0].rooms[0].name
+    depth = dict(nx.single_source_shortest_path_length(g, start))
+    far = max(depth.values(), default=0) + 1
+    return {n: depth.get(n, far) for n in g.nodes}
+
+
+def stair_rooms(fp: Floorplan, st: StairSpec) -> tuple[str | None, str | None]:
+    """The rooms holding a flight's foot (lower storey) and its head (upper storey)."""
+    poly = st.shape()
+    out = []
+    for lv in (st.from_level, st.to_level):
+        storey = next((s for s in fp.storeys if s.level == lv), None)
+        best = None
+        if storey is not None:
+            areas = [(r.shape().intersection(poly).area, r.name) for r in storey.rooms]
+            best = max(areas)[1] if areas and max(areas)[0] > 0 else None
+        out.append(best)
+    return out[0], out[1]
+
+
+# --------------------------------------------------------------------------------------------
+# elements
+
+
+def _door_element(d: DoorSpec, frame: WallFrame, storey: Storey) -> Element:
+    """A door leaf (closed, in the wall's centre plane) and its casing."""
+    e = storey.elevation
+    leaf = _box(frame, d.width - 0.02, LEAF, e + 0.01, e + d.height - 0.005)
+    outer = _box(frame, d.width + 2 * CASING, frame.thickness + 0.02, e, e + d.height + CASING)
+    inner = _box(frame, d.width, frame.thickness + 0.2, e - 0.01, e + d.height)
+    casing = _subtract(outer, [inner])
+    return Element(d.name, "door", d.rooms[0], storey.level,
+                   {"leaf": _mesh(leaf, d.name), "casing": _mesh(casing, d.name)},
+                   ["door", "architecture"])
+
+
+def _window_element(name: str, room: str, frame: WallFrame, storey: Storey, width: float,
+                    height: float, sill: float) -> Element:
+    e = storey.elevation
+    outer = _box(frame, width, frame.thickness + 0.02, e + sill, e + sill + height)
+    inner = _box(frame, width - 0.1, frame.thickness + 0.2, e + sill + 0.05,
+                 e + sill + height - 0.05)
+    glass = _box(frame, width - 0.1, 0.01, e + sill + 0.05, e + sill + height - 0.05)
+    return Element(name, "window", room, storey.level,
+                   {"frame": _mesh(_subtract(outer, [inner]), name),
+                    "glass": _mesh(glass, name)}, ["window", "architecture"])
+
+
+def stair_profile(rise: float, run: float, max_riser: float = 0.19,
+                  thickness: float = 0.3) -> tuple[np.ndarray, int]:
+    """Side profile (s along the flight, z up) of a straight flight climbing `rise` over `run`:
+    a sawtooth of risers and treads over a sloped underside; returns (points, risers)."""
+    n = max(2, int(math.ceil(rise / max_riser - 1e-9)))
+    hr, td = rise / n, run / (n - 1)
+    pts = [(0.0, 0.0)]
+    for i in range(n - 1):
+        pts += [(i * td, (i + 1) * hr), ((i + 1) * td, (i + 1) * hr)]
+    pts += [(run, rise), (run, rise - thickness), (min(0.5, run / 4), 0.0)]
+    return np.asarray(pts[::-1]), n  # counter-clockwise
+
+
+def _stair_element(st: StairSpec, fp: Floorplan, pitch: float) -> Element:
+    """A straight flight on its footprint, climbing from its storey's floor to the next."""
+    lower = next(s for s in fp.storeys if s.level == st.from_level)
+    p0, up, right, run, width = st.frame()
+    prof, _ = stair_profile(pitch, run)
+    cs = manifold3d.CrossSection([np.ascontiguousarray(prof)], manifold3d.FillRule.Positive)
+    solid = manifold3d.Manifold.extrude(cs, width)      # (s, z, w)
+    mesh = _mesh(solid, f"stair {st.from_level}->{st.to_level}")
+    m = np.eye(4)
+    m[:3, 0] = [up[0], up[1], 0.0]
+    m[:3, 1] = [0.0, 0.0, 1.0]
+    m[:3, 2] = [right[0], right[1], 0.0]
+    m[:3, 3] = [p0[0], p0[1], lower.elevation]
+    mesh.apply_transform(m)
+    if np.linalg.det(m[:3, :3]) < 0:
+        mesh.invert()
+    a, _ = stair_rooms(fp, st)
+    return Element(f"stair_{st.from_level}_{st.to_level}", "stair", a or "", st.from_level,
+                   {"flight": mesh}, ["stairs", "architecture"])
+
+
+def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
+    """Guard rails round the floor opening of a flight on the upper storey, open at its head."""
+    upper = next((s for s in fp.storeys if s.level == st.to_level), None)
+    if upper is None:
+        return None
+    p = np.asarray(st.polygon, float)  # bl, br, tr, tl
+    e = upper.elevation
+    rails = []
+    for a, b in ((p[0], p[1]), (p[1], p[2]), (p[3], p[0])):
+        line = sg.LineString([a, b])
+        rails.append(_extrude_poly(line.buffer(RAIL_THICKNESS / 2, cap_style="flat"),
+                                   e, e + RAIL_HEIGHT))
+    solid = manifold3d.Manifold.batch_boolean(rails, manifold3d.OpType.Add)
+    _, b = stair_rooms(fp, st)
+    return Element(f"rail_{st.from_level}_{st.to_level}", "railing", b or "", st.to_level,
+                   {"rail": _mesh(solid, "stair rail")}, ["railing", "architecture"])
+
+
+# --------------------------------------------------------------------------------------------
+# rooms
+
+
+def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, width: float
+                       ) -> tuple[int, float] | None:
+    """The edge of the free polygon on which an opening of `frame` lies (seen from the room
+    on side `into`), and the opening centre's offset along it."""
+    face = frame.center + into * frame.thickness / 2
+    pts = np.asarray(free.exterior.coords)[:-1]
+    q = np.roll(pts, -1, axis=0)
+    d = q - pts
+    length = np.linalg.norm(d, axis=1)
+    best = None
+    for i in range(len(pts)):
+        if length[i] < 1e-9 or abs(np.cross(d[i] / length[i], frame.u)) > 1e-3:
+            continue
+        s = float(np.dot(face - pts[i], d[i]) / length[i])
+        dist = abs(float(np.cross(d[i] / length[i], face - pts[i])))
+        if -width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05:
+            if best is None or dist < best[2]:
+                off = float(np.clip(s, min(width / 2, length[i] / 2),
+                                    max(length[i] - width / 2, length[i] / 2)))
+                best = (i, off, dist)
+    return None if best is None else best[:2]
+
+
+def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | None = None
+             ) -> Architecture:
+    """Build every room's geometry and the doors, windows and stairs of `fp`.
+
+    `pitch` is the floor-to-floor distance (default: the difference of the first two storeys'
+    elevations, or height + 2 slab thicknesses). Raises InvalidGeometryError when a door or
+    window does not sit on a suitable wall."""
+    t = walls or WallThickness()
+    if pitch is None:
+        pitch = (fp.storeys[1].elevation - fp.storeys[0].elevation) if len(fp.storeys) > 1 \
+            else fp.storeys[0].height + 2 * SLAB_THICKNESS
+    depth = room_depths(fp)
+    rooms: dict[str, HomeRoomGeometry] = {}
+    elements: list[Element] = []
+    for st in fp.stairs:
+        elements.append(_stair_element(st, fp, pitch))
+        rail = _rail_element(st, fp)
+        if rail is not None:
+            elements.append(rail)
+    for storey in fp.storeys:
+        rooms.update(_solidify_storey(fp, storey, t, depth, elements))
+    return Architecture(fp, rooms, elements, t)
+
+
+def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dict[str, int],
+                     elements: list[Element]) -> dict[str, HomeRoomGeometry]:
+    e, h = storey.elevation, storey.height
+    wall_fp = wall_footprint(storey, t)
+    outline = storey.contour()
+    outer = outer_outline(storey, t)
+    # openings of this storey: (rooms they belong to, frame, cutter, zones per room)
+    cut: dict[str, list[manifold3d.Manifold]] = {r.name: [] for r in storey.rooms}
+    zones: dict[str, list[sg.Polygon]] = {r.name: [] for r in storey.rooms}
+    doors: dict[str, list[Door]] = {r.name: [] for r in storey.rooms}
+    frees = {r.name: free_polygon(r.shape(), wall_fp) for r in storey.rooms}
+
+    def add_door(room: str, name: str, frame: WallFrame, side: np.ndarray, width: float,
+                 height: float, zone_depth: float, zone_width: float) -> None:
+        free = frees[room]
+        where = _door_on_free_edge(free, frame, side, width)
+        if where is not None:
+            doors[room].append(Door(name, where[0], round(where[1], 6), width, height,
+                                    zone_depth))
+        rect = WallFrame(frame.center, frame.u, side, frame.thickness).rect(
+            zone_width, 0.0, frame.thickness / 2 + zone_depth)
+        z = rect.intersection(free)
+        if not z.is_empty:
+            zones[room].append(_largest(z))
+
+    for d in storey.doors:
+        f = door_frame(storey, d, t)
+        cutter = _box(f, d.width, 3 * t.exterior, e - 0.01, e + d.height)
+        for r in d.rooms:
+            cut[r].append(cutter)
+        a, b = d.rooms
+        swing_into = b if depth.get(b, 0) >= depth.get(a, 0) else a
+        for r, side in ((a, -f.n), (b, f.n)):
+            dep = SWING_DEPTH if r == swing_into else PASS_DEPTH
+            add_door(r, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
+        elements.append(_door_element(d, f, storey))
+    for o in storey.openings:
+        f = door_frame(storey, o, t)
+        cutter = _box(f, o.width, 3 * t.exterior, e - 0.01, e + h + 0.01)
+        for r, side in ((o.rooms[0], -f.n), (o.rooms[1], f.n)):
+            cut[r].append(cutter)
+            add_door(r, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
+    for w in storey.windows:
+        f = window_frame(storey, w, t)
+        cut[w.room].append(_box(f, w.width, 3 * t.exterior, e + w.sill, e + w.sill + w.height))
+        elements.append(_window_element(w.name, w.room, f, storey, w.width, w.height, w.sill))
+    if fp.entrance is not None and storey.level == 0:
+        en = fp.entrance
+        f = entrance_frame(storey, en, t)
+        cut[en.room].append(_box(f, en.width, 3 * t.exterior, e - 0.01, e + en.height))
+        add_door(en.room, "entrance", f, -f.n, en.width, en.height, SWING_DEPTH, en.width + 0.2)
+        elements.append(_door_element(
+            DoorSpec("entrance", (en.room, en.room), en.center, en.width, en.height), f,
+            storey))
+    # stairs: flights leave this storey (cut the ceiling) or arrive (cut the floor)
+    floor_holes, ceil_holes = [], []
+    for st in fp.stairs:
+        poly = st.shape()
+        p = np.asarray(st.polygon, float)
+        up = (p[3] - p[0]) / np.linalg.norm(p[3] - p[0])
+        if st.from_level == storey.level:
+            ceil_holes.append(poly)
+            foot = sg.Polygon([p[0] - STAIR_LANDING * up, p[1] - STAIR_LANDING * up, p[2], p[3]])
+            for r in storey.rooms:
+                z = foot.intersection(frees[r.name])
+                if z.area > 1e-6:
+                    zones[r.name].append(_largest(z))
+        if st.to_level == storey.level:
+            floor_holes.append(poly)
+            head = sg.Polygon([p[0], p[1], p[2] + STAIR_LANDING * up, p[3] + STAIR_LANDING * up])
+            for r in storey.rooms:
+                z = head.intersection(frees[r.name])
+                if z.area > 1e-6:
+                    zones[r.name].append(_largest(z))
+    out = {}
+    for r in storey.rooms:
+        poly = r.shape()
+        region = room_region(poly, outline, t)
+        region = region.intersection(outer)
+        piece = wall_fp.intersection(region)
+        wall = _subtract(_extrude_poly(piece, e, e + h), cut[r.name])
+        floor_region = region
+        for hole in floor_holes:
+            floor_region = floor_region.difference(hole)
+        ceil_region = region
+        for hole in ceil_holes:
+            ceil_region = ceil_region.difference(hole)
+        floor = _extrude_poly(floor_region, e - SLAB_THICKNESS, e)
+        ceiling = _extrude_poly(ceil_region, e + h, e + h + SLAB_THICKNESS)
+        free = frees[r.name]
+        room = Room(r.name, r.type, [(float(x), float(y)) for x, y in
+                                     np.asarray(free.exterior.coords)[:-1]],
+                    height=h, wall_thickness=t.interior / 2, storey=storey.level,
+                    doors=doors[r.name], elevation=e)
+        lift = np.array([0.0, 0.0, e])
+        surfaces = [_shift(_floor_surface(free), lift), _ceiling_surface(free, e + h),
+                    *[_shift(s, lift) for s in _wall_surfaces(room)]]
+        out[r.name] = HomeRoomGeometry(
+            room, _mesh(floor, f"{r.name} floor"), _mesh(ceiling, f"{r.name} ceiling"),
+            [_mesh(wall, f"{r.name} walls")], surfaces, zones[r.name],
+            storey=storey.level, elevation=e, plan_polygon=poly)
+    return out
+
+
+def _shift(s: Surface, lift: np.ndarray) -> Surface:
+    return Surface(s.name, s.subpart, s.origin + lift, s.normal, s.u, s.polygon)
+
+
+def _largest(g) -> sg.Polygon:
+    if isinstance(g, sg.Polygon):
+        return g
+    parts = [p for p in getattr(g, "geoms", []) if isinstance(p, sg.Polygon)]
+    return max(parts, key=lambda p: p.area) if parts else sg.Polygon()
+
+
+def room_geometries(arch: Architecture) -> dict[str, RoomGeometry]:
+    """Per-room `RoomGeometry` objects of a home, keyed by room name (what `solver.State` and
+    the validator take)."""
+    return dict(arch.rooms)

@@ -1,0 +1,433 @@
+"""The floorplan solver's state, which is also the room view its constraint program reads.
+
+`GridPlan` holds, per storey, the cell grid and the label array (room index per cell), the
+room graph and the staircase placeholder (a rectangle of cells shared by all storeys). It
+implements `constraints.room_terms.RoomView`, computing the measures it can from the grid
+(area, exterior length and corners, straight exterior walls, narrowness, shared walls) and
+caching each room's measures until a move changes that room (`invalidate`).
+"""
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+import shapely.geometry as sg
+from shapely.geometry.polygon import orient
+
+from ..constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
+from .graph import HomeGraph
+from .grid import OUTSIDE, Grid, opening, room_polygon, trace
+from .rooms import MIN_AREA, TYPICAL_AREA, room_type_of
+
+
+_TURN = math.radians(20.0)
+
+
+def value_runs(code: np.ndarray) -> list[tuple[int, int, int, int]]:
+    """Maximal runs of equal non-negative values along axis 1 of a 2D int array:
+    (length, row, start, value)."""
+    n_rows, n = code.shape
+    flat = np.full((n_rows, n + 1), OUTSIDE, code.dtype)
+    flat[:, :n] = code
+    f = flat.ravel()
+    change = np.flatnonzero(f[1:] != f[:-1]) + 1
+    starts = np.concatenate([[0], change])
+    ends = np.concatenate([change, [len(f)]])
+    vals = f[starts]
+    keep = vals >= 0
+    starts, ends, vals = starts[keep], ends[keep], vals[keep]
+    rows, cols = np.divmod(starts, n + 1)
+    return list(zip((ends - starts).tolist(), rows.tolist(), cols.tolist(), vals.tolist()))
+
+
+def all_runs(x: np.ndarray) -> list[tuple[int, int, int]]:
+    """Maximal runs of True along axis 1 of a 2D boolean array: (length, row, start)."""
+    return [r[:3] for r in value_runs(np.where(x, 0, OUTSIDE))]
+
+
+def _hull_area(pts: list[tuple[float, float]]) -> float:
+    """Area of the convex hull of a few points (monotone chain)."""
+    p = sorted(set(pts))
+    if len(p) < 3:
+        return 0.0
+
+    def half(seq):
+        h = []
+        for q in seq:
+            while len(h) >= 2 and ((h[-1][0] - h[-2][0]) * (q[1] - h[-2][1])
+                                   - (h[-1][1] - h[-2][1]) * (q[0] - h[-2][0])) <= 0:
+                h.pop()
+            h.append(q)
+        return h
+    hull = half(p)[:-1] + half(reversed(p))[:-1]
+    return 0.5 * abs(sum(hull[i][0] * hull[(i + 1) % len(hull)][1]
+                         - hull[(i + 1) % len(hull)][0] * hull[i][1] for i in range(len(hull))))
+
+
+def longest_run(x: np.ndarray) -> tuple[int, int, int]:
+    """Longest run of True along axis 1 of a 2D boolean array: (length, row, start)."""
+    if not x.any():
+        return 0, -1, -1
+    n_rows, n = x.shape
+    flat = np.zeros((n_rows, n + 1), bool)
+    flat[:, :n] = x
+    f = flat.ravel().view(np.int8)
+    d = np.diff(np.concatenate([[0], f]))
+    starts = np.flatnonzero(d == 1)
+    ends = np.flatnonzero(d == -1)
+    lengths = ends - starts
+    i = int(np.argmax(lengths))
+    row, col = divmod(int(starts[i]), n + 1)
+    return int(lengths[i]), row, col
+
+
+class GridPlan(RoomView):
+    """Labels on grids for every storey of a home, with the room-view measures."""
+
+    def __init__(self, graph: HomeGraph, grids: list[Grid], labels: list[np.ndarray],
+                 stair_rect: tuple[int, int, int, int] | None):
+        super().__init__()
+        self.graph = graph
+        self.grids = grids
+        self.labels = labels
+        self.names: list[list[str]] = [list(g.nodes) for g in graph.storeys]
+        self.index: dict[str, tuple[int, int]] = {
+            n: (k, i) for k, names in enumerate(self.names) for i, n in enumerate(names)}
+        self.stair_rect = stair_rect  # (iy0, ix0, iy1, ix1) in cells, end exclusive
+        self._paths = {}
+        for k, g in enumerate(graph.storeys):
+            entry = graph.storey_entry(k)
+            self._paths.update(nx.single_source_shortest_path(g, entry))
+        self._typical_total = [math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
+                               for names in self.names]
+
+    # -- RoomView: the basics ----------------------------------------------------------------
+    def room_ids(self) -> list[str]:
+        return [n for names in self.names for n in names]
+
+    def storey_ids(self) -> list[str]:
+        return [f"{STOREY}_{k}" for k in range(len(self.grids))]
+
+    def room_type(self, o: str) -> str:
+        return room_type_of(o)
+
+    def tags(self, o: str) -> frozenset:
+        """Rooms: Room, their type, and "entrance" for the room with the front door."""
+        t = super().tags(o)
+        return t | {"entrance"} if o == self.graph.entrance else t
+
+    def level(self, o: str) -> int:
+        return self.index[o][0]
+
+    def neighbours(self, o: str) -> list[str]:
+        return sorted(self.graph.storeys[self.index[o][0]].neighbors(o))
+
+    def contour(self, level: int) -> sg.Polygon:
+        return self.grids[level].contour
+
+    def entry_room(self, level: int) -> str:
+        return self.graph.storey_entry(level)
+
+    def entry_path(self, o: str) -> list[str]:
+        return self._paths[o]
+
+    def typical_area(self, o: str) -> float:
+        return TYPICAL_AREA[room_type_of(o)]
+
+    def min_area(self, o: str) -> float:
+        return MIN_AREA[room_type_of(o)]
+
+    def ideal_area(self, o: str) -> float:
+        k = self.index[o][0]
+        return self.typical_area(o) / self._typical_total[k] * self.grids[k].contour.area
+
+    def stair_polygon(self) -> sg.Polygon | None:
+        if self.stair_rect is None:
+            return None
+        iy0, ix0, iy1, ix1 = self.stair_rect
+        g = self.grids[0]
+        (x0, y0), (x1, y1) = g.to_world(ix0, iy0), g.to_world(ix1, iy1)
+        return sg.box(x0, y0, x1, y1)
+
+    def stair_mask(self) -> np.ndarray | None:
+        if self.stair_rect is None:
+            return None
+        iy0, ix0, iy1, ix1 = self.stair_rect
+        m = np.zeros(self.grids[0].shape, bool)
+        m[iy0:iy1, ix0:ix1] = True
+        return m
+
+    def entry_point(self, level: int) -> np.ndarray:
+        if level > 0 or not self.graph.storeys:
+            sp = self.stair_polygon()
+            c = sp.centroid if sp is not None else self.contour(level).centroid
+            return np.array([c.x, c.y])
+        return self.front_door(self.graph.entrance)[1]
+
+    # -- cells ---------------------------------------------------------------------------------
+    def mask(self, o: str) -> np.ndarray:
+        k, i = self.index[o]
+        return self.cached(o, "mask", lambda: self.labels[k] == i)
+
+    def bbox(self, o: str, margin: int = 0) -> tuple[slice, slice]:
+        """Row and column slices of o's cells, grown by `margin` cells (clipped to the grid)."""
+        def f():
+            m = self.mask(o)
+            rows, cols = np.flatnonzero(m.any(axis=1)), np.flatnonzero(m.any(axis=0))
+            if not len(rows):
+                return 0, 0, 0, 0
+            return int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
+        y0, y1, x0, x1 = self.cached(o, "bbox", f)
+        ny, nx = self.grids[self.index[o][0]].shape
+        return (slice(max(0, y0 - margin), min(ny, y1 + margin)),
+                slice(max(0, x0 - margin), min(nx, x1 + margin)))
+
+    def has_partial(self, o: str) -> bool:
+        k, _ = self.index[o]
+        return self.cached(o, "partial", lambda: bool(
+            self.grids[k].partial[self.bbox(o)][self.mask(o)[self.bbox(o)]].any()))
+
+    def outline_points(self, o: str) -> list[tuple[float, float]] | None:
+        """o's outline corners, counter-clockwise (None if o is not one simple polygon)."""
+        def f():
+            k, _ = self.index[o]
+            g = self.grids[k]
+            ys, xs = self.bbox(o)
+            if ys.stop == ys.start:
+                return None
+            if self.has_partial(o):
+                poly = room_polygon(g, self.mask(o))
+                if poly is None:
+                    return None
+                return [tuple(p) for p in orient(poly, 1.0).exterior.coords[:-1]]
+            xy = trace(self.mask(o)[ys, xs])
+            if xy is None:
+                return None
+            pts = g.to_world(xy[:, 0] + xs.start, xy[:, 1] + ys.start)
+            return [(float(x), float(y)) for x, y in pts]
+        return self.cached(o, "outline", f)
+
+    def polygon(self, o: str) -> sg.Polygon | None:
+        def f():
+            pts = self.outline_points(o)
+            return None if pts is None else sg.Polygon(pts)
+        return self.cached(o, "polygon", f)
+
+    # -- RoomView: measures from the grid and the outline ---------------------------------------
+    def _cell_sum(self, o: str, what: str) -> float:
+        k, _ = self.index[o]
+        g = self.grids[k]
+
+        def f():
+            ys, xs = self.bbox(o)
+            return float(getattr(g, what)[ys, xs][self.mask(o)[ys, xs]].sum())
+        return self.cached(o, what, f)
+
+    def area(self, o: str) -> float:
+        g = self.grids[self.index[o][0]]
+        return self._cell_sum(o, "frac") * g.size ** 2
+
+    def exterior_length(self, o: str) -> float:
+        return self._cell_sum(o, "ext_len")
+
+    def exterior_corners(self, o: str) -> float:
+        return self._cell_sum(o, "ext_corners")
+
+    def _shape(self, o: str) -> dict:
+        """Centroid, hull area, corner count, wall lines and bounds of o's outline, computed in
+        plain Python over its few corners."""
+        def f():
+            pts = self.outline_points(o)
+            n = len(pts)
+            a = cx = cy = 0.0
+            for i in range(n):
+                x0, y0 = pts[i]
+                x1, y1 = pts[(i + 1) % n]
+                c = x0 * y1 - x1 * y0
+                a += c
+                cx += (x0 + x1) * c
+                cy += (y0 + y1) * c
+            a *= 0.5
+            centroid = (cx / (6 * a), cy / (6 * a)) if a else pts[0]
+            corners = 0
+            xs_v, ys_h = set(), set()
+            for i in range(n):
+                (px, py), (x0, y0), (x1, y1) = pts[i - 1], pts[i], pts[(i + 1) % n]
+                d0x, d0y, d1x, d1y = x0 - px, y0 - py, x1 - x0, y1 - y0
+                if abs(math.atan2(d0x * d1y - d0y * d1x, d0x * d1x + d0y * d1y)) > _TURN:
+                    corners += 1
+                if abs(d1x) < 1e-9:
+                    xs_v.add(round(x0, 3))
+                if abs(d1y) < 1e-9:
+                    ys_h.add(round(y0, 3))
+            xs = [p[0] for p in pts]
+            ys = [p[1] for p in pts]
+            return {"area": a, "centroid": centroid, "hull": _hull_area(pts), "corners": corners,
+                    "lines": (frozenset(xs_v), frozenset(ys_h)),
+                    "bounds": (min(xs), min(ys), max(xs), max(ys))}
+        return self.cached(o, "shape", f)
+
+    def center(self, o: str) -> np.ndarray:
+        c = self._shape(o)["centroid"]
+        return np.array([c[0], c[1], 0.0])
+
+    def aspect_ratio(self, o: str) -> float:
+        x0, y0, x1, y1 = self._shape(o)["bounds"]
+        w, h = x1 - x0, y1 - y0
+        return max(w / h, h / w)
+
+    def convexity(self, o: str) -> float:
+        sh = self._shape(o)
+        return sh["hull"] / sh["area"]
+
+    def wall_count(self, o: str) -> float:
+        return float(self._shape(o)["corners"])
+
+    def wall_lines(self, o: str) -> tuple[frozenset, frozenset]:
+        return self._shape(o)["lines"]
+
+    def narrow_area(self, o: str, width: float) -> float:
+        def f():
+            if self.has_partial(o):
+                return RoomView.narrow_area(self, o, width)
+            g = self.grids[self.index[o][0]]
+            ys, xs = self.bbox(o)
+            m = self.mask(o)[ys, xs]
+            k = int(math.ceil(width / g.size - 1e-9))
+            return float((m & ~opening(m, k)).sum()) * g.size ** 2
+        return self.cached(o, ("narrow", width), f)
+
+    def stair_coverage(self, o: str) -> float:
+        if self.stair_rect is None:
+            return 1.0
+        iy0, ix0, iy1, ix1 = self.stair_rect
+        inside = float(self.mask(o)[iy0:iy1, ix0:ix1].sum())
+        return inside / ((iy1 - iy0) * (ix1 - ix0))
+
+    def stair_iou(self, o: str) -> float:
+        if self.stair_rect is None:
+            return 1.0
+        iy0, ix0, iy1, ix1 = self.stair_rect
+        cell = self.grids[0].size ** 2
+        inter = float(self.mask(o)[iy0:iy1, ix0:ix1].sum()) * cell
+        sp = (iy1 - iy0) * (ix1 - ix0) * cell
+        return inter / (self.area(o) + sp - inter)
+
+    def exterior_runs(self, o: str) -> list[tuple[float, np.ndarray, np.ndarray]]:
+        """Straight exterior walls of o along full cells: (length m, start xy, end xy), longest
+        first."""
+        def f():
+            k, i = self.index[o]
+            g = self.grids[k]
+            ys, xs = self.bbox(o, 1)
+            lab = self.labels[k][ys, xs]
+            mine = (lab == i) & g.full[ys, xs]
+            # a cell edge is exterior if the cell across is outside the outline or the grid
+            out_ = np.ones((lab.shape[0] + 2, lab.shape[1] + 2), bool)
+            out_[1:-1, 1:-1] = lab == OUTSIDE
+            out = []
+            for axis, side, across in ((0, 0, out_[:-2, 1:-1]), (0, 1, out_[2:, 1:-1]),
+                                       (1, 0, out_[1:-1, :-2]), (1, 1, out_[1:-1, 2:])):
+                x = mine & across
+                if axis == 1:
+                    x = x.T
+                for length, row, start in all_runs(x):
+                    line = row + side
+                    if axis == 0:
+                        a = g.to_world(xs.start + start, ys.start + line)
+                        b = g.to_world(xs.start + start + length, ys.start + line)
+                    else:
+                        a = g.to_world(xs.start + line, ys.start + start)
+                        b = g.to_world(xs.start + line, ys.start + start + length)
+                    out.append((length * g.size, a, b))
+            out.sort(key=lambda r: (-r[0], r[1][0], r[1][1]))
+            return out
+        return self.cached(o, "ext_runs", f)
+
+    def longest_exterior_wall(self, o: str) -> float:
+        runs = self.exterior_runs(o)
+        return runs[0][0] if runs else 0.0
+
+    def front_door(self, o: str) -> tuple[float, np.ndarray]:
+        """Length and middle of o's longest straight exterior wall (where a front door goes)."""
+        runs = self.exterior_runs(o)
+        if not runs:
+            return 0.0, self.center(o)[:2]
+        length, a, b = runs[0]
+        return length, (a + b) / 2
+
+    def walls_with(self, o: str) -> dict[int, tuple[float, tuple[float, float]]]:
+        """For each room index across o's boundary: the longest straight wall they share along
+        full cells, as (length m, midpoint)."""
+        def f():
+            k, i = self.index[o]
+            g = self.grids[k]
+            ys, xs = self.bbox(o, 1)
+            lab = self.labels[k][ys, xs]
+            full = g.full[ys, xs]
+            mine = (lab == i) & full
+            other = np.where(full & (lab != i), lab, OUTSIDE)
+            best: dict[int, tuple[float, tuple[float, float]]] = {}
+            # horizontal grid lines between rows r and r+1, vertical between cols c and c+1
+            for axis, code in ((0, np.where(mine[:-1], other[1:], np.where(mine[1:], other[:-1], OUTSIDE))),
+                               (1, np.where(mine[:, :-1], other[:, 1:],
+                                            np.where(mine[:, 1:], other[:, :-1], OUTSIDE)).T)):
+                for length, row, start, lab_j in value_runs(code):
+                    L = length * g.size
+                    if L > best.get(lab_j, (0.0,))[0]:
+                        mid = start + length / 2
+                        p = g.xy(xs.start + mid, ys.start + row + 1) if axis == 0 else \
+                            g.xy(xs.start + row + 1, ys.start + mid)
+                        best[lab_j] = (L, p)
+            return best
+        return self.cached(o, "walls", f)
+
+    def shared_wall(self, a: str, b: str) -> tuple[float, np.ndarray | None]:
+        """Longest straight wall a and b share along full cells: (length m, midpoint)."""
+        k, _ = self.index[a]
+        kb, j = self.index[b]
+        if kb != k:
+            return 0.0, None
+        hit = self.walls_with(a).get(j)
+        return (0.0, None) if hit is None else (hit[0], np.array(hit[1]))
+
+    def missing_doors(self, o: str) -> float:
+        walls = self.walls_with(o)
+        need = MIN_DOOR_WALL - 1e-6
+        return float(sum(1 for n in self.neighbours(o)
+                         if walls.get(self.index[n][1], (0.0,))[0] < need))
+
+    def path_directness(self, o: str) -> float:
+        path = self.entry_path(o)
+        ex, ey = self.entry_point(self.level(o))[:2]
+        px, py = float(ex), float(ey)
+        walk = 0.0
+        for a, b in zip(path, path[1:]):
+            hit = self.walls_with(a).get(self.index[b][1])
+            qx, qy = hit[1] if hit is not None else self._shape(b)["centroid"]
+            walk += abs(qx - px) + abs(qy - py)
+            px, py = qx, qy
+        cx, cy = self._shape(o)["centroid"]
+        walk += abs(cx - px) + abs(cy - py)
+        direct = abs(cx - ex) + abs(cy - ey)
+        return direct / walk if walk > 1e-9 else 1.0
+
+    def invalidate(self, rooms) -> None:
+        """Forget the measures of `rooms` and the shared-wall tables of rooms next to them."""
+        rooms = set(rooms)
+        if not rooms:
+            return
+        super().invalidate(rooms)
+        idx = {}
+        for r in rooms:
+            k, i = self.index[r]
+            idx.setdefault(k, set()).add(i)
+        for name, d in self._cache.items():
+            w = d.get("walls")
+            if w is not None and idx.get(self.index[name][0], set()) & w.keys():
+                del d["walls"]
+
+    # -- snapshots ------------------------------------------------------------------------------
+    def room_polygons(self, level: int) -> dict[str, sg.Polygon]:
+        return {n: self.polygon(n) for n in self.names[level]}
