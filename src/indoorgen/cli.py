@@ -34,7 +34,8 @@ def _load_program(spec: str):
 
 
 def _cmd_generate(args) -> int:
-    from .pipeline import GenerateConfig, check_writable, generate, write_scene_dir
+    from .outputs import check_writable
+    from .pipeline import GenerateConfig, generate, write_scene_dir
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out)
     if args.seed < 0:
@@ -70,13 +71,44 @@ def _cmd_assets_list(args) -> int:
     rows = []
     for n in factory_names():
         f = get_factory(n)
+        joints = _joint_names(f)
         rows.append({"name": n, "tags": sorted(t.value for t in f.tags),
-                     "n_params": len(f.params), "joints": []})
+                     "n_params": len(f.params), "joints": joints,
+                     "size_class": f.size_class})
     if args.json:
         print(json.dumps(rows, indent=1))
     else:
         for r in rows:
-            print(f"{r['name']:24s} {r['n_params']:3d} params  {', '.join(r['tags'])}")
+            j = f"  joints: {', '.join(r['joints'])}" if r["joints"] else ""
+            print(f"{r['name']:24s} {r['n_params']:3d} params  {', '.join(r['tags'])}{j}")
+        print(f"{len(rows)} generators, {sum(r['n_params'] for r in rows)} parameters")
+    return 0
+
+
+def _joint_names(factory) -> list[str]:
+    """The joint kinds a generator can have: the union over a few sampled parameter sets of
+    its joints' names with the numbers stripped (door_0_joint, door_1_joint -> door_joint)."""
+    import re
+
+    import numpy as np
+    names: set[str] = set()
+    for seed in range(4):
+        p = factory.resolve(factory.sample_params(np.random.default_rng(seed)))
+        names |= {re.sub(r"_\d+", "", j.name) for j in factory.joints(p)}
+    return sorted(names)
+
+
+def _cmd_assets_sheet(args) -> int:
+    from tqdm import tqdm
+
+    from .assets import factory_names
+    from .outputs import atomic_file
+    from .render.preview import contact_sheet
+    names = factory_names()
+    with atomic_file(Path(args.out)) as tmp:
+        contact_sheet(names, tmp, seed=args.seed, cols=args.cols,
+                      progress=tqdm(names, desc="drawing", disable=not sys.stderr.isatty()))
+    print(f"{args.out}: {len(names)} generators")
     return 0
 
 
@@ -107,6 +139,11 @@ def build_parser() -> argparse.ArgumentParser:
     al = asub.add_parser("list", help="list generators")
     al.add_argument("--json", action="store_true")
     al.set_defaults(func=_cmd_assets_list)
+    sh = asub.add_parser("sheet", help="draw every generator into one PNG contact sheet")
+    sh.add_argument("--out", default="sheet.png")
+    sh.add_argument("--seed", type=int, default=0)
+    sh.add_argument("--cols", type=int, default=10)
+    sh.set_defaults(func=_cmd_assets_sheet)
     return p
 
 

@@ -7,9 +7,6 @@ from __future__ import annotations
 
 import json
 import logging
-import os
-import shutil
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,8 +18,9 @@ from .assets import Asset
 from .constraints.evaluator import Result
 from .constraints.expressions import Problem
 from .constraints.expressions import scene as scene_set
-from .errors import ConfigError, InvalidGeometryError, OutputError
+from .errors import ConfigError, InvalidGeometryError
 from .floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
+from .outputs import atomic_dir
 from .programs import get_program
 from .rng import stream
 from .scene import Pose, RelationInstance, Room, Scene, SceneObject
@@ -170,19 +168,6 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     return Generated(sc, geometry, state, cache, results, report)
 
 
-def check_writable(out: Path) -> None:
-    """Raise OutputError now, before any work, if `out` cannot be created or replaced."""
-    out = Path(out)
-    parent = out.resolve().parent
-    if out.exists() and not out.is_dir():
-        raise OutputError(f"--out {out} exists and is not a directory")
-    probe = parent
-    while not probe.exists():
-        probe = probe.parent
-    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
-        raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
-
-
 def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usda") -> Path:
     """Write scene.json, scene.usda, plan.png and report.json to `out`, atomically: everything
     goes to a temporary sibling directory that is renamed into place when complete."""
@@ -190,13 +175,7 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usda") -> Path
     from .render.plan import draw_plan
 
     out = Path(out)
-    check_writable(out)
-    out.resolve().parent.mkdir(parents=True, exist_ok=True)
-    try:
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.resolve().parent))
-    except OSError as e:
-        raise OutputError(f"cannot write to {out}: {e.strerror}") from None
-    try:
+    with atomic_dir(out) as tmp:
         t0 = time.perf_counter()
         (tmp / "scene.json").write_text(gen.scene.dumps())
         write_usd(gen.scene, tmp / f"scene.{usd_ext}", object_assets=gen.full_assets(),
@@ -207,16 +186,6 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usda") -> Path
         gen.report.setdefault("timings_s", {})["export"] = round(time.perf_counter() - t0, 4)
         (tmp / "report.json").write_text(json.dumps(gen.report, indent=1, sort_keys=True,
                                                     default=_json_default) + "\n")
-        if out.exists():
-            old = out.with_name(f".{out.name}.old-{os.getpid()}")
-            out.rename(old)
-            tmp.rename(out)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            tmp.rename(out)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
     return out
 
 

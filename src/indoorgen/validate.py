@@ -12,7 +12,6 @@ then checks with manifold3d booleans and plain geometry:
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 from typing import Any
 
@@ -30,6 +29,8 @@ from .tags import Semantics
 
 PENETRATION_TOL = 0.001
 SUPPORT_TOL = 0.005
+#: how far in front of a dining chair its table must begin (m)
+FACING_REACH = 1.0
 
 
 def _manifold(mesh: trimesh.Trimesh) -> manifold3d.Manifold:
@@ -118,18 +119,19 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
                 if fp.intersection(zone).area > 1e-6:
                     blocked.append({"room": rn, "door": k, "object": n})
 
-    # 4. dining chairs face their table
+    # 4. dining chairs face their table: a ray from the chair's seat along its front meets the
+    # table's footprint within 1 m (for a long table, the chair faces its edge, not its centre)
     misfacing = []
     for n, o in scene.objects.items():
         if Semantics.DiningChair.value not in o.tags:
             continue
         for r in o.relations:
             if r.parent in scene.objects and Semantics.DiningTable.value in scene.objects[r.parent].tags:
-                t = scene.objects[r.parent]
-                to_table = np.array(t.pose.position[:2]) - np.array(o.pose.position[:2])
-                cos = float(np.dot(o.pose.front()[:2], to_table) / (np.linalg.norm(to_table) + 1e-12))
-                if cos < math.cos(math.radians(35)):
-                    misfacing.append({"chair": n, "table": r.parent, "cos": round(cos, 3)})
+                table = sg.MultiPoint(meshes[r.parent].vertices[:, :2]).convex_hull
+                seat = np.asarray(o.pose.position[:2])
+                ray = sg.LineString([seat, seat + o.pose.front()[:2] * FACING_REACH])
+                if not ray.intersects(table):
+                    misfacing.append({"chair": n, "table": r.parent})
 
     # 5. the program's hard constraints, evaluated from scratch
     violations: dict[str, dict[str, float]] = {}

@@ -34,13 +34,15 @@ def living_room(room) -> Problem:
         },
         score_terms={
             "seating faces the TV stand": focus_score(seating, stands).minimize(3),
+            "the TV stand faces the sofa": focus_score(stands, sofas).minimize(2),
             "seating faces the coffee table": focus_score(seating, coffee_tables).minimize(2),
             "coffee table by the sofa": coffee_tables.mean(
                 lambda c: c.distance(sofas).hinge(0.35, 0.6)).minimize(3),
             "lamps beside seating": lamps.mean(lambda l: l.distance(seating).hinge(0.0, 0.3)).minimize(1),
             "side tables beside seating": side_tables.mean(
                 lambda t: t.distance(seating).hinge(0.0, 0.2)).minimize(1),
-            "sofa fronts free": accessibility_cost(sofas, furniture).minimize(0.5),
+            "nothing but the coffee table before the seating": accessibility_cost(
+                seating, floor.excluding(S.CoffeeTable, S.FloorCovering)).minimize(1),
             "furniture square to the walls": angle_alignment_cost(furniture, room).minimize(1),
             "TV faces the room": angle_alignment_cost(tvs, room).minimize(3),
             "screen in view": accessibility_cost(tvs, furniture).minimize(2),

@@ -105,14 +105,12 @@ class Annealer:
     def _place(self, ob: ObjState, tries: int | None = None) -> bool:
         """Sample poses on the object's planes until one is valid (the object is in state)."""
         st = self.state
-        surfaces = [st.surface_world(p.parent, p.parent_surface) for p in ob.placements]
-        i_small = int(np.argmin([s.polygon.area for s in surfaces]))
-        anchor, placement = surfaces[i_small], ob.placements[i_small]
+        anchor, placement = self._anchor(ob)
         child = ob.asset.surface(placement.child_surface)
         half = 0.5 * min(child.polygon.bounds[2] - child.polygon.bounds[0],
                          child.polygon.bounds[3] - child.polygon.bounds[1])
         for _ in range(tries or self.cfg.init_tries):
-            yaw = float(self.rng.integers(4)) * math.pi / 2
+            yaw = self._grid_yaw(ob, anchor)
             q = sample_point(anchor, self.rng, margin=half)
             r = np.array([[math.cos(yaw), -math.sin(yaw), 0], [math.sin(yaw), math.cos(yaw), 0],
                           [0, 0, 1.0]])
@@ -124,6 +122,26 @@ class Annealer:
             if self._valid(ob.name):
                 return True
         return False
+
+    def _grid_yaw(self, ob: ObjState, anchor) -> float:
+        """A yaw square to the surface `ob` rests on: the surface's own axes (a room's floor:
+        the world axes; a shelf or tabletop: its parent's), turned by k quarter turns. On an
+        object, half the draws face the same way as the parent (a TV on its stand, books on a
+        shelf), since that is what most things on furniture do."""
+        base = math.atan2(anchor.u[1], anchor.u[0]) if abs(anchor.normal[2]) > 0.99 else 0.0
+        on_object = any(p.parent not in self.state.rooms for p in ob.placements)
+        if on_object and self.rng.random() < 0.5:
+            k = 0
+        else:
+            k = int(self.rng.integers(4))
+        return base + k * math.pi / 2
+
+    def _anchor(self, ob: ObjState):
+        """The smallest surface the object is attached to (its tabletop rather than the room),
+        in world coordinates, and the placement that attaches it there."""
+        surfaces = [self.state.surface_world(p.parent, p.parent_surface) for p in ob.placements]
+        i = int(np.argmin([s.polygon.area for s in surfaces]))
+        return surfaces[i], ob.placements[i]
 
     # -- moves: each returns (changed, added, removed, undo) or None when invalid -----------
     def move_add(self):
@@ -216,12 +234,12 @@ class Annealer:
         res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw)
         if res is None or not res[2].rotates:
             return None
-        if self.rng.random() < 0.25:
-            dyaw = float(self.rng.choice([-0.5, 0.5, 1.0])) * math.pi
+        if self.rng.random() < 0.3:  # snap square to the supporting surface
+            new_yaw = self._grid_yaw(ob, self._anchor(ob)[0])
         else:
-            dyaw = float(self.rng.normal(0.0, self.cfg.rotate_sigma * self.temperature))
+            new_yaw = ob.yaw + float(self.rng.normal(0.0, self.cfg.rotate_sigma * self.temperature))
         undo = self._pose_undo(name)
-        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, ob.yaw + dyaw)
+        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, new_yaw)
         if res is None:
             return None
         self.state.set_pose(name, res[0], res[1])

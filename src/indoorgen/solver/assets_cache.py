@@ -28,14 +28,22 @@ def mesh_bvh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
     return bvh
 
 
+def convex_shape(mesh: trimesh.Trimesh) -> fcl.Convex:
+    """An fcl convex solid from a closed convex mesh. Unlike a BVH (a surface), a solid also
+    collides with things entirely inside it."""
+    faces = np.asarray(mesh.faces, np.int64)
+    flat = np.hstack([np.full((len(faces), 1), 3), faces]).ravel()
+    return fcl.Convex(np.asarray(mesh.vertices, float), len(faces), flat)
+
+
 class AssetCache:
     """Placeholders, full assets and BVHs keyed by (generator, params)."""
 
     def __init__(self) -> None:
         self._placeholders: dict[tuple, Asset] = {}
         self._full: dict[tuple, Asset] = {}
-        self._bvh: dict[tuple, fcl.BVHModel] = {}
         self._hull: dict[tuple, np.ndarray] = {}
+        self._convex: dict[tuple, list[fcl.Convex]] = {}
         self.builds = 0
 
     def placeholder(self, generator: str, params: dict[str, Any]) -> Asset:
@@ -66,10 +74,12 @@ class AssetCache:
             self._hull[key] = h
         return h
 
-    def placeholder_bvh(self, generator: str, params: dict[str, Any]) -> fcl.BVHModel:
+    def placeholder_convex(self, generator: str, params: dict[str, Any]) -> list[fcl.Convex]:
+        """The placeholder's convex collision pieces as fcl solids (built once, shared by every
+        object with these params)."""
         key = params_key(generator, params)
-        b = self._bvh.get(key)
-        if b is None:
-            b = mesh_bvh(self.placeholder(generator, params).mesh)
-            self._bvh[key] = b
-        return b
+        c = self._convex.get(key)
+        if c is None:
+            c = [convex_shape(m) for _, m in self.placeholder(generator, params).collision]
+            self._convex[key] = c
+        return c

@@ -11,6 +11,7 @@ from typing import Any
 
 import fcl
 import numpy as np
+import shapely
 import shapely.geometry as sg
 import trimesh
 
@@ -18,7 +19,10 @@ from ..assets import Asset, Surface
 from ..constraints.relations import Relation
 from ..floorplan.room import RoomGeometry
 from ..tags import Semantics
-from .assets_cache import AssetCache, mesh_bvh
+from .assets_cache import AssetCache, convex_shape, mesh_bvh
+
+#: height of door clearance keep-out volumes (m)
+DOOR_ZONE_HEIGHT = 2.0
 
 
 @dataclass
@@ -48,7 +52,7 @@ class ObjState:
     bound: str = ""
     context: Any = None
     env: dict = field(default_factory=dict)
-    cobj: fcl.CollisionObject | None = None
+    cobjs: list[fcl.CollisionObject] = field(default_factory=list)
 
 
 def rotation(yaw: float) -> np.ndarray:
@@ -70,8 +74,11 @@ class State:
         self.manager = fcl.DynamicAABBTreeCollisionManager()
         self.static = []
         for g in rooms.values():
-            for m in list(g.collision_meshes()) + list(g.door_zone_meshes()):
+            for m in g.collision_meshes():
                 self.static.append(fcl.CollisionObject(mesh_bvh(m), fcl.Transform()))
+            for zone in g.door_zones:  # solid keep-out prisms: nothing may stand inside them
+                for piece in keep_out_prisms(zone, DOOR_ZONE_HEIGHT):
+                    self.static.append(fcl.CollisionObject(convex_shape(piece), fcl.Transform()))
         self.manager.registerObjects(self.static)
         self.manager.setup()
 
@@ -198,18 +205,27 @@ class State:
     def _transform(self, ob: ObjState) -> fcl.Transform:
         return fcl.Transform(rotation(ob.yaw), np.asarray(ob.position, float))
 
+    def _register(self, ob: ObjState) -> None:
+        tf = self._transform(ob)
+        ob.cobjs = [fcl.CollisionObject(shape, tf)
+                    for shape in self.cache.placeholder_convex(ob.generator, ob.params)]
+        for c in ob.cobjs:
+            self.manager.registerObject(c)
+
+    def _unregister(self, ob: ObjState) -> None:
+        for c in ob.cobjs:
+            self.manager.unregisterObject(c)
+
     def add(self, ob: ObjState) -> None:
-        ob.cobj = fcl.CollisionObject(self.cache.placeholder_bvh(ob.generator, ob.params),
-                                      self._transform(ob))
         self.objects[ob.name] = ob
         self._ids = self._ids | {ob.name}
-        self.manager.registerObject(ob.cobj)
+        self._register(ob)
 
     def remove(self, name: str) -> ObjState:
         ob = self.objects.pop(name)
         self._ids = self._ids - {name}
         self._geo.pop(name, None)
-        self.manager.unregisterObject(ob.cobj)
+        self._unregister(ob)
         return ob
 
     def set_pose(self, name: str, position: np.ndarray, yaw: float) -> None:
@@ -217,31 +233,51 @@ class State:
         ob.position = np.asarray(position, float)
         ob.yaw = float(yaw)
         self._geo.pop(name, None)
-        ob.cobj.setTransform(self._transform(ob))
-        self.manager.update(ob.cobj)
+        tf = self._transform(ob)
+        for c in ob.cobjs:
+            c.setTransform(tf)
+            self.manager.update(c)
 
     def set_asset(self, name: str, params: dict[str, Any]) -> None:
-        """Swap an object's params (and so its placeholder and BVH), keeping its pose."""
+        """Swap an object's params (and so its placeholder and collision pieces), keeping its
+        pose."""
         ob = self.objects[name]
-        self.manager.unregisterObject(ob.cobj)
+        self._unregister(ob)
         ob.params = params
         ob.asset = self.cache.placeholder(ob.generator, params)
-        ob.cobj = fcl.CollisionObject(self.cache.placeholder_bvh(ob.generator, params),
-                                      self._transform(ob))
         self._geo.pop(name, None)
-        self.manager.registerObject(ob.cobj)
+        self._register(ob)
 
     def collides(self, name: str) -> bool:
-        """Does object `name`'s placeholder interpenetrate anything else (objects, walls, floor,
-        ceiling, door keep-out zones)?"""
+        """Does object `name`'s placeholder (its solid convex pieces) overlap anything else:
+        other objects, walls, floor, ceiling, door keep-out zones?"""
         ob = self.objects[name]
-        self.manager.unregisterObject(ob.cobj)
+        self._unregister(ob)
         try:
-            data = fcl.CollisionData(request=fcl.CollisionRequest())
-            self.manager.collide(ob.cobj, data, fcl.defaultCollisionCallback)
-            return bool(data.result.is_collision)
+            for c in ob.cobjs:
+                data = fcl.CollisionData(request=fcl.CollisionRequest())
+                self.manager.collide(c, data, fcl.defaultCollisionCallback)
+                if data.result.is_collision:
+                    return True
+            return False
         finally:
-            self.manager.registerObject(ob.cobj)
+            for c in ob.cobjs:
+                self.manager.registerObject(c)
+
+
+def keep_out_prisms(zone: sg.Polygon, height: float) -> list[trimesh.Trimesh]:
+    """Convex prisms from z=0 to `height` covering a keep-out polygon (the polygon itself when
+    convex, else its triangles)."""
+    if zone.is_empty or zone.area < 1e-9:
+        return []
+    pieces = [zone] if zone.convex_hull.area - zone.area < 1e-9 else \
+        [t for t in shapely.delaunay_triangles(zone).geoms if zone.contains(t.representative_point())]
+    out = []
+    for p in pieces:
+        xy = np.asarray(p.exterior.coords)[:-1]
+        pts = np.vstack([np.c_[xy, np.zeros(len(xy))], np.c_[xy, np.full(len(xy), height)]])
+        out.append(trimesh.convex.convex_hull(pts))
+    return out
 
 
 def state_from_scene(scene, rooms: dict[str, RoomGeometry], cache: AssetCache) -> State:

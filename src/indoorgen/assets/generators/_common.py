@@ -94,10 +94,15 @@ class PartsFactory(AssetFactory):
                      slots=slots, closed=self.closed)
 
     def placeholder(self, params: dict[str, Any]) -> Asset:
+        """The cheap asset: its parts concatenated, and each part's convex hull as a solid
+        collision piece (the solver collides these, so an object inside another is caught)."""
         p = self.resolve(params)
         cheap, offset, ext = self._layout(p)
         mesh, fs, slots = concat(cheap, self.slots)
-        return self._asset(p, mesh, fs, slots, offset, ext)
+        asset = self._asset(p, mesh, fs, slots, offset, ext)
+        asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
+                           for link, h in convex_pieces(cheap, max_pieces=24)]
+        return asset
 
     def create(self, params: dict[str, Any]) -> Asset:
         """The detailed asset: one watertight shell per link, UVs, joints and convex pieces."""
