@@ -86,13 +86,13 @@ def _cmd_assets_list(args) -> int:
 
 
 def _joint_names(factory) -> list[str]:
-    """The joint kinds a generator can have: the union over a few sampled parameter sets of
+    """The joint kinds a generator can have: the union over 12 sampled parameter sets of
     its joints' names with the numbers stripped (door_0_joint, door_1_joint -> door_joint)."""
     import re
 
     import numpy as np
     names: set[str] = set()
-    for seed in range(4):
+    for seed in range(12):
         p = factory.resolve(factory.sample_params(np.random.default_rng(seed)))
         names |= {re.sub(r"_\d+", "", j.name) for j in factory.joints(p)}
     return sorted(names)
@@ -101,10 +101,12 @@ def _joint_names(factory) -> list[str]:
 def _cmd_assets_sheet(args) -> int:
     from tqdm import tqdm
 
-    from .assets import factory_names
+    from .assets import factory_names, get_factory
     from .outputs import atomic_file
     from .render.preview import contact_sheet
     names = factory_names()
+    if args.only:
+        names = [get_factory(n).name for n in args.only]  # unknown names: one-line error
     with atomic_file(Path(args.out)) as tmp:
         contact_sheet(names, tmp, seed=args.seed, cols=args.cols,
                       progress=tqdm(names, desc="drawing", disable=not sys.stderr.isatty()))
@@ -143,6 +145,7 @@ def build_parser() -> argparse.ArgumentParser:
     sh.add_argument("--out", default="sheet.png")
     sh.add_argument("--seed", type=int, default=0)
     sh.add_argument("--cols", type=int, default=10)
+    sh.add_argument("--only", nargs="+", metavar="NAME", help="draw only these generators")
     sh.set_defaults(func=_cmd_assets_sheet)
     return p
 

@@ -52,14 +52,16 @@ def draw_mesh(ax, mesh: trimesh.Trimesh, face_rgb: np.ndarray) -> None:
     view = VIEW_DIR / np.linalg.norm(VIEW_DIR)
     front = mesh.face_normals @ view > -1e-3
     tris = mesh.triangles[front]
-    coll = Poly3DCollection(tris, facecolors=face_rgb[front], edgecolors="none", linewidths=0)
+    rgb = face_rgb[front]
+    # edges drawn in the face colour hide the hairline seams antialiasing leaves between faces
+    coll = Poly3DCollection(tris, facecolors=rgb, edgecolors=rgb, linewidths=0.3)
     ax.add_collection3d(coll)
     lo, hi = mesh.bounds
     c, r = (lo + hi) / 2, (hi - lo).max() / 2
     ax.set_xlim(c[0] - r, c[0] + r)
     ax.set_ylim(c[1] - r, c[1] + r)
     ax.set_zlim(c[2] - r, c[2] + r)
-    ax.set_box_aspect((1, 1, 1))
+    ax.set_box_aspect((1, 1, 1), zoom=1.35)
     ax.view_init(elev=math.degrees(math.asin(view[2])), azim=math.degrees(math.atan2(view[1], view[0])))
     ax.set_axis_off()
 
