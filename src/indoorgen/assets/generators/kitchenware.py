@@ -1,0 +1,844 @@
+"""Kitchenware: cooking pots (with a lid on its own link), frying pans, pot lids, knives, forks,
+spoons, chopsticks, spatulas and cutting boards.
+
+Pots and pans are hollow vessels (`tableware_more.revolve_vessel`). Utensils lie flat on the
+table, front (+X) towards their working end: heads and blades are flat extrusions resting on
+z = 0, handles are swept tubes (`sweep`: an extruded section bent along a path by one
+vectorised warp, no booleans) whose ends rest on the table too.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable
+
+import manifold3d as m3d
+import numpy as np
+import shapely.geometry as sg
+
+from ...tags import Semantics as S
+from ...tags import Subpart
+from ..base import Param, register
+from ..parts import (DoorJoint, Part, bevel_box, box_between, cylinder, lathe, solid_union,
+                     torus)
+from ._common import PartsFactory, make_joint, support_polygon
+from .tableware_more import (SECTIONS, Vessel, cheap_cylinder, interior_floor, revolve_vessel,
+                             round_bottom)
+
+#: how far touching pieces sink into each other so that their union is one shell (m)
+SINK = 0.001
+#: clearance between a lid and the pot it lifts off (m)
+LID_GAP = 0.002
+
+
+# ----------------------------------------------------------------------------- shared parts
+def sweep(path: Callable[[np.ndarray], np.ndarray], width: Callable[[np.ndarray], np.ndarray],
+          thick: Callable[[np.ndarray], np.ndarray], n: int = 16, section: str = "round",
+          floor: bool = False) -> m3d.Manifold:
+    """A tube along `path(t)` (t in [0, 1] -> (N, 3) points in the XZ plane, advancing along
+    +X) whose section (an ellipse, or a rectangle if section="square") is `width(t)` across
+    (along Y) and `thick(t)` in the path's plane, perpendicular to it. With `floor`, the
+    section's lowest vertices sit exactly thick/2 below the path (not tilted with it), so an
+    underside laid along the table by `lying_path` touches it exactly."""
+    cs = (m3d.CrossSection.circle(0.5, 12) if section == "round"
+          else m3d.CrossSection.square((1.0, 1.0), True))
+    eps = 1e-4
+
+    def warp(v: np.ndarray) -> np.ndarray:
+        t = v[:, 2]
+        p = path(t)
+        d = path(np.minimum(t + eps, 1.0)) - path(np.maximum(t - eps, 0.0))
+        d /= np.linalg.norm(d, axis=1, keepdims=True)
+        up = np.c_[-d[:, 2], np.zeros_like(t), d[:, 0]]
+        out = (p + (v[:, 0] * width(t))[:, None] * np.array([0.0, 1.0, 0.0])
+               + (v[:, 1] * thick(t))[:, None] * up)
+        if floor:
+            low = v[:, 1] < -0.5 + 1e-9
+            out[low, 2] = p[low, 2] - 0.5 * thick(t[low])
+        return out
+
+    return m3d.Manifold.extrude(cs, 1.0, n).warp_batch(warp)
+
+
+def lying_path(x0: float, x1: float, thick: Callable[[np.ndarray], np.ndarray],
+               rise: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
+    """The centre line of a handle lying along +X from x0 to x1 whose underside is `rise(t)`
+    above the table (0 where it rests)."""
+    def path(t: np.ndarray) -> np.ndarray:
+        return np.c_[x0 + (x1 - x0) * t, np.zeros_like(t), rise(t) + 0.5 * thick(t)]
+    return path
+
+
+def extrude_outline(poly: sg.Polygon, z0: float, z1: float) -> m3d.Manifold:
+    """A shapely polygon (holes allowed) extruded from z0 to z1."""
+    rings = [np.asarray(poly.exterior.coords)[:-1]] + [np.asarray(r.coords)[:-1]
+                                                        for r in poly.interiors]
+    cs = m3d.CrossSection(rings, m3d.FillRule.EvenOdd)
+    return m3d.Manifold.extrude(cs, z1 - z0).translate((0.0, 0.0, z0))
+
+
+def _flat_box(x0: float, x1: float, half_y: float, z1: float, slot: str) -> Part:
+    """A placeholder box from x0 to x1, +-half_y, z 0..z1."""
+    return Part(box_between((x0, -half_y, 0.0), (x1, half_y, z1)), slot)
+
+
+# ------------------------------------------------------------------------------------- pots
+def _dome(u: np.ndarray) -> np.ndarray:
+    """Dome height fraction from the rim (u = 0) to the apex (u = 1)."""
+    return np.sin(0.5 * math.pi * u) ** 0.8
+
+
+def lid_solids(radius: float, dome: float, z0: float, knob: str, skirt_r: float = 0.0,
+               thickness: float = 0.0025) -> list[m3d.Manifold]:
+    """A domed lid whose rim's underside is at z0: a lathed shell `thickness` thick (open
+    below), optionally a skirt (a short tube of outer radius `skirt_r` hanging 8 mm below the
+    rim, to sit inside a pot) and a knob, a loop or a bar handle on top."""
+    t = thickness
+    u = np.linspace(0.0, 1.0, 9)
+    r = radius * (1 - u)
+    z = z0 + dome * _dome(u)
+    outer = list(zip(r.tolist(), (z + t).tolist()))
+    inner = list(zip(r.tolist(), z.tolist()))
+    prof = [(radius, z0)] + outer + inner[::-1][:-1]
+    out = [lathe(prof, SECTIONS)]
+    if skirt_r > 0:
+        z_in = z0 + dome * float(_dome(np.array([1 - skirt_r / radius]))[0])
+        out.append(lathe([(skirt_r - t, z0 - 0.008), (skirt_r, z0 - 0.008),
+                          (skirt_r, z_in + 0.5 * t), (skirt_r - t, z_in + 0.5 * t)], SECTIONS))
+    top = z0 + t + dome
+
+    def surface(rr: float) -> float:  # height of the dome's outer surface at radius rr, -1 mm
+        return z0 + t + dome * float(_dome(np.array([max(1 - rr / radius, 0.0)]))[0]) - 0.001
+
+    if knob == "knob":
+        out += [cylinder(0.007, 0.014, (0, 0, top - 0.003), 16),
+                lathe([(0.0, top + 0.01), (0.018, top + 0.012), (0.02, top + 0.018),
+                       (0.014, top + 0.024), (0.0, top + 0.025)], 24)]
+    elif knob == "loop":  # an arch whose feet (at r = 25 mm) sink into the dome
+        zf = surface(0.026)
+        ring = torus(1.0, 0.005 / 0.025, sections=20, tube_sections=8).rotate((90.0, 0.0, 0.0))
+        ring = ring.scale((0.025, 0.025, (top + 0.027 - zf) / 1.2)).translate((0, 0, zf))
+        out.append(ring.trim_by_plane((0, 0, 1), zf))
+    else:  # bar: a flat bridge on two posts standing on the dome
+        zf = surface(0.035)
+        out += [box_between((-0.004, -0.035, zf), (0.004, -0.027, top + 0.02)),
+                box_between((-0.004, 0.027, zf), (0.004, 0.035, top + 0.02)),
+                bevel_box((0.012, 0.08, 0.008), (0, 0, top + 0.022), 0.003)]
+    return out
+
+
+def lid_top(dome: float, z0: float, knob: str, thickness: float = 0.0025) -> float:
+    """Highest point of `lid_solids`."""
+    top = z0 + thickness + dome
+    return top + {"knob": 0.025, "loop": 0.027, "bar": 0.026}[knob]
+
+
+def long_handle(x0: float, z0: float, length: float, angle: float, style: str
+                ) -> list[tuple[m3d.Manifold, str]]:
+    """A pan's long handle leaving the body at (x0, z0) along +X, rising at `angle` (rad):
+    "stick" (round metal with a hanging hole), "flat" (a metal strap with a hole) or "wood"
+    (a metal shank into a wooden grip). Returns (solid, slot) pairs."""
+    ca, sa = math.cos(angle), math.sin(angle)
+
+    def line(a: float, b: float):
+        return lambda t: np.c_[x0 + (a + (b - a) * t) * ca, np.zeros_like(t),
+                               z0 + (a + (b - a) * t) * sa]
+
+    def lerp(a: float, b: float):
+        return lambda t: a + (b - a) * t
+
+    end = np.array([x0 + (length - 0.025) * ca, 0.0, z0 + (length - 0.025) * sa])
+    hole = cylinder(0.005, 0.1, (end[0], 0.0, end[2] - 0.05), 12)
+    if style == "flat":
+        strap = sweep(line(0.0, length), lerp(0.02, 0.032), lerp(0.007, 0.005), 6, "square")
+        return [(strap - hole, "metal")]
+    if style == "stick":
+        stick = sweep(line(0.0, length), lerp(0.018, 0.026), lerp(0.014, 0.01), 8)
+        return [(stick - hole, "metal")]
+    shank = sweep(line(0.0, 0.35 * length + 0.01), lerp(0.012, 0.012), lerp(0.008, 0.008), 4)
+    grip = sweep(line(0.35 * length, length), lerp(0.024, 0.03), lerp(0.02, 0.024), 10)
+    return [(shank, "metal"), (grip, "wood")]
+
+
+def long_handle_bounds(x0: float, z0: float, length: float, angle: float, style: str
+                       ) -> tuple[float, float, float, float]:
+    """(x_max, half width, z_min, z_max) enclosing `long_handle` (its sweeps' sections)."""
+    w, th = {"flat": (0.032, 0.007), "stick": (0.026, 0.014), "wood": (0.03, 0.024)}[style]
+    x1 = x0 + length * math.cos(angle) + 0.5 * th * math.sin(angle)
+    z_hi = z0 + length * math.sin(angle) + 0.5 * th * math.cos(angle) + 1e-4
+    return x1, 0.5 * w, z0 - 0.5 * th - 1e-4, z_hi
+
+
+def side_handles(style: str, r_at: float, z: float, axis: str = "y",
+                 sides: tuple[int, ...] = (-1, 1)) -> list[m3d.Manifold]:
+    """Handles on the sides of a pot whose outer radius at height z is `r_at`: "loops" (half
+    tori lying flat) or "tabs" (flat lugs), sunk into the wall (clip them with the cavity)."""
+    out = []
+    for s in sides:
+        if style == "loops":
+            ring = torus(0.026, 0.005, sections=24, tube_sections=8)
+            if axis == "y":
+                ring = ring.translate((0.0, s * r_at, z)).trim_by_plane((0, s, 0), r_at - 0.008)
+            else:
+                ring = ring.translate((s * r_at, 0.0, z)).trim_by_plane((s, 0, 0), r_at - 0.008)
+            out.append(ring)
+        else:
+            c = (0.0, s * (r_at + 0.013), z) if axis == "y" else (s * (r_at + 0.013), 0.0, z)
+            ext = (0.06, 0.04, 0.009) if axis == "y" else (0.04, 0.06, 0.009)
+            out.append(bevel_box(ext, c, 0.003))
+    return out
+
+
+#: how far side handles reach beyond the wall (loops: major + minor radius; tabs: 0.013+0.02)
+SIDE_REACH = {"loops": 0.031, "tabs": 0.033}
+SIDE_HALF_H = {"loops": 0.005, "tabs": 0.0045}
+
+
+@register
+class CookingPot(PartsFactory):
+    """A cooking pot: stock pot or casserole (two loop or tab handles) or saucepan (one long
+    handle towards +X); straight or tapered hollow body with a rolled rim; optionally a domed
+    lid (knob, loop or bar handle) on its own link that lifts straight off."""
+
+    name = "cooking_pot"
+    tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Container, S.Pot})
+    size_class = "small"
+    slots = ["metal", "glass", "wood", "plastic"]
+    solid_bottom = True
+    params = {
+        "radius": Param(0.08, 0.14, doc="outer radius at the rim (m)"),
+        "height": Param(0.08, 0.2, doc="body height (m)"),
+        "taper": Param(0.85, 1.0, doc="base radius / rim radius"),
+        "wall_thickness": Param(0.002, 0.004, doc="wall thickness (m)"),
+        "base_thickness": Param(0.004, 0.008, doc="floor thickness (m)"),
+        "handle_style": Param(kind="choice", choices=("loops", "tabs", "long"),
+                              doc="two side handles or one long handle"),
+        "has_lid": Param(kind="bool", doc="with a lid"),
+        "knob_style": Param(kind="choice", choices=("knob", "loop", "bar"), doc="lid handle"),
+        "lid_dome": Param(0.01, 0.03, doc="lid dome height (m)"),
+    }
+
+    LIP = 0.002
+
+    def _outer(self, p) -> list[tuple[float, float]]:
+        R, H = p["radius"], p["height"]
+        rb, c = R * p["taper"], min(0.012, 0.1 * H)
+        arc = [(rb - c + c * math.sin(a), c - c * math.cos(a))
+               for a in np.linspace(0.0, 0.5 * math.pi, 5)]
+        return [(0.0, 0.0)] + arc + [(R, H - 0.004), (R + self.LIP, H)]
+
+    def _r_at(self, p, z: float) -> float:
+        rb = p["radius"] * p["taper"]
+        return rb + (p["radius"] - rb) * z / p["height"]
+
+    def _vessel(self, p) -> Vessel:
+        return revolve_vessel(self._outer(p), p["wall_thickness"], p["base_thickness"])
+
+    def _lid_z0(self, p) -> float:
+        return p["height"] + LID_GAP
+
+    def _handle_z(self, p) -> float:
+        return p["height"] - 0.022 if p["handle_style"] != "long" else 0.8 * p["height"]
+
+    def _long(self, p) -> tuple[float, float, float, float]:
+        """(x0, z0, length, angle) of the long handle."""
+        z = self._handle_z(p)
+        return self._r_at(p, z) - 0.006, z, 1.3 * p["radius"] + 0.06, math.radians(10)
+
+    def parts(self, p, detail):
+        R, H, hs = p["radius"], p["height"], p["handle_style"]
+        rl, z0 = R + self.LIP + 0.003, self._lid_z0(p)
+        zh = self._handle_z(p)
+        if not detail:
+            out = [cheap_cylinder(R + self.LIP, 0.0, H, "metal")]
+            if hs == "long":
+                x1, hw, za, zb = long_handle_bounds(*self._long(p), "stick")
+                out.append(Part(box_between((R - 0.01, -hw, za), (x1, hw, zb)), "metal"))
+            else:
+                reach, hh = SIDE_REACH[hs], SIDE_HALF_H[hs]
+                half_x = 0.031 if hs == "loops" else 0.03
+                out.append(Part(box_between((-half_x, -R - reach, zh - hh),
+                                            (half_x, R + reach, zh + hh)), "metal"))
+            if p["has_lid"]:
+                out.append(cheap_cylinder(rl, H, lid_top(p["lid_dome"], z0, p["knob_style"]),
+                                          "metal"))
+            return out
+        v = self._vessel(p)
+        out = [Part(v.shell, "metal")]
+        cav = v.cavity
+        if hs == "long":
+            out += [Part(s - cav, slot) for s, slot in long_handle(*self._long(p), "stick")]
+        else:
+            out += [Part(s - cav, "metal") for s in side_handles(hs, self._r_at(p, zh), zh)]
+        if p["has_lid"]:
+            skirt = R - p["wall_thickness"] - LID_GAP
+            lid_slot = "glass" if p["knob_style"] == "knob" else "metal"
+            knob_slot = "plastic" if p["knob_style"] == "knob" else "metal"
+            solids = lid_solids(rl, p["lid_dome"], z0, p["knob_style"], skirt)
+            out += [Part(solids[0], lid_slot, "lid"), Part(solids[1], lid_slot, "lid")]
+            out += [Part(s, knob_slot, "lid") for s in solids[2:]]
+        return out
+
+    def joints(self, p):
+        if not p["has_lid"]:
+            return []
+        lift = DoorJoint("prismatic", np.array([0.0, 0.0, 1.0]),
+                         np.array([0.0, 0.0, self._lid_z0(p)]), "lid")
+        return [make_joint("lid", lift, 0.0, 0.12)]
+
+    def extra_surfaces(self, p):
+        v = self._vessel(p)
+        rb = p["radius"] * p["taper"] - min(0.012, 0.1 * p["height"])
+        return [round_bottom("bottom", rb), interior_floor("interior", v.floor_z, v.floor_r)]
+
+
+@register
+class FryingPan(PartsFactory):
+    """A frying pan or skillet: a shallow hollow pan with flared walls and a thick base, a long
+    handle towards +X (round stick, flat strap or wooden grip) rising at an angle, and
+    optionally a small helper handle opposite."""
+
+    name = "frying_pan"
+    tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Pan})
+    size_class = "small"
+    slots = ["metal", "wood"]
+    solid_bottom = True
+    params = {
+        "radius": Param(0.1, 0.16, doc="outer radius at the rim (m)"),
+        "depth": Param(0.035, 0.065, doc="height of the rim (m)"),
+        "base_frac": Param(0.7, 0.85, doc="flat base radius / rim radius"),
+        "wall_thickness": Param(0.0025, 0.005, doc="wall thickness (m)"),
+        "handle_length": Param(0.16, 0.24, doc="handle length (m)"),
+        "handle_angle": Param(5.0, 20.0, doc="handle rise (degrees)"),
+        "handle_style": Param(kind="choice", choices=("stick", "flat", "wood"), doc="handle"),
+        "helper_handle": Param(kind="bool", doc="small loop handle opposite the long one"),
+    }
+
+    def _outer(self, p) -> list[tuple[float, float]]:
+        R, D = p["radius"], p["depth"]
+        rb, c = R * p["base_frac"], 0.008
+        arc = [(rb - c + c * math.sin(a), c - c * math.cos(a))
+               for a in np.linspace(0.0, 0.5 * math.pi, 5)]
+        t = np.linspace(0.0, 1.0, 6)[1:]
+        wall = list(zip((rb + (R - rb) * t ** 1.3).tolist(), (c + (D - c) * t).tolist()))
+        return [(0.0, 0.0)] + arc + wall
+
+    def _vessel(self, p) -> Vessel:
+        return revolve_vessel(self._outer(p), p["wall_thickness"], p["wall_thickness"] + 0.002)
+
+    def _handle(self, p) -> tuple[float, float, float, float]:
+        R, D = p["radius"], p["depth"]
+        z = D - 0.012
+        rb = R * p["base_frac"]
+        r_at = rb + (R - rb) * ((z - 0.008) / (D - 0.008)) ** (1 / 1.3)
+        return r_at - 0.006, z, p["handle_length"], math.radians(p["handle_angle"])
+
+    def parts(self, p, detail):
+        R, D, hs = p["radius"], p["depth"], p["handle_style"]
+        zh = D - 0.012
+        if not detail:
+            x1, hw, za, zb = long_handle_bounds(*self._handle(p), hs)
+            out = [cheap_cylinder(R, 0.0, D, "metal"),
+                   Part(box_between((R - 0.01, -hw, za), (x1, hw, zb)), "metal")]
+            if p["helper_handle"]:
+                r_at = self._handle(p)[0] + 0.006
+                out.append(Part(box_between((-r_at - SIDE_REACH["loops"], -0.031, zh - 0.005),
+                                            (-r_at + 0.01, 0.031, zh + 0.005)), "metal"))
+            return out
+        v = self._vessel(p)
+        cav = v.cavity
+        out = [Part(v.shell, "metal")]
+        out += [Part(s - cav, slot) for s, slot in long_handle(*self._handle(p), hs)]
+        if p["helper_handle"]:
+            r_at = self._handle(p)[0] + 0.006
+            out += [Part(s - cav, "metal") for s in side_handles("loops", r_at, zh, "x", (-1,))]
+        return out
+
+    def extra_surfaces(self, p):
+        v = self._vessel(p)
+        return [round_bottom("bottom", p["radius"] * p["base_frac"] - 0.008),
+                interior_floor("interior", v.floor_z, v.floor_r)]
+
+
+@register
+class PotLid(PartsFactory):
+    """A loose pot lid resting on its rim: a domed glass or metal shell (open underneath) with
+    a metal rim band, optionally a skirt, a steam vent, and a knob, loop or bar handle."""
+
+    name = "pot_lid"
+    tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Lid})
+    size_class = "small"
+    slots = ["glass", "metal", "plastic"]
+    params = {
+        "radius": Param(0.08, 0.15, doc="radius (m)"),
+        "dome": Param(0.01, 0.04, doc="dome height (m)"),
+        "thickness": Param(0.002, 0.004, doc="shell thickness (m)"),
+        "glass": Param(kind="bool", doc="glass shell with a metal rim band (else all metal)"),
+        "knob_style": Param(kind="choice", choices=("knob", "loop", "bar"), doc="handle"),
+        "skirt": Param(kind="bool", doc="a skirt under the rim that locates it in the pot"),
+        "vent": Param(kind="bool", doc="a steam vent hole"),
+    }
+
+    def _z0(self, p) -> float:
+        """The rim's underside: 8 mm up if the skirt hangs below it."""
+        return 0.008 if p["skirt"] else 0.0
+
+    def parts(self, p, detail):
+        R, z0, t = p["radius"], self._z0(p), p["thickness"]
+        if not detail:
+            return [cheap_cylinder(R, 0.0, lid_top(p["dome"], z0, p["knob_style"], t), "metal")]
+        skirt = R - 0.006 if p["skirt"] else 0.0
+        solids = lid_solids(R, p["dome"], z0, p["knob_style"], skirt, t)
+        shell = solids[0]
+        if p["vent"]:
+            u = 0.55
+            zv = z0 + p["dome"] * float(_dome(np.array([u]))[0])
+            shell = shell - cylinder(0.0025, 0.03, (R * (1 - u), 0.0, zv - 0.01), 12)
+        out = [Part(shell, "glass" if p["glass"] else "metal")]
+        if p["glass"]:
+            band = lathe([(R - 0.005, z0 - 0.0005), (R + 0.0, z0 - 0.0005), (R, z0 + t + 0.003),
+                          (R - 0.005, z0 + t + 0.003)], SECTIONS)
+            if p["dome"] > 0:
+                out.append(Part(band.trim_by_plane((0, 0, 1), 0.0), "metal"))
+        out += [Part(s, "metal") for s in solids[1:-1 if p["knob_style"] == "knob" else None]]
+        if p["knob_style"] == "knob":
+            out.append(Part(solids[-1], "plastic"))
+        return out
+
+
+# ---------------------------------------------------------------------------------- cutlery
+def _smooth(a: float, b: float, power: float = 1.0) -> Callable[[np.ndarray], np.ndarray]:
+    """t -> a + (b - a) * t**power."""
+    return lambda t: a + (b - a) * np.asarray(t) ** power
+
+
+def _round_end(f: Callable[[np.ndarray], np.ndarray], frac: float = 0.06
+               ) -> Callable[[np.ndarray], np.ndarray]:
+    """`f` shrunk to a rounded end over the first `frac` of t."""
+    def g(t):
+        t = np.asarray(t)
+        k = np.sqrt(np.clip(1 - ((frac - t) / frac).clip(0, None) ** 2, 0.12, 1.0))
+        return f(t) * k
+    return g
+
+
+KNIFE_STYLES = ("table", "chef", "paring", "bread", "cleaver")
+
+
+def _blade_outline(style: str, L: float, w: float) -> sg.Polygon:
+    """Outline of a blade from its heel (x = 0) to its tip (x = L), spine along +Y."""
+    x = np.linspace(0.0, L, 17)
+    u = x / L
+    h = w / 2
+    if style in ("table", "bread"):
+        k = np.sqrt(np.clip(1 - ((u - 0.8) / 0.2).clip(0, None) ** 2, 0.0, 1.0))
+        spine, edge = h * k, -h * k
+        spine[-1] = edge[-1] = 0.0
+        if style == "bread":
+            edge = edge + 0.0012 * (np.arange(len(x)) % 2) * (u < 0.9)
+    elif style == "cleaver":
+        k = np.sqrt(np.clip(1 - ((u - 0.93) / 0.07).clip(0, None) ** 2, 0.0, 1.0))
+        spine, edge = np.full_like(x, h), -h + 2 * h * (1 - k) * 0.5
+        spine = h - 2 * h * (1 - k) * 0.5
+        spine[-1], edge[-1] = 0.25 * h, -0.25 * h
+    else:  # chef / paring: straight spine dropping to a point, edge curving up to it
+        tip = 0.4 * h
+        spine = h - (h - tip) * ((u - 0.65) / 0.35).clip(0, None) ** 2
+        edge = -h + (h + tip) * ((u - 0.45) / 0.55).clip(0, None) ** 1.8
+        spine[-1] = edge[-1] = tip
+    pts = np.vstack([np.c_[x, edge], np.c_[x[::-1], spine[::-1]]])
+    poly = sg.Polygon(pts).buffer(0)
+    if style == "cleaver":
+        poly = poly.difference(sg.Point(0.85 * L, 0.6 * h).buffer(0.006, 8))
+    return poly
+
+
+@register
+class Knife(PartsFactory):
+    """A knife lying flat, tip towards +X: table knife, chef's knife, paring knife, bread knife
+    (serrated) or cleaver (with its hanging hole); the blade rests on its tip and rises to the
+    middle of the handle (metal, wood with rivets, or plastic), optionally with a bolster."""
+
+    name = "knife"
+    tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Kitchenware, S.Cutlery,
+                      S.Knife})
+    size_class = "small"
+    slots = ["metal", "wood", "plastic"]
+    params = {
+        "style": Param(kind="choice", choices=KNIFE_STYLES, doc="kind of knife"),
+        "blade_length": Param(0.09, 0.22, doc="blade length (paring: x0.5) (m)"),
+        "blade_width": Param(0.018, 0.05, doc="blade width (table: x0.5, cleaver: x1.8) (m)"),
+        "blade_thickness": Param(0.0015, 0.003, doc="blade thickness (m)"),
+        "handle_length": Param(0.09, 0.13, doc="handle length (m)"),
+        "handle_thickness": Param(0.012, 0.022, doc="handle thickness (m)"),
+        "handle_material": Param(kind="choice", choices=("metal", "wood", "plastic"),
+                                 doc="handle material (wood gets rivets)"),
+        "bolster": Param(kind="bool", doc="a metal collar between handle and blade"),
+    }
+
+    def _dims(self, p) -> tuple[float, float, float, float, float]:
+        """(blade length, blade width, handle length, handle width, handle thickness)."""
+        s = p["style"]
+        L = p["blade_length"] * (0.5 if s == "paring" else 1.0)
+        w = p["blade_width"] * {"table": 0.5, "cleaver": 1.8, "paring": 0.6}.get(s, 1.0)
+        ht = p["handle_thickness"]
+        return L, w, p["handle_length"], 0.024 if s == "cleaver" else 0.02, ht
+
+    def _top(self, p) -> float:
+        ht = self._dims(p)[4]
+        return ht + (0.0003 if p["handle_material"] == "wood" else 0.0)
+
+    def parts(self, p, detail):
+        L, w, Lh, hw, ht = self._dims(p)
+        hmat = p["handle_material"]
+        if not detail:
+            half = max(w / 2, 0.5 * hw * (1.1 if p["bolster"] else 1.05))
+            return [_flat_box(-Lh, L, half, self._top(p), "metal")]
+        tb = p["blade_thickness"]
+        blade = extrude_outline(_blade_outline(p["style"], L, w), 0.0, tb)
+        lift = (ht - tb) / 2  # the heel at the handle's mid-height, the tip on the table
+        blade = blade.transform(np.array([[1, 0, 0, 0], [0, 1, 0, 0], [-lift / L, 0, 1, lift]],
+                                         float))
+        tang = box_between((-0.03, -0.2 * hw, lift), (0.001, 0.2 * hw, lift + tb))
+        width = _round_end(_smooth(1.05 * hw, 0.95 * hw))
+        thick = _round_end(_smooth(ht, 0.92 * ht))
+        handle = sweep(lying_path(-Lh, -0.002, thick, lambda t: 0.0 * t), width, thick, 12,
+                       floor=True)
+        out = [Part(blade, "metal"), Part(tang, "metal"), Part(handle, hmat)]
+        if p["bolster"]:  # a collar as thick as the handle, a little wider, tapering forward
+            bthick = _smooth(ht, 0.5 * ht)
+            out.append(Part(sweep(lying_path(-0.006, 0.012, bthick,
+                                             lambda t: (ht - bthick(t)) / 2),
+                                  _smooth(1.1 * hw, 0.6 * hw), bthick, 3), "metal"))
+        if hmat == "wood":
+            for xr in (-0.8 * Lh, -0.5 * Lh, -0.2 * Lh):
+                out.append(Part(cylinder(0.0022, 0.0025, (xr, 0.0, ht - 0.0022), 12), "metal"))
+        return out
+
+
+def _handle(x0: float, x1: float, w_end: float, w_neck: float, t_end: float, t_neck: float,
+            hump: float, n: int = 14, rise_to: float = 0.0) -> m3d.Manifold:
+    """A cutlery handle from its rounded end (x0, resting on the table) to its neck (x1, whose
+    underside is `rise_to` up), arching `hump` above the table in between."""
+    width = _round_end(_smooth(w_end, w_neck, 1.3))
+    thick = _round_end(_smooth(t_end, t_neck))
+
+    def rise(t):
+        t = np.asarray(t)
+        return hump * np.sin(math.pi * t) ** 1.2 * (1 - t) + rise_to * t ** 2
+
+    return sweep(lying_path(x0, x1, thick, rise), width, thick, n, floor=True)
+
+
+@register
+class Fork(PartsFactory):
+    """A table fork lying on its back, tines towards +X: a flat head with 2-4 tines (slots cut
+    out, corners rounded) and a handle that arches off the table and tapers to a narrow neck."""
+
+    name = "fork"
+    tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Fork})
+    size_class = "small"
+    slots = ["metal", "wood", "plastic"]
+    params = {
+        "tines": Param(2, 4, kind="int", doc="number of tines"),
+        "head_length": Param(0.035, 0.055, doc="head length, neck to tips (m)"),
+        "head_width": Param(0.02, 0.03, doc="head width (m)"),
+        "handle_length": Param(0.11, 0.15, doc="handle length (m)"),
+        "handle_width": Param(0.012, 0.024, doc="handle width at its end (m)"),
+        "thickness": Param(0.0018, 0.0035, doc="metal thickness (m)"),
+        "hump": Param(0.003, 0.012, doc="how high the handle arches off the table (m)"),
+        "handle_material": Param(kind="choice", choices=("metal", "wood", "plastic"),
+                                 doc="handle material"),
+    }
+
+    def _head(self, p) -> sg.Polygon:
+        L, W, n = p["head_length"], p["head_width"], int(p["tines"])
+        wn = 0.006
+        x = np.linspace(0.0, L, 9)
+        half = (wn + (W - wn) * np.sin(0.5 * math.pi * np.minimum(x / (0.4 * L), 1.0))) / 2
+        poly = sg.Polygon(np.vstack([np.c_[x, -half], np.c_[x[::-1], half[::-1]]]))
+        sw = W * (0.12 if n > 2 else 0.3)
+        tw = (W - (n - 1) * sw) / n
+        for i in range(n - 1):
+            y0 = -W / 2 + (i + 1) * tw + i * sw
+            poly = poly.difference(sg.box(0.45 * L, y0, L + 0.01, y0 + sw))
+        r = 0.3 * min(tw, sw)
+        return poly.buffer(-r, join_style="round", resolution=3).buffer(r, join_style="round",
+                                                                        resolution=3)
+
+    def parts(self, p, detail):
+        L, W, Lh = p["head_length"], p["head_width"], p["handle_length"]
+        t, hw = p["thickness"], p["handle_width"]
+        th_end = 1.5 * t
+        top = max(p["hump"] + th_end, 1.5 * t) + 0.0005
+        if not detail:
+            return [_flat_box(-Lh, L, max(W, hw) / 2, top, "metal")]
+        head = extrude_outline(self._head(p), 0.0, t)
+        handle = _handle(-Lh, 0.004, hw, 0.006, th_end, t, p["hump"])
+        return [Part(head, "metal"), Part(handle, p["handle_material"])]
+
+
+@register
+class Spoon(PartsFactory):
+    """A spoon lying on its back, bowl towards +X: teaspoon to serving spoon sizes, an oval or
+    round hollow bowl (a half-ellipsoid shell flattened where it rests) and a handle rising from
+    the table to the bowl's rim."""
+
+    name = "spoon"
+    tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Spoon})
+    size_class = "small"
+    slots = ["metal", "wood", "plastic"]
+    params = {
+        "bowl_length": Param(0.04, 0.075, doc="bowl length (m)"),
+        "bowl_width_frac": Param(0.55, 0.9, doc="bowl width / length (round: soup spoon)"),
+        "bowl_depth": Param(0.006, 0.014, doc="bowl depth (m)"),
+        "handle_length": Param(0.09, 0.16, doc="handle length (m)"),
+        "handle_width": Param(0.012, 0.026, doc="handle width at its end (m)"),
+        "thickness": Param(0.0015, 0.003, doc="metal thickness (m)"),
+        "material": Param(kind="choice", choices=("metal", "wood", "plastic"),
+                          doc="material (wood: thicker)"),
+    }
+
+    def _dims(self, p) -> tuple[float, float, float, float]:
+        """(half length, half width, depth, thickness) of the bowl."""
+        t = p["thickness"] * (2.0 if p["material"] == "wood" else 1.0)
+        a = p["bowl_length"] / 2
+        return a, a * p["bowl_width_frac"], max(p["bowl_depth"], 2.5 * t), t
+
+    def _bowl(self, p) -> m3d.Manifold:
+        a, b, c, t = self._dims(p)
+        unit = m3d.Manifold.sphere(1.0, 28)
+        outer = unit.scale((a, b, c)).translate((a, 0.0, c)).trim_by_plane((0, 0, -1), -c)
+        inner = unit.scale((a - t, b - t, c - t)).translate((a, 0.0, c))
+        return (outer - inner).translate((0.0, 0.0, -0.0004)).trim_by_plane((0, 0, 1), 0.0)
+
+    def parts(self, p, detail):
+        a, b, c, t = self._dims(p)
+        Lh, hw = p["handle_length"], p["handle_width"]
+        top = max(c - 0.0004, c - 0.0004 + 0.35 * t) + 0.0002
+        if not detail:
+            return [_flat_box(-Lh, 2 * a, max(b, hw / 2), top, p["material"])]
+        handle = _handle(-Lh, 0.005, hw, 0.0075, 1.3 * t, 1.3 * t, 0.0,
+                         rise_to=c - 0.0004 - 0.95 * 1.3 * t)
+        return [Part(self._bowl(p), p["material"]), Part(handle, p["material"])]
+
+
+@register
+class Chopsticks(PartsFactory):
+    """A pair of chopsticks lying side by side, touching at their thick ends and splaying
+    slightly towards their tips (+X); round or square, optionally with their tips raised on a
+    small ceramic rest."""
+
+    name = "chopsticks"
+    tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Chopsticks})
+    size_class = "small"
+    slots = ["wood", "plastic", "metal", "ceramic"]
+    params = {
+        "length": Param(0.2, 0.27, doc="length (m)"),
+        "radius": Param(0.0035, 0.005, doc="half-thickness at the thick end (m)"),
+        "tip_frac": Param(0.35, 0.6, doc="tip thickness / thick-end thickness"),
+        "section": Param(kind="choice", choices=("round", "square"), doc="cross-section"),
+        "spread": Param(0.0, 4.0, doc="angle between the two (degrees)"),
+        "rest": Param(kind="bool", doc="tips raised on a chopstick rest"),
+        "material": Param(kind="choice", choices=("wood", "plastic", "metal"), doc="material"),
+    }
+
+    REST_H = 0.012
+
+    def _geometry(self, p) -> tuple[float, float, float, float]:
+        """(rest x, rise of the underside per metre, half-spread angle, y offset)."""
+        L, r = p["length"], p["radius"]
+        xr = 0.75 * L
+        slope = (self.REST_H - SINK) / xr if p["rest"] else 0.0
+        return xr, slope, math.radians(p["spread"]) / 2, r - 0.0005
+
+    def _stick(self, p) -> m3d.Manifold:
+        L, r = p["length"], p["radius"]
+        xr, slope, _, _ = self._geometry(p)
+        thick = _smooth(2 * r, 2 * r * p["tip_frac"])
+        path = lying_path(0.0, L, thick, lambda t: slope * L * np.asarray(t))
+        return sweep(path, thick, thick, 6, p["section"], floor=True)
+
+    def _rest_box(self, p) -> tuple[np.ndarray, np.ndarray]:
+        L, r = p["length"], p["radius"]
+        xr, _, ang, off = self._geometry(p)
+        half = off + (xr + 0.01) * math.tan(ang) + r + 0.006
+        return np.array([xr - 0.008, -half, 0.0]), np.array([xr + 0.008, half, self.REST_H])
+
+    def parts(self, p, detail):
+        L, r = p["length"], p["radius"]
+        xr, slope, ang, off = self._geometry(p)
+        mat = p["material"]
+        if not detail:
+            half = off + L * math.sin(ang) + r * (1 + math.sin(ang)) + 1e-4
+            if p["rest"]:
+                half = max(half, self._rest_box(p)[1][1])
+            top = 2 * r + slope * L * 1.0 + 1e-4
+            return [Part(box_between((0.0, -half, 0.0), (L * math.cos(ang) + r * math.sin(ang)
+                                                          + 1e-4, half, top)), mat)]
+        out = []
+        for s in (-1, 1):
+            stick = self._stick(p).rotate((0.0, 0.0, s * math.degrees(ang))).translate(
+                (0.0, s * off, 0.0))
+            out.append(Part(stick, mat))
+        if p["rest"]:
+            lo, hi = self._rest_box(p)
+            out.append(Part(bevel_box(hi - lo, (lo + hi) / 2, 0.004, 2), "ceramic"))
+        return out
+
+
+@register
+class Spatula(PartsFactory):
+    """A kitchen spatula lying flat, head towards +X: a metal turner (thin square head, slotted),
+    a silicone scraper (thicker head, rounded corners) or a wooden spatula; the handle arches off
+    the table from its rounded end to the neck."""
+
+    name = "spatula"
+    tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Spatula})
+    size_class = "small"
+    slots = ["metal", "rubber", "wood", "plastic"]
+    params = {
+        "style": Param(kind="choice", choices=("turner", "scraper", "wooden"), doc="kind"),
+        "head_length": Param(0.06, 0.11, doc="head length (m)"),
+        "head_width": Param(0.045, 0.09, doc="head width (m)"),
+        "handle_length": Param(0.14, 0.22, doc="handle length (m)"),
+        "handle_width": Param(0.018, 0.03, doc="handle width at its end (m)"),
+        "slots": Param(0, 4, kind="int", doc="slots through a turner's head"),
+        "hump": Param(0.005, 0.02, doc="how high the handle arches off the table (m)"),
+    }
+
+    #: style -> (head thickness, corner radius / width, head slot, handle slot)
+    STYLES = {"turner": (0.0015, 0.08, "metal", "plastic"),
+              "scraper": (0.004, 0.3, "rubber", "plastic"),
+              "wooden": (0.005, 0.25, "wood", "wood")}
+
+    def _head(self, p) -> sg.Polygon:
+        L, W, style = p["head_length"], p["head_width"], p["style"]
+        _, cr, _, _ = self.STYLES[style]
+        r = cr * W
+        # a blade widening from the neck to the full width, square or rounded at the front
+        neck = 0.012
+        x0 = -0.005
+        poly = sg.Polygon([(x0, -neck / 2), (0.3 * L, -W / 2), (L, -W / 2), (L, W / 2),
+                           (0.3 * L, W / 2), (x0, neck / 2)])
+        poly = poly.buffer(-r, join_style="round", resolution=4).buffer(r, join_style="round",
+                                                                        resolution=4)
+        n = int(p["slots"]) if style == "turner" else 0
+        if n:
+            sw = min(0.005, 0.5 * W / (2 * n))
+            for y in (np.arange(n) - (n - 1) / 2) * (0.7 * W / max(n, 1)):
+                poly = poly.difference(sg.box(0.35 * L, y - sw / 2, 0.85 * L, y + sw / 2)
+                                       .buffer(sw / 2 * 0.99, resolution=3))
+        return poly
+
+    def parts(self, p, detail):
+        L, W, Lh = p["head_length"], p["head_width"], p["handle_length"]
+        t, _, head_slot, handle_slot = self.STYLES[p["style"]]
+        hw = p["handle_width"]
+        th = 0.008 if p["style"] != "turner" else 0.01
+        top = p["hump"] + th + 0.0005
+        if not detail:
+            return [_flat_box(-Lh, L, max(W, hw) / 2, top, head_slot)]
+        head = extrude_outline(self._head(p), 0.0, t)
+        handle = _handle(-Lh, 0.004, hw, 0.011, th, max(t * 1.2, 0.004), p["hump"])
+        return [Part(head, head_slot), Part(handle, handle_slot)]
+
+
+BOARD_STYLES = ("rect", "rounded", "paddle")
+
+
+@register
+class CuttingBoard(PartsFactory):
+    """A cutting board: rectangular, rounded, or a paddle with a handle tab (towards +X); edges
+    chamfered, optionally a grip hole (cut through) and a juice groove; its top (inside the
+    groove, clear of the hole) is a support surface."""
+
+    name = "cutting_board"
+    tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.CuttingBoard})
+    size_class = "small"
+    slots = ["wood", "plastic"]
+    params = {
+        "length": Param(0.25, 0.45, doc="X extent of the board (without a paddle's tab) (m)"),
+        "width": Param(0.15, 0.32, doc="Y extent (m)"),
+        "thickness": Param(0.012, 0.04, doc="thickness (m)"),
+        "style": Param(kind="choice", choices=BOARD_STYLES, doc="outline"),
+        "corner_radius": Param(0.005, 0.04, doc="corner rounding (rounded/paddle) (m)"),
+        "handle_hole": Param(kind="bool", doc="a grip hole through the board (or tab)"),
+        "juice_groove": Param(kind="bool", doc="a groove around the top"),
+        "chamfer": Param(0.001, 0.004, doc="edge chamfer (m)"),
+        "plastic": Param(kind="bool", doc="plastic board (else wood)"),
+    }
+
+    def _outlines(self, p) -> list[sg.Polygon]:
+        """Convex pieces of the outline (board, and a paddle's tab)."""
+        L, W, s = p["length"], p["width"], p["style"]
+        r = 0.002 if s == "rect" else min(p["corner_radius"], 0.3 * W)
+        board = sg.box(-L / 2 + r, -W / 2 + r, L / 2 - r, W / 2 - r).buffer(r, resolution=4)
+        if s != "paddle":
+            return [board]
+        tw, tl = 0.35 * W, self._tab(p)
+        tab = sg.box(L / 2 - 0.02, -tw / 2 + 0.01, L / 2 + tl - 0.01, tw / 2 - 0.01).buffer(
+            0.01, resolution=4)
+        return [board, tab]
+
+    def _tab(self, p) -> float:
+        return 0.1 if p["style"] == "paddle" else 0.0
+
+    def _hole(self, p) -> sg.Polygon | None:
+        if not p["handle_hole"]:
+            return None
+        L, W = p["length"], p["width"]
+        if p["style"] == "paddle":
+            return sg.Point(L / 2 + self._tab(p) - 0.03, 0.0).buffer(0.012, resolution=4)
+        return sg.LineString([(L / 2 - 0.045, -0.035), (L / 2 - 0.045, 0.035)]).buffer(
+            0.011, resolution=4)
+
+    def _groove(self, p) -> tuple[sg.Polygon, float] | None:
+        """(the groove's ring, its depth)."""
+        if not p["juice_groove"]:
+            return None
+        outer = self._outlines(p)[0].buffer(-0.015)
+        return outer.difference(outer.buffer(-0.006)), min(0.003, 0.3 * p["thickness"])
+
+    def _slab(self, poly: sg.Polygon, T: float, c: float) -> m3d.Manifold:
+        """A convex outline extruded T thick with its top and bottom edges chamfered by c."""
+        inner = poly.buffer(-c, join_style="mitre")
+        return m3d.Manifold.batch_hull([extrude_outline(inner, 0.0, T),
+                                        extrude_outline(poly, c, T - c)])
+
+    def parts(self, p, detail):
+        T, slot = p["thickness"], "plastic" if p["plastic"] else "wood"
+        L, W = p["length"], p["width"]
+        if not detail:
+            return [Part(box_between((-L / 2, -W / 2, 0.0), (L / 2 + self._tab(p), W / 2, T)),
+                         slot)]
+        c = min(p["chamfer"], 0.3 * T)
+        body = solid_union([self._slab(q, T, c) for q in self._outlines(p)])
+        hole, groove = self._hole(p), self._groove(p)
+        if hole is not None:
+            body = body - extrude_outline(hole, -0.01, T + 0.01)
+        if groove is not None:
+            ring, depth = groove
+            body = body - extrude_outline(ring, T - depth, T + 0.01)
+        return [Part(body, slot)]
+
+    def _top_polygon(self, p) -> sg.Polygon:
+        c = min(p["chamfer"], 0.3 * p["thickness"])
+        top = self._outlines(p)[0].buffer(-c - 0.002)
+        if p["juice_groove"]:
+            top = self._outlines(p)[0].buffer(-0.015 - 0.006 - 0.002)
+        hole = self._hole(p)
+        if hole is not None and p["style"] != "paddle":
+            x_cut = hole.bounds[0] - 0.004
+            top = top.intersection(sg.box(-10, -10, x_cut, 10))
+        return top.simplify(1e-5)
+
+    def bottom_is_solid(self, params):
+        return not self.resolve(params)["handle_hole"]
+
+    def extra_surfaces(self, p):
+        c = min(p["chamfer"], 0.3 * p["thickness"])
+        outline = self._outlines(p)
+        bottom = (outline[0].union(outline[1]) if len(outline) > 1 else outline[0]).buffer(
+            -c - 0.0005).simplify(1e-5)
+        return [support_polygon("top", (0, 0, p["thickness"]), self._top_polygon(p)),
+                support_polygon("bottom", (0, 0, 0), bottom, subpart=Subpart.Bottom, up=False)]
