@@ -421,12 +421,13 @@ class BunkBed(PartsFactory):
                 ya, yb = sorted((-g["ls"] * (yi + OVERLAP), g["ls"] * (yi - self.OPENING)))
             out.append(Part(box_between((x0, ya, z1 - 0.05), (x1, yb, z1)), "wood"))
             out.append(Part(box_between((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025)), "wood"))
+            # posts 4 mm thicker than the rails, so that no faces are coplanar (slivers)
             if s > 0:  # a short post closing the guard at the opening
                 yp = g["ls"] * (yi - self.OPENING)
-                out.append(Part(box_between((x0, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1)), "wood"))
+                out.append(Part(box_between((x0 - 0.004, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1)), "wood"))
             else:
                 for y in np.linspace(-yi * 0.5, yi * 0.5, 2):
-                    out.append(Part(box_between((x0, y - 0.02, z0), (x1, y + 0.02, z1)), "wood"))
+                    out.append(Part(box_between((x0 - 0.004, y - 0.02, z0), (x1 + 0.004, y + 0.02, z1)), "wood"))
         return out
 
     def _ladder(self, p, g, detail) -> list[Part]:

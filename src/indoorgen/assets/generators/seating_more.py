@@ -415,6 +415,10 @@ class SideChair(PartsFactory):
                    (xr, s * ys, zr), (xr - k * (ztop - zr), s * ys, ztop)]
             path = fillet_path(pts, 0.07, 6)
             out += [Part(q, "metal") for q in ([tube(path, rt, 16)] if detail else tube_boxes(path, rt, 6))]
+            if detail:  # floor glides under the runner's ends
+                for gx in (xr - 0.005, xf_floor - 0.09):
+                    out.append(Part(box_between((gx - 0.015, s * ys - 0.007, 0.0), (gx + 0.015, s * ys + 0.007, 0.005)),
+                                    "plastic"))
         out.append(Part(rod_between((xr - 0.01, -ys, rt), (xr - 0.01, ys, rt), rt, detail, 16), "metal"))
         seat = (bevel_box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2), min(0.015, st / 3), 2)
                 if detail else box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2)))
@@ -1105,7 +1109,8 @@ class SofaLShaped(PartsFactory):
             for x, y in spots:
                 cx = x + (lt / 2 if x < 0 else -lt / 2)
                 cy = s * (y + (lt / 2 if y < 0 else -lt / 2))
-                out.append(Part(cylinder(lt / 2 * (0.7 if detail else 1.0), lh + OVERLAP, (cx, cy, 0.0),
+                # 2 cm into the base: its bevelled (faceted) underside rises near the corners
+                out.append(Part(cylinder(lt / 2 * (0.7 if detail else 1.0), lh + 0.02, (cx, cy, 0.0),
                                          16 if detail else 8, radius_top=lt / 2,
                                          circumscribed=not detail), "wood"))
         else:
