@@ -229,6 +229,16 @@ def _case_blocks(case: _Case, x_front: float) -> list[Part]:
     return out
 
 
+def _case_body(case: _Case, detail: bool, x_front: float) -> list[Part]:
+    """The case's boards (detail), or its placeholder: one block to `x_front` when every row is
+    closed, else the boards plus one block per closed row."""
+    if detail or any(row.kind == "open" for row, _, _ in case.rows):
+        out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
+        return out if detail else out + _case_blocks(case, x_front)
+    return [Part(box_between((-case.D / 2, -case.W / 2, case.z_bot), (x_front, case.W / 2, case.z_top + OVERLAP)),
+                 "front")]
+
+
 def front_proud(handle: str) -> float:
     """How far a case's fronts with `handle`s stand in front of the carcass (m)."""
     return MOVING_GAP + FRONT_T + HANDLE_STANDOFF[handle]
@@ -373,16 +383,14 @@ class Cabinet(_CaseFactory):
 
     def parts(self, p, detail):
         case = self.layout(p)
-        W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
-        out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
+        W, D, t = p["width"], p["depth"], p["board_thickness"]
+        out = _case_body(case, detail, D / 2 + front_proud(p["handle"]))
         out.append(_top_board(D, W, case.z_top - OVERLAP, t + OVERLAP, p["top_overhang"], detail))
         out += _base(D, W, p["base_height"], p["base_style"], detail)
-        yi0, yi1 = case.inner()
-        out += [_shelf_board(case, yi0, yi1, z) for z in self._shelves(p, case)]
         if detail:
+            yi0, yi1 = case.inner()
+            out += [_shelf_board(case, yi0, yi1, z) for z in self._shelves(p, case)]
             out += [q for parts, _ in self.fronts(p) for q in parts]
-        else:
-            out += _case_blocks(case, D / 2 + front_proud(p["handle"]))
         return out
 
     def extra_surfaces(self, p):
@@ -555,31 +563,21 @@ class Wardrobe(_CaseFactory):
 
     def parts(self, p, detail):
         case = self.layout(p)
-        W, D, t = p["width"], p["depth"], p["board_thickness"]
-        out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
+        W, D = p["width"], p["depth"]
         sliding = self._sliding(p)
+        proud = front_proud(p["handle"]) if case.rows[0][0].kind == "drawer" or not sliding else 0.0
+        if sliding:
+            proud = max(proud, self._slide_proud())
+        out = _case_body(case, detail, D / 2 + proud)
         over = self._track_depth() if sliding else 0.0
         out.append(Part(box_between((-D / 2, -W / 2, case.z_top - OVERLAP), (D / 2 + over, W / 2, p["height"])),
                         "wood"))
         out += _base(D, W, p["base_height"], p["base_style"], detail)
-        out += self._interior_parts(p, case)
-        if sliding:
-            out += self._tracks(p, case)
         if detail:
+            out += self._interior_parts(p, case)
+            if sliding:
+                out += self._tracks(p, case)
             out += [q for parts, _ in self.fronts(p) for q in parts]
-        else:
-            proud = self._slide_proud() if sliding else front_proud(p["handle"])
-            drawer_front = D / 2 + front_proud(p["handle"])
-            for k, blk in enumerate(_case_blocks(case, D / 2 + proud)):
-                if k < len(case.rows) - 1:  # drawer rows: to the drawer handles
-                    lo, hi = np.asarray(blk.solid.bounding_box()[:3]), np.asarray(blk.solid.bounding_box()[3:])
-                    hi[0] = drawer_front
-                    blk = Part(box_between(lo, hi), "front")
-                elif sliding:  # the door zone, above the bottom track
-                    lo, hi = np.asarray(blk.solid.bounding_box()[:3]), np.asarray(blk.solid.bounding_box()[3:])
-                    lo[2] = self._door_zone(p, case)[0] - OVERLAP
-                    blk = Part(box_between(lo, hi), "front")
-                out.append(blk)
         return out
 
     def extra_surfaces(self, p):
@@ -651,13 +649,11 @@ class Dresser(_CaseFactory):
     def parts(self, p, detail):
         case = self.layout(p)
         W, D, t = p["width"], p["depth"], p["board_thickness"]
-        out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
+        out = _case_body(case, detail, D / 2 + front_proud(p["handle"]))
         out.append(_top_board(D, W, case.z_top - OVERLAP, t + OVERLAP, p["top_overhang"], detail))
         out += _base(D, W, p["base_height"], p["base_style"], detail)
         if detail:
             out += [q for parts, _ in self.fronts(p) for q in parts]
-        else:
-            out += _case_blocks(case, D / 2 + front_proud(p["handle"]))
         return out
 
     def extra_surfaces(self, p):
@@ -720,13 +716,11 @@ class Nightstand(_CaseFactory):
     def parts(self, p, detail):
         case = self.layout(p)
         W, D, t = p["width"], p["depth"], p["board_thickness"]
-        out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
+        out = _case_body(case, detail, D / 2 + front_proud(p["handle"]))
         out.append(_top_board(D, W, case.z_top - OVERLAP, t + OVERLAP, p["top_overhang"], detail))
         out += _base(D, W, self._zb(p), p["base_style"], detail, leg=0.032)
         if detail:
             out += [q for parts, _ in self.fronts(p) for q in parts]
-        else:
-            out += _case_blocks(case, D / 2 + front_proud(p["handle"]))
         return out
 
     def extra_surfaces(self, p):
@@ -959,6 +953,10 @@ class WallShelf(PartsFactory):
             out.append(support_rect(f"shelf_{i}", ((xb + D / 2) / 2, 0, z), (D / 2 - xb) / 2 - 0.015,
                                     hy - 0.015))
         H = zs[-1]
+        r = p["edge_radius"] if p["edge_radius"] > 1e-4 else 0.0
+        if st == "floating" and len(zs) == 1 and r:  # the flat part of the rounded board's back
+            out.append(Surface.rect("back", Subpart.Back, (-D / 2, 0, H - bt / 2), (-1, 0, 0), (0, 1, 0),
+                                    W / 2 - r - 0.0005, bt / 2 - r - 0.0005))
         if st == "bracketed":  # the wall track is what lies flat against the wall
             ya, yb = self._bracket_ys(p)
             out.append(Surface.rect("back", Subpart.Back, (-D / 2, (ya + yb) / 2, H - self.TRACK_H / 2),
@@ -1095,7 +1093,7 @@ class ShoeRack(PartsFactory):
         """(x0, x1) of each slat of a slatted tier, front and back slats at the edges."""
         D, n = p["depth"], int(p["n_slats"])
         sw = 0.6 * D / n
-        xs = np.linspace(-D / 2, D / 2 - sw, n)
+        xs = np.linspace(-D / 2 + 0.001, D / 2 - 0.001 - sw, n)
         return [(float(x), float(x) + sw) for x in xs]
 
     def parts(self, p, detail):
@@ -1115,17 +1113,22 @@ class ShoeRack(PartsFactory):
                     cx, cy = sx * (d2 - ft / 2), sy * (w2 - ft / 2)
                     out.append(Part(box((ft, ft, H), (cx, cy, H / 2)), "metal"))
             yi = w2 - ft
+        e = 0.001  # tiers stop 1 mm inside the frame's faces (no coplanar seams)
         for z in zs:
-            if p["tier_style"] == "solid" or not detail:
-                out.append(Part(box_between((-d2, -yi - o, z - self.BT), (d2, yi + o, z)), "wood"))
-                continue
-            for s in (-1, 1):
-                out.append(Part(box_between((-d2, min(s * (yi + o), s * (yi - self.RAIL)), z - self.BT),
-                                            (d2, max(s * (yi + o), s * (yi - self.RAIL)), z)), "wood"))
-            for x0, x1 in self._slats(p):
-                out.append(Part(box_between((x0, -yi + self.RAIL - o, z - self.BT),
-                                            (x1, yi - self.RAIL + o, z)), "wood"))
+            tier = box_between((-d2 + e, -yi - o, z - self.BT), (d2 - e, yi + o, z))
+            if p["tier_style"] == "slats" and detail:  # one board with the gaps cut through
+                gaps = self._gaps(p)
+                tier = m3d.Manifold.batch_boolean(
+                    [tier] + [box_between((a, ya, z - 0.1), (b, yb, z + 0.1)) for a, b, ya, yb in gaps],
+                    m3d.OpType.Subtract)
+            out.append(Part(tier, "wood"))
         return out
+
+    def _gaps(self, p) -> list[tuple[float, float, float, float]]:
+        """(x0, x1, y0, y1) of the gaps between the slats of a slatted tier."""
+        yi = self._inner(p)
+        sl = self._slats(p)
+        return [(a[1], b[0], -yi + self.RAIL, yi - self.RAIL) for a, b in zip(sl, sl[1:])]
 
     def extra_surfaces(self, p):
         D = p["depth"]
@@ -1134,8 +1137,6 @@ class ShoeRack(PartsFactory):
         outer = [(-D / 2 + m, -yi + m), (D / 2 - m, -yi + m), (D / 2 - m, yi - m), (-D / 2 + m, yi - m)]
         holes = []
         if p["tier_style"] == "slats":
-            sl = self._slats(p)
-            ya, yb = -yi + self.RAIL, yi - self.RAIL
-            holes = [[(a[1], ya), (b[0], ya), (b[0], yb), (a[1], yb)] for a, b in zip(sl, sl[1:])]
+            holes = [[(a, ya), (b, ya), (b, yb), (a, yb)] for a, b, ya, yb in self._gaps(p)]
         poly = sg.Polygon(outer, holes)
         return [support_polygon(f"tier_{i}", (0, 0, z), poly) for i, z in enumerate(self._levels(p))]

@@ -68,9 +68,10 @@ class PalletRack(PartsFactory):
         """A post centred on (x_c, y_c); in detail a C-section open towards the frame's inside
         (`inward` = +1 or -1 along X)."""
         uw, H = p["upright_width"], self._height(p)
-        post = box((uw, uw, H), (x_c, y_c, H / 2))
         if not detail:
-            return post
+            return box((uw, uw, H), (x_c, y_c, H / 2))
+        z0 = 0.004  # stands in its foot plate
+        post = box((uw, uw, H - z0), (x_c, y_c, (H + z0) / 2))
         w = self.WALL
         cut = box((uw, uw - 2 * w, H + 0.02), (x_c + inward * w, y_c, H / 2))
         return post - cut
@@ -84,10 +85,10 @@ class PalletRack(PartsFactory):
             out.append(Part(box_between((-D / 2, y - uw / 2, 0.0), (D / 2, y + uw / 2, H)), "frame"))
             return out
         xa = D / 2 - self.WALL + OVERLAP  # struts reach the posts' webs
-        for s in (-1, 1):  # foot plates
-            out.append(Part(box_between((min(s * D / 2, s * (D / 2 - uw - 0.04)), y - uw / 2, 0.0),
-                                        (max(s * D / 2, s * (D / 2 - uw - 0.04)), y + uw / 2, 0.008)),
-                            "frame"))
+        for s in (-1, 1):  # foot plates, just inside the posts' outer faces
+            a, b = s * (D / 2 - 0.001), s * (D / 2 - uw - 0.04)
+            out.append(Part(box_between((min(a, b), y - uw / 2 + 0.001, 0.0),
+                                        (max(a, b), y + uw / 2 - 0.001, 0.008)), "frame"))
         z0, z1 = 0.15, H - 0.1
         n = max(2, math.ceil((z1 - z0) / 0.9))
         zs = np.linspace(z0, z1, n + 1)
@@ -117,9 +118,9 @@ class PalletRack(PartsFactory):
         zb = z - dt  # beam top
         if not detail:
             return [Part(box_between((-D / 2, y0 - o, zb - bh), (D / 2, y1 + o, z)), "metal")]
-        bd = self.BEAM_D
-        out = [Part(box_between((D / 2 - bd, y0 - o, zb - bh), (D / 2, y1 + o, zb)), "metal"),
-               Part(box_between((-D / 2, y0 - o, zb - bh), (-D / 2 + bd, y1 + o, zb)), "metal")]
+        bd, e = self.BEAM_D, 0.001  # beams 1 mm inside the posts' faces (no coplanar seams)
+        out = [Part(box_between((D / 2 - bd, y0 - o, zb - bh), (D / 2 - e, y1 + o, zb)), "metal"),
+               Part(box_between((-D / 2 + e, y0 - o, zb - bh), (-D / 2 + bd, y1 + o, zb)), "metal")]
         deck_slot = "metal" if p["deck"] == "steel" else "wood"
         out.append(Part(box_between((-D / 2 + 0.003, y0 + 0.003, zb - o), (D / 2 - 0.003, y1 - 0.003, z)),
                         deck_slot))
