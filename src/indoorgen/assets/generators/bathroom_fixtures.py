@@ -95,46 +95,116 @@ def _ring(outer: m3d.CrossSection, inner: m3d.CrossSection) -> sg.Polygon:
 FAUCET_STYLES = ("lever", "gooseneck", "two_handle")
 
 #: a primitive of a small fixture, kept as data so its bounds are known without building it:
-#: ("cyl", radius, height, (x, y, z0)), ("rod", p0, p1, radius), ("box", lo, hi) or
-#: ("arc", (cx, cy, cz), R, tube): a half ring of radius R in the XZ plane, arching up
+#: ("cyl", radius, height, (x, y, z0)), ("rod", p0, p1, radius), ("box", lo, hi),
+#: ("sphere", centre, radius), ("arc", centre, R, tube): a half ring of radius R in the XZ
+#: plane arching up, ("ring", centre, R, tube): a ring in the YZ plane (parallel to a wall),
+#: ("hoop", centre, R, tube): the lower half of such a ring (its ends level with the centre),
+#: ("oval", (x0, y, z), thickness, width, height): an elliptic wall plate from x0 along +X
 Prim = tuple
+
+
+def _cyl_sections(r: float) -> int:
+    return 24 if r > 0.015 else 16
+
+
+def _rod_sections(r: float) -> int:
+    return 12 if r > 0.008 else 8
+
+
+def _circle(n: int, offset: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """cos and sin of n equally spaced angles starting at `offset` (radians)."""
+    a = offset + 2 * np.pi * np.arange(n) / n
+    return np.cos(a), np.sin(a)
+
+
+def _rod_points(p0, p1, r: float) -> np.ndarray:
+    """The vertices of a rod: two polygons turned half a step, so that an axis-aligned rod has
+    flat faces (not edges) facing the other two axes and rests on a facet."""
+    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    d = (p1 - p0) / np.linalg.norm(p1 - p0)
+    e = np.eye(3)[int(np.argmin(np.abs(d)))]
+    u = np.cross(d, e)
+    u /= np.linalg.norm(u)
+    v = np.cross(d, u)
+    n = _rod_sections(r)
+    c, s = _circle(n, np.pi / n)
+    ring = r * (c[:, None] * u + s[:, None] * v)
+    return np.vstack([p0 + ring, p1 + ring])
+
+
+def _ring_points(q: Prim) -> np.ndarray:
+    """The vertices of a "ring", "hoop" or "arc" primitive (as `prim_solid` builds them)."""
+    kind, (cx, cy, cz), R, t = q
+    if kind == "arc":
+        ct, st = _circle(12)
+        th = np.radians(np.linspace(0.0, 180.0, 25))
+    else:  # the tube's section and the ring turned half a step (flat faces outermost); the
+        # hoop's 31 segments put an edge, not a vertex, at its bottom
+        ct, st = _circle(12, np.radians(15.0))
+        th = (np.radians(np.linspace(0.0, 180.0, 32)) if kind == "hoop"
+              else 2 * np.pi * np.arange(32) / 32 + np.pi / 32)
+    rho = (R + t * ct)[None, :]
+    h = (t * st)[None, :]
+    x, y = rho * np.cos(th)[:, None], rho * np.sin(th)[:, None]
+    h = np.broadcast_to(h, x.shape)
+    if kind == "ring":  # revolved about Z, then turned +90 deg about Y: (x, y, z) -> (z, y, -x)
+        pts = np.stack([h, y, -x], axis=-1)
+    elif kind == "hoop":  # (x, y, z) -> (z, -x, -y)
+        pts = np.stack([h, -x, -y], axis=-1)
+    else:  # arc: turned +90 deg about X: (x, y, z) -> (x, -z, y)
+        pts = np.stack([x, -h, y], axis=-1)
+    return pts.reshape(-1, 3) + (cx, cy, cz)
+
+
+def prim_points(q: Prim) -> np.ndarray:
+    """Points whose bounding box is exactly the primitive's (its vertices, or a sphere's poles)."""
+    kind = q[0]
+    if kind == "cyl":
+        r, h, (x, y, z) = q[1], q[2], q[3]
+        c, s = _circle(_cyl_sections(r))
+        ring = np.c_[x + r * c, y + r * s]
+        return np.vstack([np.c_[ring, np.full(len(c), z)], np.c_[ring, np.full(len(c), z + h)]])
+    if kind == "rod":
+        return _rod_points(q[1], q[2], q[3])
+    if kind == "box":
+        return np.array([q[1], q[2]], float)
+    if kind == "sphere":
+        return np.asarray(q[1], float) + q[2] * np.vstack([np.eye(3), -np.eye(3)])
+    if kind == "oval":
+        (x0, y, z), th, w, h = q[1], q[2], q[3], q[4]
+        c, s = _circle(24, np.radians(7.5))
+        e = np.c_[y + w / 2 * c, z + h / 2 * s]
+        return np.vstack([np.c_[np.full(len(c), x0), e], np.c_[np.full(len(c), x0 + th), e]])
+    return _ring_points(q)
 
 
 def prim_solid(q: Prim) -> m3d.Manifold:
     """The solid of a primitive."""
-    if q[0] == "cyl":
-        return cylinder(q[1], q[2], q[3], 24 if q[1] > 0.015 else 16)
-    if q[0] == "rod":
-        return rod(q[1], q[2], q[3], 12 if q[3] > 0.008 else 8)
-    if q[0] == "box":
+    kind = q[0]
+    if kind == "cyl":
+        return cylinder(q[1], q[2], q[3], _cyl_sections(q[1]))
+    if kind in ("rod", "oval"):
+        return m3d.Manifold.hull_points(prim_points(q))
+    if kind == "box":
         return box_between(q[1], q[2])
+    if kind == "sphere":
+        return m3d.Manifold.sphere(q[2], 16).translate(tuple(float(v) for v in q[1]))
     (cx, cy, cz), R, tube = q[1], q[2], q[3]
-    arc = m3d.Manifold.revolve(m3d.CrossSection.circle(tube, 12).translate((R, 0.0)), 24, 180.0)
-    return arc.rotate((90.0, 0.0, 0.0)).translate((cx, cy, cz))
+    if kind == "arc":
+        arc = m3d.Manifold.revolve(m3d.CrossSection.circle(tube, 12).translate((R, 0.0)), 24, 180.0)
+        return arc.rotate((90.0, 0.0, 0.0)).translate((cx, cy, cz))
+    tube_cs = m3d.CrossSection.circle(tube, 12).rotate(15.0).translate((R, 0.0))
+    if kind == "ring":
+        return m3d.Manifold.revolve(tube_cs, 32).rotate((0.0, 0.0, 180.0 / 32)).rotate(
+            (0.0, 90.0, 0.0)).translate((cx, cy, cz))
+    half = m3d.Manifold.revolve(tube_cs, 31, 180.0)  # hoop: in XY over y >= 0, then (z, -x, -y)
+    return half.transform(np.array([[0.0, 0.0, 1.0, cx], [-1.0, 0.0, 0.0, cy], [0.0, -1.0, 0.0, cz]]))
 
 
 def prim_bounds(prims: Sequence[Prim]) -> tuple[np.ndarray, np.ndarray]:
-    """(lo, hi) corners of the box around primitives."""
-    los, his = [], []
-    for q in prims:
-        if q[0] == "cyl":
-            c = np.asarray(q[3], float)
-            los.append(c - (q[1], q[1], 0.0))
-            his.append(c + (q[1], q[1], q[2]))
-        elif q[0] == "rod":  # a cylinder's end discs reach r * sqrt(1 - d_i^2) along axis i
-            e = np.array([q[1], q[2]], float)
-            d = (e[1] - e[0]) / np.linalg.norm(e[1] - e[0])
-            r = q[3] * np.sqrt(np.clip(1.0 - d * d, 0.0, 1.0))
-            los.append(e.min(axis=0) - r)
-            his.append(e.max(axis=0) + r)
-        elif q[0] == "box":
-            los.append(np.asarray(q[1], float))
-            his.append(np.asarray(q[2], float))
-        else:
-            c, R, t = np.asarray(q[1], float), q[2], q[3]
-            los.append(c - (R + t, t, 0.0))
-            his.append(c + (R + t, t, R + t))
-    return np.min(los, axis=0), np.max(his, axis=0)
+    """(lo, hi) corners of the box around primitives (exact: from their vertices)."""
+    pts = np.vstack([prim_points(q) for q in prims])
+    return pts.min(axis=0), pts.max(axis=0)
 
 
 def faucet(x: float, y: float, z: float, style: str, height: float, reach: float) -> list[Prim]:
