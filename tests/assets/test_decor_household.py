@@ -177,6 +177,8 @@ def test_aquarium_lid_top_is_the_support_surface_and_water_is_inside():
         if style == "on_stand":
             assert len(a.joints) == 2 and all(j.kind == "revolute" for j in a.joints)
             assert glass.bounds[0, 2] > 0.55  # the tank stands on the cabinet
+            (inner,) = a.surfaces_of(Subpart.Interior)
+            assert _on_mesh(a, inner).max() < TOL and inner.origin[2] < 0.1
         else:
             assert not a.joints
 

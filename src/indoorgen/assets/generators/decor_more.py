@@ -18,7 +18,7 @@ from ...tags import Semantics as S
 from ...tags import Subpart
 from ..base import Param, Surface, register
 from ..parts import (FRONT_PROUD, Front, Part, bevel_box, box, box_between, cabinet_fronts,
-                     carcass, circle_polygon, cylinder, lathe, rod, solid_union, torus)
+                     carcass, circle_polygon, cylinder, lathe, rod, torus)
 from ._common import PartsFactory, make_joint, support_polygon, support_rect
 
 OVERLAP = 0.002
@@ -538,6 +538,12 @@ class Aquarium(PartsFactory):
         _, lt = self._lid(p)
         x0, x1 = -Dt / 2 + p["glass_thickness"] + 0.04, Dt / 2 - 0.01
         out = [support_rect("top", ((x0 + x1) / 2, 0, lt), (x1 - x0) / 2, L / 2 - 0.01)]
+        if p["style"] == "on_stand":  # the stand cabinet's floor, behind its doors
+            Ws, Ds, t, zb = L + 0.04, Dt + 0.04, 0.018, 0.06
+            out.append(Surface("interior_0", Subpart.Interior, np.array([t / 2, 0.0, zb + t]),
+                               np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                               sg.box(-Ds / 2 + 0.01, -Ws / 2 + t + 0.01, Ds / 2 - 0.01,
+                                      Ws / 2 - t - 0.01)))
         return out
 
 

@@ -49,11 +49,6 @@ def _largest_polygon(cs: m3d.CrossSection) -> sg.Polygon:
     return max(polys, key=lambda q: q.area)
 
 
-def _bbox_of(parts: list[Part]) -> tuple[np.ndarray, np.ndarray]:
-    bbs = np.array([q.solid.bounding_box() for q in parts])
-    return bbs[:, :3].min(axis=0), bbs[:, 3:].max(axis=0)
-
-
 # ------------------------------------------------------------------------------------ towel
 @register
 class Towel(PartsFactory):
@@ -433,7 +428,8 @@ class Remote(PartsFactory):
                 if p["button_style"] == "round":
                     b = cylinder(0.35 * pitch, z1 - z0, (xc, yc, z0), 12)
                 else:
-                    b = box_between((xc - 0.0045, yc - 0.35 * pitch, z0), (xc + 0.0045, yc + 0.35 * pitch, z1))
+                    b = box_between((xc - 0.0045, yc - 0.35 * pitch, z0),
+                                    (xc + 0.0045, yc + 0.35 * pitch, z1))
                 out.append(Part(b, "rubber"))
         return out
 
@@ -575,7 +571,8 @@ class Basket(PartsFactory):
         for s in (-1, 1):
             y = s * half_w
             if not detail:
-                out.append(Part(box_between((-R - m, y - m, H - 0.01), (R + m, y + m, H + R + m)), "fabric"))
+                out.append(Part(box_between((-R - m, y - m, H - 0.01), (R + m, y + m, H + R + m)),
+                                "fabric"))
                 continue
             loop = torus(R, m, sections=16, tube_sections=8).trim_by_plane((0, 1, 0), 0.0)
             out.append(Part(loop.rotate((90.0, 0.0, 0.0)).translate((0.0, y, H - 0.01)), "fabric"))
@@ -699,7 +696,8 @@ class StorageBox(PartsFactory):
         Dl, Wl = D + 2 * fl + 2 * (g + wt if lift else 0.0), W + 2 * fl + 2 * (g + wt if lift else 0.0)
         sk = p["lid_height"] if lift else 0.0
         if not detail:
-            return [Part(box_between((-Dl / 2, -Wl / 2, z0 - sk), (Dl / 2, Wl / 2, z0 + lt)), slot, "lid")]
+            return [Part(box_between((-Dl / 2, -Wl / 2, z0 - sk), (Dl / 2, Wl / 2, z0 + lt)),
+                         slot, "lid")]
         plate = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), lt).translate(
             (0.0, 0.0, z0))
         parts = [plate]

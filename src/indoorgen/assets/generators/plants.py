@@ -202,6 +202,11 @@ def stem_points(base, azimuth, elevation, length, droop, u: np.ndarray, n: int =
     return p, d / np.linalg.norm(d, axis=-1, keepdims=True)
 
 
+def _leaf_parts(leaves: "Leaves", build: bool, n: int = 6) -> list[Part]:
+    """The leaves as foliage parts (none when only the placeholder is wanted)."""
+    return [Part(s, "foliage") for s in leaves.solids(n)] if build else []
+
+
 # ------------------------------------------------------------------------------------- pots
 POT_SHAPES = ("cylinder", "taper", "bowl", "rimmed")
 
@@ -372,7 +377,7 @@ class PottedPlant(_PlantBase):
                          p["leaf_width"])
         leaves.lift_above(0.01)
         crown = cylinder(CROWN_RADIUS, 0.05, (0, 0, z_soil - 0.02), 12)
-        parts = [Part(crown, "foliage")] + [Part(s, "foliage") for s in (leaves.solids() if build else [])]
+        parts = [Part(crown, "foliage")] + _leaf_parts(leaves, build)
         return parts, np.vstack([leaves.points(), [[0.0, 0.0, z_soil + 0.03]]])
 
     def _stem_layout(self, p, z_soil, r_in, n_stems, lean_deg, length, droop):
@@ -406,7 +411,7 @@ class PottedPlant(_PlantBase):
         leaves = Leaves(lp, leaf_az, leaf_el, p["leaf_length"] * scale,
                         p["leaf_width"] * scale, np.full(nl, p["droop"]), "ovate")
         leaves.lift_above(0.01)
-        parts = [Part(s, "wood") for s in stems] + [Part(s, "foliage") for s in (leaves.solids() if build else [])]
+        parts = [Part(s, "wood") for s in stems] + _leaf_parts(leaves, build)
         return parts, np.vstack([spts, leaves.points()])
 
     def _palm(self, p, z_soil, r_in, build):
@@ -436,7 +441,7 @@ class PottedPlant(_PlantBase):
         leaves = Leaves(lp, laz, lel, p["leaf_length"] * size, p["leaf_width"] * 0.5 * size,
                         np.full(len(lp), 0.3 + 0.5 * p["droop"]), "lanceolate")
         leaves.lift_above(0.01)
-        parts = [Part(s, "foliage") for s in fronds] + [Part(s, "foliage") for s in (leaves.solids() if build else [])]
+        parts = [Part(s, "foliage") for s in fronds] + _leaf_parts(leaves, build)
         return parts, np.vstack([fpts, leaves.points()])
 
 
@@ -486,7 +491,7 @@ class TabletopPlant(_PlantBase):
                         petiole=0.006)
         leaves.lift_above(0.005)
         core = cylinder(0.01, max(z_top - z_soil + 0.004, 0.006), (0, 0, z_soil - 0.004), 12)
-        parts = [Part(core, "foliage")] + [Part(s, "foliage") for s in (leaves.solids(5) if build else [])]
+        parts = [Part(core, "foliage")] + _leaf_parts(leaves, build, 5)
         return parts, np.vstack([leaves.points(5), [[0, 0, z_top]]])
 
     def _cactus(self, p, z_soil, r_in, build):
@@ -523,8 +528,9 @@ class TabletopPlant(_PlantBase):
         a = np.arange(k) * 2 * math.pi / k
         mod = np.where(np.arange(k) % 2 == 0, 1.0, 0.86)
         rad = R * prof[:, None] * mod[None, :]
-        ring = (pts[0, :, None, :] + rad[..., None] * (np.cos(a)[None, :, None] * side[0]
-                                                        + np.sin(a)[None, :, None] * normal[0][:, None, :]))
+        across = (np.cos(a)[None, :, None] * side[0]
+                  + np.sin(a)[None, :, None] * normal[0][:, None, :])
+        ring = pts[0, :, None, :] + rad[..., None] * across
         tip = pts[0, -1] + tang[0, -1] * 0.004
         solid = loft(ring, pts[0, 0] - tang[0, 0] * 0.002, tip) if build else None
         return solid, np.vstack([ring.reshape(-1, 3), tip])
@@ -550,5 +556,5 @@ class TabletopPlant(_PlantBase):
                         np.full(nl, p["leaf_size"]), np.full(nl, 0.6 * p["leaf_size"]),
                         np.full(nl, 0.35), "round", thickness=0.0014, petiole=0.0025)
         leaves.lift_above(0.005)
-        parts = [Part(s, "foliage") for s in stems] + [Part(s, "foliage") for s in (leaves.solids(6) if build else [])]
+        parts = [Part(s, "foliage") for s in stems] + _leaf_parts(leaves, build, 6)
         return parts, np.vstack([spts, leaves.points(6)])
