@@ -1,0 +1,461 @@
+"""Cold appliances and the dishwasher: fridges, beverage fridges and built-in dishwashers.
+Fronts face +X; every door, flap and drawer is its own link with a joint (washing machines are
+in appliances_laundry.py, microwaves and monitors in appliances_small.py, cooking appliances in
+appliances_cooking.py).
+
+Cold and washing appliances are open-fronted insulated shells (so opening a door shows the
+inside), with their shelves and racks as `Subpart.Interior` surfaces.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+import manifold3d as m3d
+import numpy as np
+
+from ...tags import Semantics as S
+from ..base import Param, register
+from ..parts import MOVING_GAP, Part, bevel_box, box_between, cylinder, rod
+from ._common import PartsFactory, bottom_rect, support_rect
+from ._kitchen_common import (HANDLE_PROUD, OVERLAP, hinge_motion, interior_rect, joint_for,
+                              open_shell, pull_bar, slide_motion, slotted_plate, window_leaf,
+                              wire_rack)
+
+#: insulated wall thickness of cold appliances (m)
+COLD_WALL = 0.04
+#: plastic liner thickness inside their compartments (m)
+LINER = 0.003
+
+
+def _vent_slots(x_face: float, y0: float, y1: float, z0: float, z1: float, pitch: float = 0.012
+                ) -> list[m3d.Manifold]:
+    """Horizontal slots (cutters) of a kick-plate grille on a +X face between z0 and z1."""
+    n = max(1, int((z1 - z0) / pitch))
+    zs = z0 + (np.arange(n) + 0.5) * (z1 - z0) / n
+    h = min(0.005, 0.45 * (z1 - z0) / n)
+    return [box_between((x_face - 0.012, y0, z - h / 2), (x_face + 0.01, y1, z + h / 2)) for z in zs]
+
+
+def _basket(x0: float, x1: float, y0: float, y1: float, z_top: float, wall_h: float) -> m3d.Manifold:
+    """A dishwasher basket: a rack floor whose top is at z_top (its ends sink into the tub's
+    side walls) with grille walls `wall_h` high along its four sides, inset 1 cm."""
+    t = 0.005
+    floor = wire_rack(x0, x1, y0, y1, z_top, t / 2, 0.03)
+    xa, xb, ya, yb = x0 + 0.01, x1 - 0.01, y0 + 0.011, y1 - 0.011
+    z0 = z_top - 0.001
+    sides = [slotted_plate(xb - xa, wall_h, t, 0.025, 0.004).rotate((90.0, 0.0, 0.0)).translate((xa, y, z0))
+             for y in (ya + t, yb)]
+    ends = [slotted_plate(yb - ya, wall_h, t, 0.025, 0.004).rotate((90.0, 0.0, 90.0)).translate((x, ya, z0))
+            for x in (xa, xb - t)]
+    return m3d.Manifold.batch_boolean([floor] + sides + ends, m3d.OpType.Add)
+
+
+def _shelf_levels(z0: float, z1: float, n: int) -> list[float]:
+    """Upper faces of `n` shelves evenly spaced in a compartment from z0 to z1."""
+    return [z0 + (z1 - z0) * (i + 1) / (n + 1) for i in range(n)]
+
+
+def _grip(x_face: float, y_edge: float, toward: float, z0: float, z1: float, style: str,
+          standoff: float) -> m3d.Manifold:
+    """A vertical door handle near a free edge at y_edge (`toward` = +-1 points into the
+    leaf): a round bar on posts ("bar") or an L-profile strip ("edge")."""
+    if style == "bar":
+        y = y_edge + toward * 0.045
+        return pull_bar(x_face, (y, z0), (y, z1), standoff, 0.011, 12)
+    y_out = y_edge + toward * 0.012
+    strip = box_between((x_face - 0.001, min(y_out, y_out + toward * 0.018), z0),
+                        (x_face + standoff, max(y_out, y_out + toward * 0.018), z1))
+    lip = box_between((x_face + standoff - 0.008, min(y_out, y_out + toward * 0.045), z0),
+                      (x_face + standoff, max(y_out, y_out + toward * 0.045), z1))
+    return strip + lip
+
+
+# ------------------------------------------------------------------------------- fridge
+FRIDGE_STYLES = ("single", "top_freezer", "bottom_freezer", "french")
+
+
+@register
+class Fridge(PartsFactory):
+    """A refrigerator: an insulated open-fronted cabinet on a grilled kick plate with a single
+    door, a top or bottom freezer door, or French doors over a freezer drawer. Doors are hinged
+    at their outer edge (revolute joints) and carry handles and door bins; glass shelves inside
+    are `interior_i` surfaces; `top` is a support surface. Optional water dispenser recess."""
+
+    name = "fridge"
+    tags = frozenset({S.Object, S.Appliance, S.KitchenAppliance, S.Fridge})
+    size_class = "large"
+    slots = ["appliance", "plastic", "glass", "metal", "rubber", "screen"]
+    solid_bottom = True
+    params = {
+        "style": Param(kind="choice", choices=FRIDGE_STYLES, doc="door arrangement"),
+        "width": Param(0.55, 0.92, doc="Y extent of the cabinet (m)"),
+        "depth": Param(0.58, 0.72, doc="X extent of the cabinet without doors (m)"),
+        "height": Param(1.45, 1.95, doc="Z extent (m)"),
+        "door_thickness": Param(0.045, 0.075, doc="door leaf thickness (m)"),
+        "freezer_frac": Param(0.25, 0.38, doc="freezer compartment height / door height"),
+        "handle": Param(kind="choice", choices=("bar", "edge"), doc="round bars or profile strips"),
+        "handle_length": Param(0.25, 0.6, doc="fridge door handle length (m)"),
+        "n_shelves": Param(2, 5, kind="int", doc="glass shelves in the fridge compartment"),
+        "hinge_side": Param(kind="choice", choices=("left", "right"),
+                            doc="hinge side of single-leaf doors"),
+        "edge_radius": Param(0.003, 0.02, doc="rounding of the door edges (m)"),
+        "base_height": Param(0.04, 0.1, doc="height of the grilled kick plate under the doors (m)"),
+        "dispenser": Param(kind="bool", doc="water/ice dispenser recess in a fridge door"),
+    }
+
+    DOOR_GAP = 0.006  # the gasket sits in this gap
+
+    def _compartments(self, p) -> dict[str, tuple[float, float]]:
+        """Inner z-ranges of the fridge and freezer compartments."""
+        H, zb, w = p["height"], p["base_height"], COLD_WALL
+        z0, z1 = zb + w, H - w
+        if p["style"] == "single":
+            return {"fridge": (z0, z1)}
+        zf = (H - zb) * p["freezer_frac"]
+        if p["style"] == "top_freezer":
+            zd = H - zf
+            return {"fridge": (z0, zd - w / 2), "freezer": (zd + w / 2, z1)}
+        zd = zb + zf
+        return {"fridge": (zd + w / 2, z1), "freezer": (z0, zd - w / 2)}
+
+    def _leaves(self, p) -> list[dict[str, Any]]:
+        """The doors and drawers: link, kind (hinge side or "drawer"), y0, y1, z0, z1, and
+        whether it closes the fridge compartment."""
+        W, H, zb = p["width"], p["height"], p["base_height"]
+        comp = self._compartments(p)
+        r = 0.002
+        hs = p["hinge_side"]
+        if p["style"] == "single":
+            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=zb + r, z1=H, fridge=True)]
+        zd = (comp["fridge"][0] + comp["freezer"][1]) / 2 if p["style"] != "top_freezer" else \
+            (comp["fridge"][1] + comp["freezer"][0]) / 2
+        lo, hi = (zb + r, zd - r), (zd + r, H)
+        if p["style"] == "top_freezer":
+            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=True),
+                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1], fridge=False)]
+        if p["style"] == "bottom_freezer":
+            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
+                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=False)]
+        return [dict(link="door_left", kind="left", y0=-W / 2, y1=-r, z0=hi[0], z1=hi[1], fridge=True),
+                dict(link="door_right", kind="right", y0=r, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
+                dict(link="drawer_freezer", kind="drawer", y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=False)]
+
+    def _handle_proud(self, p) -> float:
+        return 0.05 if p["handle"] == "bar" else 0.03
+
+    def _leaf_parts(self, p, leaf) -> tuple[list[Part], Any]:
+        D, W, dt = p["depth"], p["width"], p["door_thickness"]
+        fx = D / 2
+        x0, x1 = fx + self.DOOR_GAP, fx + self.DOOR_GAP + dt
+        y0, y1, z0, z1, link = leaf["y0"], leaf["y1"], leaf["z0"], leaf["z1"], leaf["link"]
+        er = min(p["edge_radius"], 0.4 * dt)
+        slab = bevel_box((dt, y1 - y0, z1 - z0), ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2), er, 2)
+        w = COLD_WALL
+        cy0, cy1 = -W / 2 + w, W / 2 - w
+        if p["dispenser"] and link in ("door_fridge", "door_left") and y1 - y0 > 0.3 and z1 - z0 > 0.7:
+            dw, dh = 0.17, 0.26
+            yc, zc = (y0 + y1) / 2, min(z1 - 0.25 - dh / 2, 1.2)
+            slab = slab - box_between((x1 - 0.025, yc - dw / 2, zc - dh / 2), (x1 + 0.01, yc + dw / 2, zc + dh / 2))
+            extra = [Part(box_between((x1 - 0.026, yc - dw / 2 - 0.001, zc - dh / 2 - 0.001),
+                                      (x1 - 0.024, yc + dw / 2 + 0.001, zc + dh / 2 + 0.001)), "plastic", link),
+                     Part(box_between((x1 - 0.001, yc - 0.04, zc + dh / 2 + 0.02),
+                                      (x1 + 0.001, yc + 0.04, zc + dh / 2 + 0.06)), "screen", link)]
+        else:
+            extra = []
+        out = [Part(slab, "appliance", link), *extra]
+        # gasket: a rubber ring on the back of the leaf, standing in the door gap
+        g = 0.02
+        ring = box_between((x0 - self.DOOR_GAP + 0.0015, y0 + 0.01, z0 + 0.01), (x0 + 0.001, y1 - 0.01, z1 - 0.01)) - \
+            box_between((x0 - 0.02, y0 + 0.01 + g, z0 + 0.01 + g), (x0 + 0.01, y1 - 0.01 - g, z1 - 0.01 - g))
+        out.append(Part(ring, "rubber", link))
+        hp = self._handle_proud(p)
+        if leaf["kind"] == "drawer":
+            zc = z1 - 0.06
+            out.append(Part(pull_bar(x1, (y0 + 0.12, zc), (y1 - 0.12, zc), hp, 0.011, 12), "metal", link))
+            f0, f1 = self._compartments(p)["freezer"]
+            c = 2 * MOVING_GAP  # clear of the liner all round
+            out.append(Part(open_shell((-D / 2 + w + 0.05, cy0 + c, f0 + c), (x0 + 0.001, cy1 - c, f1 - 0.03),
+                                       0.005, open_top=True), "plastic", link))
+            return out, slide_motion(link, (x1, 0.0, zc))
+        free_edge, toward = (y1, -1.0) if leaf["kind"] == "left" else (y0, 1.0)
+        L = self._handle_z(p, leaf)
+        out.append(Part(_grip(x1, free_edge, toward, L[0], L[1], p["handle"], hp), "metal", link))
+        if leaf["fridge"]:  # door bins: open-topped trays on the inner face reaching into the cavity
+            by0 = max(y0, cy0) + 0.012
+            by1 = min(y1, cy1) - 0.012
+            for zt in _shelf_levels(z0 + 0.05, z1 - 0.1, 3):
+                out.append(Part(open_shell((fx - 0.05, by0, zt - 0.09), (x0 + 0.001, by1, zt), 0.004, open_top=True),
+                                "plastic", link))
+        return out, hinge_motion(leaf["kind"], x1, y0, y1, z0, z1, link)
+
+    def _handle_z(self, p, leaf) -> tuple[float, float]:
+        """(bottom, top) of a door's handle: fridge doors' around chest height (or next to the
+        freezer door's), freezer doors' next to the split between the two doors."""
+        z0, z1 = leaf["z0"], leaf["z1"]
+        h = z1 - z0
+        if leaf["fridge"]:
+            L = min(p["handle_length"], 0.7 * h)
+            if p["style"] == "top_freezer":
+                za = z1 - 0.05 - L
+            else:
+                za = min(max(1.1 - L / 2, z0 + 0.08), z1 - 0.08 - L)
+        else:
+            L = min(0.25, 0.6 * h)
+            za = z0 + 0.05 if p["style"] == "top_freezer" else z1 - 0.05 - L
+        return za, za + L
+
+    def parts(self, p, detail):
+        D, W, H, zb, dt = p["depth"], p["width"], p["height"], p["base_height"], p["door_thickness"]
+        if not detail:
+            x1 = D / 2 + self.DOOR_GAP + dt + self._handle_proud(p)
+            return [Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H)), "appliance"),
+                    Part(box_between((D / 2 - 0.01, -W / 2, zb), (x1, W / 2, H)), "appliance")]
+        w = COLD_WALL
+        comp = self._compartments(p)
+        body = box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H))
+        cutters = [box_between((-D / 2 + w, -W / 2 + w, z0), (D / 2 + 0.01, W / 2 - w, z1)) for z0, z1 in comp.values()]
+        cutters += _vent_slots(D / 2, -W / 2 + 0.05, W / 2 - 0.05, 0.012, zb - 0.01)
+        out = [Part(m3d.Manifold.batch_boolean([body] + cutters, m3d.OpType.Subtract), "appliance")]
+        # a plastic liner inside each compartment (its visible faces are the cavity's)
+        for z0, z1 in comp.values():
+            out.append(Part(open_shell((-D / 2 + w - 0.001, -W / 2 + w - 0.001, z0 - 0.001),
+                                       (D / 2 - 0.003, W / 2 - w + 0.001, z1 + 0.001), LINER + 0.001), "plastic"))
+        for zs in self._shelves(p):
+            out.append(Part(box_between((-D / 2 + w - 0.001, -W / 2 + w - 0.002, zs - 0.006),
+                                        (D / 2 - 0.075, W / 2 - w + 0.002, zs)), "glass"))
+        for leaf in self._leaves(p):
+            out += self._leaf_parts(p, leaf)[0]
+        return out
+
+    def _shelves(self, p) -> list[float]:
+        z0, z1 = self._compartments(p)["fridge"]
+        levels = _shelf_levels(z0, z1, int(p["n_shelves"]))
+        if "freezer" in self._compartments(p) and p["style"] != "french":
+            f0, f1 = self._compartments(p)["freezer"]
+            if f1 - f0 > 0.35:
+                levels.append((f0 + f1) / 2)
+        return levels
+
+    def joints(self, p):
+        D = p["depth"]
+        return [joint_for(self._leaf_parts(p, leaf)[1], slide=0.7 * (D - COLD_WALL - 0.05))
+                for leaf in self._leaves(p)]
+
+    def extra_surfaces(self, p):
+        D, W, H = p["depth"], p["width"], p["height"]
+        w = COLD_WALL
+        levels = [(z0 + LINER, D / 2 - 0.06) for z0, _ in self._compartments(p).values()]
+        levels += [(z, D / 2 - 0.075) for z in self._shelves(p)]
+        out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),
+               bottom_rect((0, 0, 0), D / 2, W / 2)]
+        for i, (z, x1) in enumerate(sorted(levels)):
+            out.append(interior_rect(f"interior_{i}", -D / 2 + w + LINER, x1, -W / 2 + w + LINER,
+                                     W / 2 - w - LINER, z))
+        return out
+
+
+# ----------------------------------------------------------------------- beverage fridge
+@register
+class BeverageFridge(PartsFactory):
+    """An under-counter beverage fridge: an insulated cabinet on a vented kick plate, a
+    full-height glass door in a frame (hinged left or right, bar or profile handle), wire or
+    glass shelves visible through it, and an optional LED strip lighting the cavity. Shelves
+    are `interior_i` surfaces; `top` is a support surface."""
+
+    name = "beverage_fridge"
+    tags = frozenset({S.Object, S.Appliance, S.KitchenAppliance, S.Fridge, S.BeverageFridge})
+    size_class = "large"
+    slots = ["appliance", "plastic", "glass", "metal", "emissive"]
+    solid_bottom = True
+    params = {
+        "width": Param(0.38, 0.61, doc="Y extent (m)"),
+        "depth": Param(0.5, 0.6, doc="X extent of the cabinet without its door (m)"),
+        "height": Param(0.82, 0.88, doc="Z extent (fits under a countertop) (m)"),
+        "frame_width": Param(0.03, 0.07, doc="width of the door frame around the glass (m)"),
+        "n_shelves": Param(3, 6, kind="int", doc="shelves inside"),
+        "shelf_style": Param(kind="choice", choices=("wire", "glass"), doc="wire racks or glass shelves"),
+        "hinge_side": Param(kind="choice", choices=("left", "right"), doc="door hinge side"),
+        "handle": Param(kind="choice", choices=("bar", "edge"), doc="round bar or profile strip"),
+        "base_height": Param(0.06, 0.11, doc="height of the vented kick plate (m)"),
+        "light": Param(kind="bool", doc="LED strip under the cavity's ceiling"),
+    }
+
+    DOOR_T = 0.04
+
+    def _cavity(self, p) -> tuple[float, float, float, float, float, float]:
+        D, W, H, zb, w = p["depth"], p["width"], p["height"], p["base_height"], COLD_WALL
+        return -D / 2 + w, D / 2, -W / 2 + w, W / 2 - w, zb, H - w
+
+    def _shelves(self, p) -> list[float]:
+        _, _, _, _, z0, z1 = self._cavity(p)
+        return _shelf_levels(z0, z1 - 0.05, int(p["n_shelves"]))
+
+    def _door(self, p) -> tuple[list[Part], Any]:
+        D, W, H, zb = p["depth"], p["width"], p["height"], p["base_height"]
+        x0, x1 = D / 2 + MOVING_GAP, D / 2 + MOVING_GAP + self.DOOR_T
+        y0, y1, z0, z1 = -W / 2, W / 2, zb - 0.03, H
+        fw = p["frame_width"]
+        parts = window_leaf(x0, x1, y0, y1, z0, z1, (fw, fw, fw + 0.02, fw), "door", "metal")
+        hs = p["hinge_side"]
+        edge, toward = (y1, -1.0) if hs == "left" else (y0, 1.0)
+        zh = z0 + 0.5 * (z1 - z0)
+        proud = 0.045 if p["handle"] == "bar" else 0.03
+        if p["handle"] == "bar":  # on the frame's stile
+            y = edge + toward * fw / 2
+            parts.append(Part(pull_bar(x1, (y, zh - 0.18), (y, zh + 0.2), proud, 0.009, 12), "metal", "door"))
+        else:
+            parts.append(Part(_grip(x1, edge, toward, zh - 0.2, zh + 0.2, "edge", proud), "metal", "door"))
+        return parts, hinge_motion(hs, x1, y0, y1, z0, z1, "door")
+
+    def parts(self, p, detail):
+        D, W, H, zb = p["depth"], p["width"], p["height"], p["base_height"]
+        if not detail:
+            proud = 0.045 if p["handle"] == "bar" else 0.03
+            return [Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H)), "appliance"),
+                    Part(box_between((D / 2 - 0.01, -W / 2, zb - 0.03), (D / 2 + MOVING_GAP + self.DOOR_T + proud, W / 2, H)),
+                         "appliance")]
+        cx0, cx1, cy0, cy1, cz0, cz1 = self._cavity(p)
+        # cabinet: the cavity from the kick plate up; the kick plate itself is recessed and vented
+        body = box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H))
+        cutters = [box_between((cx0, cy0, cz0), (cx1 + 0.01, cy1, cz1)),
+                   box_between((D / 2 - 0.03, -W / 2 - 0.01, -0.01), (D / 2 + 0.01, W / 2 + 0.01, zb - 0.03))]
+        cutters += _vent_slots(D / 2 - 0.03, -W / 2 + 0.04, W / 2 - 0.04, 0.01, zb - 0.04)
+        out = [Part(m3d.Manifold.batch_boolean([body] + cutters, m3d.OpType.Subtract), "appliance"),
+               Part(open_shell((cx0 - 0.001, cy0 - 0.001, cz0 - 0.001), (cx1 - 0.003, cy1 + 0.001, cz1 + 0.001),
+                               LINER + 0.001), "plastic")]
+        sx1 = cx1 - 0.03
+        for zs in self._shelves(p):
+            if p["shelf_style"] == "wire":
+                out.append(Part(wire_rack(cx0 + 0.005, sx1, cy0 - 0.001, cy1 + 0.001, zs, 0.0025, 0.028), "metal"))
+            else:
+                out.append(Part(box_between((cx0, cy0 - 0.001, zs - 0.006), (sx1, cy1 + 0.001, zs)), "glass"))
+        if p["light"]:
+            out.append(Part(box_between((cx0 + 0.02, cy0 + 0.03, cz1 - 0.008), (cx0 + 0.06, cy1 - 0.03, cz1 + 0.001)),
+                            "emissive"))
+        out += self._door(p)[0]
+        return out
+
+    def joints(self, p):
+        return [joint_for(self._door(p)[1])]
+
+    def extra_surfaces(self, p):
+        D, W, H, zb = p["depth"], p["width"], p["height"], p["base_height"]
+        cx0, cx1, cy0, cy1, cz0, _ = self._cavity(p)
+        out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),
+               bottom_rect((-0.015, 0, 0), D / 2 - 0.015, W / 2)]
+        levels = [cz0 + LINER] + self._shelves(p)
+        for i, z in enumerate(levels):
+            out.append(interior_rect(f"interior_{i}", cx0 + LINER, cx1 - 0.03, cy0 + LINER, cy1 - LINER, z))
+        return out
+
+
+# ---------------------------------------------------------------------------- dishwasher
+@register
+class Dishwasher(PartsFactory):
+    """A built-in dishwasher: a stainless tub in an under-counter cabinet on a recessed kick
+    plate, a drop-down door (its own link, opening flat) with either a visible control strip
+    (display and buttons on the front) or an integrated cabinet-panel front with the buttons
+    on its top edge; bar or pocket handle. Two or three wire racks are `interior_i` surfaces."""
+
+    name = "dishwasher"
+    tags = frozenset({S.Object, S.Appliance, S.KitchenAppliance, S.Dishwasher})
+    size_class = "large"
+    slots = ["appliance", "metal", "plastic", "front", "screen"]
+    solid_bottom = True
+    params = {
+        "width": Param(0.44, 0.6, doc="Y extent (m)"),
+        "depth": Param(0.55, 0.62, doc="X extent of the cabinet without its door (m)"),
+        "height": Param(0.8, 0.87, doc="Z extent (fits under a countertop) (m)"),
+        "kick_height": Param(0.08, 0.14, doc="kick plate height under the door (m)"),
+        "panel": Param(kind="choice", choices=("visible", "integrated"),
+                       doc="control strip on the front, or a cabinet panel with top controls"),
+        "handle": Param(kind="choice", choices=("bar", "pocket"), doc="bar handle or a pocket grip"),
+        "door_thickness": Param(0.04, 0.07, doc="door thickness (m)"),
+        "n_buttons": Param(3, 7, kind="int", doc="program buttons"),
+        "third_rack": Param(kind="bool", doc="a cutlery tray near the top of the tub"),
+    }
+
+    WALL = 0.025
+
+    def _tub(self, p) -> tuple[float, float, float, float, float, float]:
+        D, W, H, zk, w = p["depth"], p["width"], p["height"], p["kick_height"], self.WALL
+        return -D / 2 + w, D / 2, -W / 2 + w, W / 2 - w, zk + w, H - w
+
+    def _racks(self, p) -> list[float]:
+        _, _, _, _, z0, z1 = self._tub(p)
+        out = [z0 + 0.05, z0 + 0.5 * (z1 - z0)]
+        if p["third_rack"]:
+            out.append(z1 - 0.06)
+        return out
+
+    def _door(self, p) -> tuple[list[Part], Any]:
+        D, W, H, zk, dt = p["depth"], p["width"], p["height"], p["kick_height"], p["door_thickness"]
+        x0, x1 = D / 2 + MOVING_GAP, D / 2 + MOVING_GAP + dt
+        y0, y1, z0, z1 = -W / 2, W / 2, zk + 0.003, H
+        visible = p["panel"] == "visible"
+        leaf = box_between((x0, y0, z0), (x1, y1, z1))
+        parts = [Part(leaf, "appliance" if visible else "front", "door"),
+                 Part(box_between((x0 - 0.001, y0 + 0.03, z0 + 0.03), (x0 + 0.001, y1 - 0.03, z1 - 0.03)),
+                      "metal", "door")]  # the stainless inner face
+        nb = int(p["n_buttons"])
+        if visible:
+            sh = 0.09
+            parts.append(Part(box_between((x1 - 0.001, y0, z1 - sh), (x1 + 0.002, y1, z1)), "plastic", "door"))
+            parts.append(Part(box_between((x1 + 0.001, y1 - 0.17, z1 - 0.06), (x1 + 0.003, y1 - 0.05, z1 - 0.03)),
+                              "screen", "door"))
+            for i in range(nb):
+                yb = y0 + 0.05 + i * 0.035
+                parts.append(Part(box_between((x1 + 0.001, yb, z1 - 0.06), (x1 + 0.005, yb + 0.022, z1 - 0.045)),
+                                  "metal", "door"))
+            zh = z1 - sh - 0.035
+        else:  # buttons on the top edge of the door
+            for i in range(nb):
+                yb = y1 - 0.06 - i * 0.03
+                parts.append(Part(box_between((x0 + 0.012, yb - 0.02, z1 - 0.002), (x0 + 0.028, yb, z1 + 0.002)),
+                                  "plastic", "door"))
+            zh = z1 - 0.06
+        if p["handle"] == "bar":
+            parts.append(Part(pull_bar(x1, (-min(0.2, 0.35 * W), zh), (min(0.2, 0.35 * W), zh), HANDLE_PROUD, 0.007, 12),
+                              "metal", "door"))
+        else:  # a pocket grip recessed into the top of the door
+            parts[0] = Part(leaf - box_between((x1 - 0.025, -0.1, z1 - 0.03), (x1 + 0.01, 0.1, z1 + 0.01)),
+                            parts[0].slot, "door")
+        return parts, hinge_motion("bottom", x1, y0, y1, z0, z1, "door")
+
+    def _proud(self, p) -> float:
+        return MOVING_GAP + p["door_thickness"] + (HANDLE_PROUD if p["handle"] == "bar" else 0.005)
+
+    def parts(self, p, detail):
+        D, W, H, zk = p["depth"], p["width"], p["height"], p["kick_height"]
+        top_extra = 0.002 if p["panel"] == "integrated" else 0.0
+        if not detail:
+            return [Part(box_between((-D / 2, -W / 2, zk), (D / 2, W / 2, H)), "appliance"),
+                    Part(box_between((-D / 2, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)), "plastic"),
+                    Part(box_between((D / 2 - 0.01, -W / 2, zk), (D / 2 + self._proud(p), W / 2, H + top_extra)),
+                         "appliance")]
+        tx0, tx1, ty0, ty1, tz0, tz1 = self._tub(p)
+        out = [Part(open_shell((-D / 2, -W / 2, zk), (D / 2, W / 2, H), self.WALL), "appliance"),
+               Part(open_shell((tx0 - 0.001, ty0 - 0.001, tz0 - 0.001), (tx1 - 0.002, ty1 + 0.001, tz1 + 0.001), 0.003),
+                    "metal"),
+               Part(box_between((-D / 2, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)), "plastic")]
+        for i, zr in enumerate(self._racks(p)):
+            wall_h = 0.1 if i == 0 else 0.07 if i == 1 else 0.03
+            out.append(Part(_basket(tx0 + 0.02, tx1 - 0.04, ty0 - 0.001, ty1 + 0.001, zr, wall_h), "metal"))
+        # spray arm under the lower rack
+        zs = self._racks(p)[0] - 0.025
+        xc = (tx0 + tx1) / 2 - 0.01
+        out.append(Part(cylinder(0.02, zs - tz0 + 0.001, (xc, 0.0, tz0 - 0.001), 16), "plastic"))
+        out.append(Part(box_between((xc - 0.02, ty0 + 0.06, zs - 0.004), (xc + 0.02, ty1 - 0.06, zs + 0.006)), "plastic"))
+        out += self._door(p)[0]
+        return out
+
+    def joints(self, p):
+        return [joint_for(self._door(p)[1])]
+
+    def extra_surfaces(self, p):
+        D, W, zk = p["depth"], p["width"], p["kick_height"]
+        tx0, tx1, ty0, ty1, _, _ = self._tub(p)
+        out = [bottom_rect((-0.03, 0, 0), D / 2 - 0.03, W / 2 - 0.02)]
+        for i, z in enumerate(self._racks(p)):
+            out.append(interior_rect(f"interior_{i}", tx0 + 0.02, tx1 - 0.04, ty0 + 0.01, ty1 - 0.01, z, 0.005))
+        return out
