@@ -358,8 +358,11 @@ class BunkBed(PartsFactory):
 
     def _level(self, p, g, zd: float, upper: bool, detail) -> list[Part]:
         xi, yi, rt, pt = g["xi"], g["yi"], self.RAIL_T, g["pt"]
-        out = []
         z0, z1 = zd - 0.05, zd - 0.05 + self.RAIL_H
+        if not detail:  # rails, deck, mattress and bedding as one block
+            ztop = max(z1, zd + g["mt"] + (0.11 if p["bedding"] else 0.0))
+            return [Part(box_between((-xi - rt, -yi - rt, z0), (xi + rt, yi + rt, ztop)), "wood")]
+        out = []
         for s in (-1, 1):  # long rails front/back, end rails
             out.append(Part(box_between((s * xi - (0 if s > 0 else rt), -yi - OVERLAP, z0),
                                         (s * xi + (rt if s > 0 else 0), yi + OVERLAP, z1)), "wood"))
@@ -393,8 +396,11 @@ class BunkBed(PartsFactory):
         spans = [(zl - 0.05 + self.RAIL_H - OVERLAP, zl + g["mt"] + 0.3), (zu - 0.05 + self.RAIL_H - OVERLAP, H - 0.02)]
         for s in (-1, 1):
             y0, y1 = (s * yi - (0 if s > 0 else rt), s * yi + (rt if s > 0 else 0))
+            if not detail:  # both spans (and the rails between them) as one board
+                out.append(Part(box_between((-xi - OVERLAP, y0, spans[0][0]), (xi + OVERLAP, y1, spans[1][1])), "wood"))
+                continue
             for z0, z1 in spans:
-                if style == "panel" or not detail:
+                if style == "panel":
                     out.append(Part(box_between((-xi - OVERLAP, y0 + 0.005, z0), (xi + OVERLAP, y1 - 0.005, z1)), "wood"))
                 elif style == "slats":
                     out.append(Part(box_between((-xi - OVERLAP, y0, z1 - 0.05), (xi + OVERLAP, y1, z1)), "wood"))
@@ -419,6 +425,12 @@ class BunkBed(PartsFactory):
                 ya, yb = -yi - OVERLAP, yi + OVERLAP
             else:  # front: open at the ladder end
                 ya, yb = sorted((-g["ls"] * (yi + OVERLAP), g["ls"] * (yi - self.OPENING)))
+            if not detail:  # rails and posts as one board (the closing post included)
+                if s > 0:
+                    ya, yb = ya - 0.02, yb + 0.02
+                out.append(Part(box_between((x0 - 0.004, ya, z0), (x1 + (0.01 if s > 0 else 0.004), yb, z1)),
+                                "wood"))
+                continue
             out.append(Part(box_between((x0, ya, z1 - 0.05), (x1, yb, z1)), "wood"))
             out.append(Part(box_between((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025)), "wood"))
             # posts 4 mm thicker than the rails, so that no faces are coplanar (slivers)
@@ -441,6 +453,9 @@ class BunkBed(PartsFactory):
         out = []
         rung_zs = np.arange(p["rung_spacing"], top - 0.1, p["rung_spacing"])
         if p["ladder_style"] == "vertical":
+            if not detail:
+                xr = (x_in + X) / 2
+                return [Part(box_between((min(x_in, xr - 0.014), ya, 0.0), (max(X, xr + 0.014), yb, top)), "wood")]
             for y in (ya, yb - sw):
                 out.append(Part(box_between((x_in, y, 0.0), (X, y + sw, top)), "wood"))
             if detail:

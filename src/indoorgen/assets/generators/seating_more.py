@@ -330,22 +330,24 @@ class SideChair(PartsFactory):
             out.append(Part(rod_between(a, b, rr, detail), "wood"))
             mids.append((a + b) / 2)
         out.append(Part(rod_between(mids[0], mids[1], rr, detail), "wood"))
-        # spindle back under a bowed crest rail, leaning back about the seat's top
+        # spindle back under a bowed crest rail, leaning back from the seat's top
         n, zc = int(p["n_spindles"]), sh + p["back_height"] - 0.02
+        k = math.tan(math.radians(tilt))
         yc, xb, bow = sw / 2 - 0.05, -sd / 2 + 0.045, 0.04
+        lean = k * (zc - sh)  # how far the crest stands behind the spindles' feet
         ys = np.linspace(-yc, yc, 25)
-        crest = np.c_[xb - bow * (1 - (ys / yc) ** 2), ys, np.full(len(ys), zc)]
-        spindles = []
-        for i, y in enumerate(np.linspace(-yc + 0.01, yc - 0.01, n + 2)):
-            x = xb - bow * (1 - (y / yc) ** 2)
-            spindles.append(((xb + 0.3 * (x - xb), y, sh - 0.01), (x, y, zc),
-                             0.011 if i in (0, n + 1) else 0.0065))
+        crest = np.c_[xb - bow * (1 - (ys / yc) ** 2) - lean, ys, np.full(len(ys), zc)]
+        y = np.linspace(-yc + 0.01, yc - 0.01, n + 2)
+        x = xb - bow * (1 - (y / yc) ** 2)
+        feet = np.c_[xb + 0.3 * (x - xb) + 0.01 * k, y, np.full(n + 2, sh - 0.01)]
+        tops = np.c_[x - lean, y, np.full(n + 2, zc)]
+        radii = np.full(n + 2, 0.0065)
+        radii[[0, -1]] = 0.011  # thicker end spindles
         if detail:
-            back = [tube([a, b], r, 10) for a, b, r in spindles] + [tube(crest, 0.02, 12)]
-            out += [Part(shear_back(b, sh, tilt), "wood") for b in back]
+            out += [Part(tube([a, b], r, 10), "wood") for a, b, r in zip(feet, tops, radii)]
+            out.append(Part(tube(crest, 0.02, 12), "wood"))
         else:
-            pts = [tube_rings(crest, 0.02, 12)] + [tube_rings(sp[:2], sp[2], 10) for sp in spindles]
-            out.append(Part(points_box(shear_points(np.vstack(pts), sh, tilt), 0.0), "wood"))
+            out.append(Part(_spindle_back_box(crest, 0.02, feet, tops, radii), "wood"))
         return out
 
     def _bentwood(self, p, detail):
@@ -483,6 +485,17 @@ class SideChair(PartsFactory):
             plan = sg.box(-sd / 2 + 0.03, -sw / 2 + 0.03, sd / 2 - 0.04, sw / 2 - 0.03)
         plan = plan.intersection(sg.box(x_back, -sw, x_front, sw))
         return [seat_surface("seat", sh, plan)]
+
+
+def _spindle_back_box(crest: np.ndarray, crest_r: float, feet: np.ndarray, tops: np.ndarray,
+                      radii: np.ndarray) -> m3d.Manifold:
+    """The box around a crest rail tube and straight spindle tubes (exact ring extents)."""
+    half_c = crest_r * np.sqrt(np.clip(1.0 - _tangents(crest) ** 2, 0.0, 1.0))
+    t = _unit_rows(tops - feet)
+    half_s = radii[:, None] * np.sqrt(np.clip(1.0 - t ** 2, 0.0, 1.0))
+    lo = np.vstack([crest - half_c, feet - half_s, tops - half_s]).min(axis=0)
+    hi = np.vstack([crest + half_c, feet + half_s, tops + half_s]).max(axis=0)
+    return box_between(lo, hi)
 
 
 def _dedupe(points: Sequence[Sequence[float]]) -> np.ndarray:
@@ -650,19 +663,22 @@ class OfficeChair(PartsFactory):
             arm_pts = np.array(arm_pts)
             out.append(Part(m3d.Manifold.hull_points(arm_pts) if detail else points_box(arm_pts, 0.0),
                             "plastic"))
-            # caster: a twin wheel on a horizontal axle, its hood and a swivel stem
-            c = d * (R + 0.02)
-            wheel = cylinder(cr, 0.045, (0, 0, -0.0225), 16).rotate((90.0, 0.0, 0.0)).rotate(
-                (0.0, 0.0, math.degrees(th) + 90.0)).translate((float(c[0]), float(c[1]), cr))
-            hood = box((2.2 * cr, 0.02, cr + 0.012), (0, 0, 0)).rotate(
-                (0.0, 0.0, math.degrees(th))).translate((float(c[0]), float(c[1]), 1.5 * cr + 0.006))
-            sc = d * R
-            stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr), n)
-            pieces = [wheel, hood, stem]
+            # caster: a twin wheel on a radial axle, its hood and a swivel stem
+            c, sc = d * (R + 0.02), d * R
             if detail:
+                wheel = cylinder(cr, 0.045, (0, 0, -0.0225), 16).rotate((90.0, 0.0, 0.0)).rotate(
+                    (0.0, 0.0, math.degrees(th) + 90.0)).translate((float(c[0]), float(c[1]), cr))
+                hood = box((0.05, 1.76 * cr, cr + 0.012), (0, 0, 0)).rotate(
+                    (0.0, 0.0, math.degrees(th))).translate((float(c[0]), float(c[1]), 1.5 * cr + 0.006))
+                stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr), 16)
                 out += [Part(wheel, "plastic"), Part(hood, "metal"), Part(stem, "metal")]
-            else:
-                out.append(Part(aabb_box(pieces), "plastic"))
+            else:  # the box around them, from their corners
+                pts = []
+                for ht, hd, zs in ((cr, 0.0225, (0.0, 2 * cr)), (0.88 * cr, 0.025, (cr, 2 * cr + 0.012))):
+                    pts += [c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd, hd) for z in zs]
+                pts += [sc + (a, b, z) for a in (-0.008, 0.008) for b in (-0.008, 0.008)
+                        for z in (2 * cr, L["tip"] + OVERLAP)]
+                out.append(Part(points_box(np.array(pts), 0.0), "plastic"))
         zc0 = L["hub1"]
         out.append(Part(cylinder(0.028, L["gas"] - zc0 + OVERLAP, (0, 0, zc0 - OVERLAP), n * 2,
                                  circumscribed=not detail), "metal"))
