@@ -271,3 +271,14 @@ def test_leaning_book_leans_against_the_row():
         # the leaning book takes more room than it would upright
         assert a.extents[1] > upright + books[-1]["thickness"]
         assert a.mesh.body_count == 1
+
+
+def test_material_choices_name_real_materials():
+    from indoorgen.assets.materials.base import material_names
+
+    known = set(material_names())
+    for name in MINE:
+        f = get_factory(name)
+        for slot, choices in f.material_choices.items():
+            assert slot in f.slots, (name, slot)
+            assert set(choices) <= known, (name, set(choices) - known)

@@ -25,8 +25,6 @@ from .books import Book
 
 #: how far neighbouring books sink into each other (m)
 SINK = 0.001
-#: slot names of Book's parts -> ours
-SLOTS = {"cover": "cardboard", "pages": "paper"}
 SPINES = ("flat", "rounded", "mixed")
 
 
@@ -53,8 +51,8 @@ def _book_params(rng: np.random.Generator, height: float, depth: float, thicknes
 
 
 def _book(bp: dict[str, Any], detail: bool) -> list[Part]:
-    """An upright book (spine +X, thickness along Y, z from 0 to its height) as our parts."""
-    return [Part(q.solid, SLOTS[q.slot]) for q in Book().parts(bp, detail)]
+    """An upright book's parts (spine +X, thickness along Y, z from 0 to its height)."""
+    return Book().parts(bp, detail)
 
 
 def _moved(parts: list[Part], fn) -> list[Part]:
@@ -65,7 +63,7 @@ class _Books(PartsFactory):
     """Shared declaration of the book groups."""
 
     size_class = "small"
-    slots = ["cardboard", "paper"]
+    slots = ["cover", "pages"]  # as Book's (the material library dresses them as books)
     tags = frozenset({S.Object, S.SmallObject, S.Decor, S.Book})
 
 

@@ -14,14 +14,12 @@ from typing import Any, Callable
 
 import manifold3d as m3d
 import numpy as np
-import shapely.geometry as sg
 
 from ...tags import Semantics as S
-from ...tags import Subpart
 from ..base import Param, register
 from ..parts import Part, bevel_box, box_between, cylinder, lathe, rod, solid_union
 from ._common import PartsFactory, support_rect
-from .tableware_more import (SECTIONS, bowl_outer, bowl_params, bowl_vessel, cheap_cylinder,
+from .tableware_more import (SECTIONS, bowl_base_radius, bowl_params, bowl_vessel, cheap_cylinder,
                              interior_floor, round_bottom, solid_revolve)
 
 #: how far touching pieces sink into each other so that their union is one shell (m)
@@ -38,6 +36,7 @@ class Can(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Food, S.Container, S.Can})
     size_class = "small"
     slots = ["metal", "paper"]
+    material_choices = {"metal": {"painted_metal": 3.0, "brushed_steel": 1.0, "chrome": 0.5}}
     params = {
         "kind": Param(kind="choice", choices=("drink", "food"), doc="drink can or food tin"),
         "radius": Param(0.026, 0.05, doc="body radius (drink cans: capped at 34 mm) (m)"),
@@ -214,6 +213,7 @@ class FoodBag(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Food, S.FoodBag})
     size_class = "small"
     slots = ["plastic", "paper"]
+    material_choices = {"plastic": {"glossy_plastic": 3.0, "matte_plastic": 1.0}}
     params = {
         "style": Param(kind="choice", choices=("pillow", "stand_up", "brick"), doc="bag type"),
         "length": Param(0.15, 0.35, doc="pillow: length including seals; others: height (m)"),
@@ -381,14 +381,16 @@ def _pear(r: float) -> _Fruit:
     def solids(o):
         body = m3d.Manifold.batch_hull([m3d.Manifold.sphere(r, 20),
                                         m3d.Manifold.sphere(0.6 * r, 16).translate((0, 0, r))])
-        return [_at(body, o), cylinder(0.0015, 0.014, tuple(np.asarray(o) + (0, 0, 1.5 * r - 0.002)), 8)]
+        stem = cylinder(0.0015, 0.014, tuple(np.asarray(o) + (0, 0, 1.5 * r - 0.002)), 8)
+        return [_at(body, o), stem]
     return _Fruit(contact, 1.5 * r + 0.012, r, solids)
 
 
 def _banana(scale: float, rng: np.random.Generator) -> _Fruit:
     """A ten-sided tube bent along a horizontal arc, tips turned up, tapering to a stalk: an
     extrusion warped in one vectorised pass (no booleans)."""
-    arc, half, yaw = rng.uniform(0.1, 0.13) * scale, rng.uniform(0.55, 0.7), rng.uniform(0, 2 * math.pi)
+    arc, half = rng.uniform(0.1, 0.13) * scale, rng.uniform(0.55, 0.7)
+    yaw = rng.uniform(0, 2 * math.pi)
     r0, lift = 0.017 * scale, 0.012 * scale
 
     def radius(t):
@@ -396,7 +398,8 @@ def _banana(scale: float, rng: np.random.Generator) -> _Fruit:
 
     def centre(t):
         th = (2 * t - 1) * half
-        return np.stack([arc * np.sin(th), arc * (1 - np.cos(th)) - arc * (1 - math.sin(half) / half),
+        sag = arc * (1 - math.sin(half) / half)  # centres the arc's mean on the origin
+        return np.stack([arc * np.sin(th), arc * (1 - np.cos(th)) - sag,
                          lift * (2 * t - 1) ** 2], axis=-1), th
 
     c, s = math.cos(yaw), math.sin(yaw)
@@ -413,9 +416,10 @@ def _banana(scale: float, rng: np.random.Generator) -> _Fruit:
     tc = np.linspace(0.04, 0.9, 9)
     cen, _ = centre(tc)
     contact = np.c_[cen @ rot.T, 0.9 * radius(tc)]
-    ends, _ = centre(np.linspace(0, 1, 21))
-    reach = float(np.linalg.norm((ends @ rot.T)[:, :2], axis=1).max()) + r0
-    top = float(ends[:, 2].max()) + r0
+    levels = np.linspace(0.0, 1.0, 18)  # the extrusion's 16 divisions and two ends
+    ends, _ = centre(levels)
+    reach = float((np.linalg.norm((ends @ rot.T)[:, :2], axis=1) + radius(levels)).max())
+    top = float((ends[:, 2] + radius(levels)).max())
     return _Fruit(contact, top, reach, lambda o: [_at(m3d.Manifold.extrude(
         m3d.CrossSection.circle(1.0, 10), 1.0, 16).warp_batch(warp), o)])
 
@@ -437,35 +441,37 @@ def _drop(spheres: np.ndarray, xy: np.ndarray, surf: np.ndarray, placed: np.ndar
     """Heights of a fruit's origin when its contact spheres (k, 4), moved to each of the
     positions `xy` (m, 2), are lowered until they touch the bowl's inner surface `surf` ((r, z)
     points of its meridian) or a placed sphere (n, 4)."""
-    c = spheres[None, :, :2] + xy[:, None, :]                      # (m, k, 2)
-    r = spheres[None, :, 3:4]                                      # (1, k, 1)
-    rho = np.linalg.norm(c, axis=2)[..., None]                     # (m, k, 1)
-    dr = surf[None, None, :, 0] - rho
-    hit = np.abs(dr) < r
-    h = surf[None, None, :, 1] + np.sqrt(np.where(hit, r ** 2 - dr ** 2, 0.0))
-    need = np.where(hit, h, -np.inf).max(axis=2)                   # (m, k)
+    cx = spheres[None, :, 0] + xy[:, 0:1]                          # (m, k)
+    cy = spheres[None, :, 1] + xy[:, 1:2]
+    r = spheres[None, :, 3, None]                                  # (1, k, 1)
+    dr = surf[:, 0] - np.sqrt(cx * cx + cy * cy)[..., None]        # (m, k, S)
+    h2 = r * r - dr * dr
+    need = np.where(h2 > 0, surf[:, 1] + np.sqrt(np.maximum(h2, 0.0)), -np.inf).max(axis=2)
     if len(placed):
-        d = np.linalg.norm(c[:, :, None, :] - placed[None, None, :, :2], axis=3)
-        rr = r + placed[None, None, :, 3]
-        touch = d < rr
-        h = placed[None, None, :, 2] + np.sqrt(np.where(touch, rr ** 2 - d ** 2, 0.0))
-        need = np.maximum(need, np.where(touch, h, -np.inf).max(axis=2))
+        dx, dy = cx[..., None] - placed[:, 0], cy[..., None] - placed[:, 1]
+        rr = r + placed[:, 3]
+        h2 = rr * rr - dx * dx - dy * dy
+        top = np.where(h2 > 0, placed[:, 2] + np.sqrt(np.maximum(h2, 0.0)), -np.inf)
+        need = np.maximum(need, top.max(axis=2))
     return (need - spheres[None, :, 2]).max(axis=1)
 
 
 def _inner_surface(p: dict[str, Any]) -> tuple[np.ndarray, float]:
-    """(r, z) points every 3 mm along a bowl's inner surface, and the opening's radius."""
+    """(r, z) points at most 4 mm apart along a bowl's inner surface, and the opening's
+    radius."""
     v = bowl_vessel(p)
     poly = max((np.asarray(q, float) for q in v.hollow.to_polygons()), key=len)
+    a, b = poly, np.roll(poly, -1, axis=0)
     top = poly[:, 1].max()
-    segs = []
-    for a, b in zip(poly, np.roll(poly, -1, axis=0)):
-        if (a[0] < 1e-9 and b[0] < 1e-9) or (a[1] >= top - 1e-9 and b[1] >= top - 1e-9):
-            continue  # the axis and the open top are not surfaces
-        n = max(2, int(np.linalg.norm(b - a) / 0.003) + 1)
-        segs.append(a + np.linspace(0, 1, n)[:, None] * (b - a))
-    opening = p["radius"] - p["wall_thickness"]
-    return np.vstack(segs), opening
+    # the axis and the open top are not surfaces
+    on_axis = (a[:, 0] < 1e-9) & (b[:, 0] < 1e-9)
+    on_top = (a[:, 1] >= top - 1e-9) & (b[:, 1] >= top - 1e-9)
+    a, b = a[~(on_axis | on_top)], b[~(on_axis | on_top)]
+    n = np.maximum(2, (np.linalg.norm(b - a, axis=1) / 0.004).astype(int) + 1)  # per segment
+    seg = np.repeat(np.arange(len(a)), n)
+    u = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n - 1, n)
+    pts = a[seg] + u[:, None] * (b[seg] - a[seg])
+    return pts, p["radius"] - p["wall_thickness"]
 
 
 @register
@@ -489,26 +495,36 @@ class FruitBowl(PartsFactory):
         return not self.resolve(params)["foot_ring"]
 
     def _fruits(self, p) -> list[tuple[_Fruit, np.ndarray]]:
-        """The fruits and where their origins go, settled one by one: of 12 random spots,
-        each takes the one where it comes to rest lowest."""
+        """The fruits and where their origins go, settled one by one: each is dropped at the
+        lowest-resting of 8 random spots, then rolls downhill to the lowest resting spot on two
+        rings around it (2 and 0.8 cm away), so none balances on top of another."""
         rng = np.random.default_rng(int(p["layout"]))
         surf, opening = _inner_surface(p)
         mix = FRUIT_MIXES[p["fruit_mix"]]
         kinds, w = list(mix), np.array(list(mix.values()), float)
+        ring = np.exp(1j * np.linspace(0, 2 * math.pi, 8, endpoint=False))
+        ring = np.concatenate([0.02 * ring, 0.008 * ring * np.exp(1j * math.pi / 8)])
+        ring = np.stack([ring.real, ring.imag], axis=1)
         placed = np.zeros((0, 4))
         out = []
         for _ in range(int(p["n_fruits"])):
-            fruit = _make_fruit(kinds[int(rng.choice(len(kinds), p=w / w.sum()))],
-                                p["fruit_scale"], rng)
+            kind = kinds[int(np.searchsorted(np.cumsum(w) / w.sum(), rng.random()))]
+            fruit = _make_fruit(kind, p["fruit_scale"], rng)
             room = opening - 0.003 - fruit.reach
             if room <= 0:
                 continue
-            rho, th = room * np.sqrt(rng.random(12)), rng.uniform(0, 2 * math.pi, 12)
-            xy = np.c_[rho * np.cos(th), rho * np.sin(th)]
-            z = _drop(fruit.contact, xy, surf, placed)
-            i = int(np.argmin(z))
-            off = np.array([xy[i, 0], xy[i, 1], z[i] - SINK])
-            placed = np.vstack([placed, fruit.contact + np.r_[off, 0.0]])
+            rho, th = room * np.sqrt(rng.random(8)), rng.uniform(0, 2 * math.pi, 8)
+            xy = np.stack([rho * np.cos(th), rho * np.sin(th)], axis=1)
+            for rolled in (False, True):
+                if rolled:
+                    xy = best[None, :] + ring
+                    r = np.linalg.norm(xy, axis=1, keepdims=True)
+                    xy = np.vstack([best, xy * np.minimum(1.0, room / np.maximum(r, 1e-9))])
+                z = _drop(fruit.contact, xy, surf, placed)
+                i = int(np.argmin(z))
+                best, z_best = xy[i], z[i]
+            off = np.array([best[0], best[1], z_best - SINK])
+            placed = np.vstack([placed, fruit.contact + np.append(off, 0.0)])
             out.append((fruit, off))
         return out
 
@@ -522,5 +538,5 @@ class FruitBowl(PartsFactory):
 
     def extra_surfaces(self, p):
         v = bowl_vessel(p)
-        rb = p["radius"] * p["foot_frac"] - (0.0 if p["foot_ring"] else min(0.003, 0.3 * p["height"]))
-        return [round_bottom("bottom", rb), interior_floor("interior", v.floor_z, v.floor_r)]
+        return [round_bottom("bottom", bowl_base_radius(p)),
+                interior_floor("interior", v.floor_z, v.floor_r)]

@@ -9,7 +9,7 @@ vectorised warp, no booleans) whose ends rest on the table too.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import Callable
 
 import manifold3d as m3d
 import numpy as np
@@ -26,6 +26,10 @@ from .tableware_more import (SECTIONS, Vessel, cheap_cylinder, interior_floor, r
 
 #: how far touching pieces sink into each other so that their union is one shell (m)
 SINK = 0.001
+#: kitchen metals: stainless, chrome, enamelled (painted) and brass, never rusty
+COOKWARE_METAL = {"brushed_steel": 4.0, "chrome": 1.0, "painted_metal": 1.5, "brass": 0.3}
+CUTLERY_METAL = {"brushed_steel": 3.0, "chrome": 2.0, "brass": 0.3}
+BOARD_WOOD = {"oak": 2.0, "walnut": 1.5, "pine_planks": 0.7, "plywood": 0.3}
 #: clearance between a lid and the pot it lifts off (m)
 LID_GAP = 0.002
 
@@ -203,6 +207,7 @@ class CookingPot(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Container, S.Pot})
     size_class = "small"
     slots = ["metal", "glass", "wood", "plastic"]
+    material_choices = {"metal": COOKWARE_METAL}
     solid_bottom = True
     params = {
         "radius": Param(0.08, 0.14, doc="outer radius at the rim (m)"),
@@ -301,6 +306,7 @@ class FryingPan(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Pan})
     size_class = "small"
     slots = ["metal", "wood"]
+    material_choices = {"metal": COOKWARE_METAL}
     solid_bottom = True
     params = {
         "radius": Param(0.1, 0.16, doc="outer radius at the rim (m)"),
@@ -368,6 +374,7 @@ class PotLid(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Lid})
     size_class = "small"
     slots = ["glass", "metal", "plastic"]
+    material_choices = {"metal": COOKWARE_METAL}
     params = {
         "radius": Param(0.08, 0.15, doc="radius (m)"),
         "dome": Param(0.01, 0.04, doc="dome height (m)"),
@@ -463,6 +470,7 @@ class Knife(PartsFactory):
                       S.Knife})
     size_class = "small"
     slots = ["metal", "wood", "plastic"]
+    material_choices = {"metal": CUTLERY_METAL}
     params = {
         "style": Param(kind="choice", choices=KNIFE_STYLES, doc="kind of knife"),
         "blade_length": Param(0.09, 0.22, doc="blade length (paring: x0.5) (m)"),
@@ -538,6 +546,7 @@ class Fork(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Fork})
     size_class = "small"
     slots = ["metal", "wood", "plastic"]
+    material_choices = {"metal": CUTLERY_METAL}
     params = {
         "tines": Param(2, 4, kind="int", doc="number of tines"),
         "head_length": Param(0.035, 0.055, doc="head length, neck to tips (m)"),
@@ -587,6 +596,7 @@ class Spoon(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Spoon})
     size_class = "small"
     slots = ["metal", "wood", "plastic"]
+    material_choices = {"metal": CUTLERY_METAL}
     params = {
         "bowl_length": Param(0.04, 0.075, doc="bowl length (m)"),
         "bowl_width_frac": Param(0.55, 0.9, doc="bowl width / length (round: soup spoon)"),
@@ -632,6 +642,7 @@ class Chopsticks(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Tableware, S.Cutlery, S.Chopsticks})
     size_class = "small"
     slots = ["wood", "plastic", "metal", "ceramic"]
+    material_choices = {"metal": CUTLERY_METAL}
     params = {
         "length": Param(0.2, 0.27, doc="length (m)"),
         "radius": Param(0.0035, 0.005, doc="half-thickness at the thick end (m)"),
@@ -696,6 +707,7 @@ class Spatula(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Spatula})
     size_class = "small"
     slots = ["metal", "rubber", "wood", "plastic"]
+    material_choices = {"metal": CUTLERY_METAL}
     params = {
         "style": Param(kind="choice", choices=("turner", "scraper", "wooden"), doc="kind"),
         "head_length": Param(0.06, 0.11, doc="head length (m)"),
@@ -756,6 +768,7 @@ class CuttingBoard(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.CuttingBoard})
     size_class = "small"
     slots = ["wood", "plastic"]
+    material_choices = {"wood": BOARD_WOOD}
     params = {
         "length": Param(0.25, 0.45, doc="X extent of the board (without a paddle's tab) (m)"),
         "width": Param(0.15, 0.32, doc="Y extent (m)"),

@@ -165,6 +165,13 @@ def bowl_foot_height(p: dict[str, Any]) -> float:
     return min(max(0.12 * p["height"], 0.004), 0.01) if p["foot_ring"] else 0.0
 
 
+def bowl_base_radius(p: dict[str, Any]) -> float:
+    """Radius of the part of a bowl's underside that rests on the table (the flat base inside
+    its edge rounding, or the foot ring's outer edge)."""
+    rb = p["radius"] * p["foot_frac"]
+    return rb if p["foot_ring"] else rb - min(0.003, 0.3 * p["height"])
+
+
 def bowl_vessel(p: dict[str, Any]) -> Vessel:
     floor = bowl_foot_height(p) + p["base_thickness"]
     return revolve_vessel(bowl_outer(p), p["wall_thickness"], floor)
@@ -205,8 +212,8 @@ class Bowl(PartsFactory):
 
     def extra_surfaces(self, p):
         v = bowl_vessel(p)
-        rb = p["radius"] * p["foot_frac"] - (0.0 if p["foot_ring"] else min(0.003, 0.3 * p["height"]))
-        return [round_bottom("bottom", rb), interior_floor("interior", v.floor_z, v.floor_r)]
+        return [round_bottom("bottom", bowl_base_radius(p)),
+                interior_floor("interior", v.floor_z, v.floor_r)]
 
 
 # ------------------------------------------------------------------------------------- mugs
@@ -349,7 +356,8 @@ class Wineglass(PartsFactory):
         if shape == "coupe":
             g = np.sin(0.5 * math.pi * t) ** 0.6
         else:
-            rise = np.sqrt(1.0 - (1.0 - u) ** 2) if shape == "balloon" else np.sin(0.5 * math.pi * u) ** 0.9
+            rise = (np.sqrt(1.0 - (1.0 - u) ** 2) if shape == "balloon"
+                    else np.sin(0.5 * math.pi * u) ** 0.9)
             g = np.where(t <= tm, rise,
                          1.0 - (1.0 - rim) * ((t - tm) / (1.0 - tm)).clip(0, 1) ** 1.5)
         r0 = 1.6 * rs
@@ -461,7 +469,7 @@ class BottleSpec:
 
 
 #: closure kind -> (radius over the lip, length down from the top, height above it, slot)
-CLOSURES = {"cork": (-0.0025, 0.002, 0.007, "wood"), "capsule": (0.0005, 0.045, 0.001, "metal"),
+CLOSURES = {"cork": (-0.0025, 0.002, 0.007, "cork"), "capsule": (0.0005, 0.045, 0.001, "metal"),
             "screwcap": (0.0008, 0.055, 0.002, "metal"), "crown": (0.0008, 0.005, 0.0015, "metal"),
             "plastic_cap": (0.0012, 0.013, 0.002, "plastic")}
 
@@ -533,7 +541,10 @@ class _Bottle(PartsFactory):
     """Shared machinery of the bottle generators: subclasses turn params into a BottleSpec."""
 
     size_class = "small"
-    slots = ["glass", "plastic", "metal", "wood", "paper"]
+    slots = ["glass", "plastic", "metal", "cork", "paper"]
+    material_choices = {"glass": {"clear_glass": 4.0, "frosted_glass": 0.5},
+                        "metal": {"painted_metal": 3.0, "brushed_steel": 1.0, "brass": 0.5},
+                        "plastic": {"glossy_plastic": 3.0, "matte_plastic": 1.0}}
 
     def spec(self, p: dict[str, Any]) -> BottleSpec:
         raise NotImplementedError
@@ -670,6 +681,8 @@ class Jar(PartsFactory):
     tags = frozenset({S.Object, S.SmallObject, S.Kitchenware, S.Container, S.Jar})
     size_class = "small"
     slots = ["glass", "metal", "plastic"]
+    material_choices = {"glass": {"clear_glass": 4.0, "frosted_glass": 0.5},
+                        "metal": {"painted_metal": 3.0, "brushed_steel": 1.5, "brass": 0.5}}
     solid_bottom = True
     params = {
         "radius": Param(0.035, 0.06, doc="body radius (m)"),
