@@ -137,7 +137,7 @@ class FoodBox(PartsFactory):
             return m
         return m.rotate((0.0, -90.0, 0.0)).translate((0.0, 0.0, p["depth"] / 2))
 
-    def _features(self, p, detail: bool) -> list[Part]:
+    def _features(self, p) -> list[Part]:
         H, W, D, r = p["height"], p["width"], p["depth"], p["edge_radius"]
         f = p["feature"]
         out = []
@@ -169,7 +169,7 @@ class FoodBox(PartsFactory):
             return [Part(self._rot(p, box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, top))),
                          "cardboard")]
         body = bevel_box((D, W, H), (0, 0, H / 2), r, 1)
-        out = [Part(body, "cardboard")] + self._features(p, detail)
+        out = [Part(body, "cardboard")] + self._features(p)
         if p["feature"] == "window":
             cut, pane = self._window(p)
             out = [Part(body - cut, "cardboard"), Part(pane, "plastic")]
@@ -238,7 +238,8 @@ class FoodBag(PartsFactory):
             return L, W, 0.5 * T * (2 - p["squash"]) - 0.002
         return T, W, L
 
-    def _ridges(self, x0: float, x1: float, W: float, z: float, along_x: bool) -> list:
+    def _ridges(self, x0: float, x1: float, W: float, z: float, along_x: bool
+                ) -> list[m3d.Manifold]:
         """Crimp ridges across a seal strip spanning x0..x1 (or z0..z1 if not along_x)."""
         out = []
         for q in np.linspace(x0, x1, 6)[1:-1]:

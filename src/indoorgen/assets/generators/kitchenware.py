@@ -259,10 +259,10 @@ class CookingPot(PartsFactory):
                 x1, hw, za, zb = long_handle_bounds(*self._long(p), "stick")
                 out.append(Part(box_between((R - 0.01, -hw, za), (x1, hw, zb)), "metal"))
             else:
-                reach, hh = SIDE_REACH[hs], SIDE_HALF_H[hs]
+                reach, hh = self._r_at(p, zh) + SIDE_REACH[hs], SIDE_HALF_H[hs]
                 half_x = 0.031 if hs == "loops" else 0.03
-                out.append(Part(box_between((-half_x, -R - reach, zh - hh),
-                                            (half_x, R + reach, zh + hh)), "metal"))
+                out.append(Part(box_between((-half_x, -reach, zh - hh),
+                                            (half_x, reach, zh + hh)), "metal"))
             if p["has_lid"]:
                 out.append(cheap_cylinder(rl, H, lid_top(p["lid_dome"], z0, p["knob_style"]),
                                           "metal"))
@@ -275,7 +275,8 @@ class CookingPot(PartsFactory):
         else:
             out += [Part(s - cav, "metal") for s in side_handles(hs, self._r_at(p, zh), zh)]
         if p["has_lid"]:
-            skirt = R - p["wall_thickness"] - LID_GAP
+            # the skirt hangs 8 mm into the pot, clear of its (possibly tapering) wall
+            skirt = self._r_at(p, H - 0.008) - p["wall_thickness"] - LID_GAP
             lid_slot = "glass" if p["knob_style"] == "knob" else "metal"
             knob_slot = "plastic" if p["knob_style"] == "knob" else "metal"
             solids = lid_solids(rl, p["lid_dome"], z0, p["knob_style"], skirt)
@@ -401,13 +402,14 @@ class PotLid(PartsFactory):
             zv = z0 + p["dome"] * float(_dome(np.array([u]))[0])
             shell = shell - cylinder(0.0025, 0.03, (R * (1 - u), 0.0, zv - 0.01), 12)
         out = [Part(shell, "glass" if p["glass"] else "metal")]
-        if p["glass"]:
-            band = lathe([(R - 0.005, z0 - 0.0005), (R + 0.0, z0 - 0.0005), (R, z0 + t + 0.003),
+        if p["glass"]:  # a metal band clasping the glass's rim
+            band = lathe([(R - 0.005, z0 - 0.0005), (R, z0 - 0.0005), (R, z0 + t + 0.003),
                           (R - 0.005, z0 + t + 0.003)], SECTIONS)
-            if p["dome"] > 0:
-                out.append(Part(band.trim_by_plane((0, 0, 1), 0.0), "metal"))
-        out += [Part(s, "metal") for s in solids[1:-1 if p["knob_style"] == "knob" else None]]
-        if p["knob_style"] == "knob":
+            out.append(Part(band.trim_by_plane((0, 0, 1), 0.0), "metal"))
+        # the skirt and handle pieces are metal, except a knob's plastic head (the last piece)
+        knob = p["knob_style"] == "knob"
+        out += [Part(s, "metal") for s in (solids[1:-1] if knob else solids[1:])]
+        if knob:
             out.append(Part(solids[-1], "plastic"))
         return out
 
@@ -444,8 +446,8 @@ def _blade_outline(style: str, L: float, w: float) -> sg.Polygon:
             edge = edge + 0.0012 * (np.arange(len(x)) % 2) * (u < 0.9)
     elif style == "cleaver":
         k = np.sqrt(np.clip(1 - ((u - 0.93) / 0.07).clip(0, None) ** 2, 0.0, 1.0))
-        spine, edge = np.full_like(x, h), -h + 2 * h * (1 - k) * 0.5
-        spine = h - 2 * h * (1 - k) * 0.5
+        r = h * (1 - k)  # both front corners round off
+        spine, edge = h - r, -h + r
         spine[-1], edge[-1] = 0.25 * h, -0.25 * h
     else:  # chef / paring: straight spine dropping to a point, edge curving up to it
         tip = 0.4 * h
@@ -624,7 +626,7 @@ class Spoon(PartsFactory):
     def parts(self, p, detail):
         a, b, c, t = self._dims(p)
         Lh, hw = p["handle_length"], p["handle_width"]
-        top = max(c - 0.0004, c - 0.0004 + 0.35 * t) + 0.0002
+        top = c + 0.35 * t  # the neck rises a little above the rim
         if not detail:
             return [_flat_box(-Lh, 2 * a, max(b, hw / 2), top, p["material"])]
         handle = _handle(-Lh, 0.005, hw, 0.0075, 1.3 * t, 1.3 * t, 0.0,
@@ -683,7 +685,9 @@ class Chopsticks(PartsFactory):
             half = off + L * math.sin(ang) + r * (1 + math.sin(ang)) + 1e-4
             if p["rest"]:
                 half = max(half, self._rest_box(p)[1][1])
-            top = 2 * r + slope * L * 1.0 + 1e-4
+            # the thick end, the raised tips or the rest, whichever is highest
+            top = max(2 * r, slope * L + 2 * r * p["tip_frac"],
+                      self.REST_H if p["rest"] else 0.0) + 1e-4
             return [Part(box_between((0.0, -half, 0.0), (L * math.cos(ang) + r * math.sin(ang)
                                                           + 1e-4, half, top)), mat)]
         out = []
