@@ -20,6 +20,13 @@ from ._common import PartsFactory, make_joint, support_rect
 from .seating_more import aabb_box, rod_between
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
+
+
+def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
+    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
+    return Part(box_between(lo, hi), slot, link)
+
+
 MATTRESS_WIDTHS = {"single": 0.9, "double": 1.4, "queen": 1.6, "king": 1.8}
 CLEAR = 0.01  # gap between the mattress and the frame around it (m)
 BLANKET = 0.015  # spread blanket thickness (m)
@@ -161,27 +168,29 @@ class Bed(PartsFactory):
             for i in range(n):
                 ya = -W / 2 + i * cw - (OVERLAP if i else 0.0)
                 yb = -W / 2 + (i + 1) * cw + (OVERLAP if i < n - 1 else 0.0)
-                out.append(Part(bevel_box((x1 - x0, yb - ya, zt - z0), (x1 - (x1 - x0) / 2, (ya + yb) / 2, (z0 + zt) / 2),
+                out.append(Part(bevel_box((x1 - x0, yb - ya, zt - z0),
+                                          (x1 - (x1 - x0) / 2, (ya + yb) / 2, (z0 + zt) / 2),
                                           0.45 * min(x1 - x0, cw), 3), "upholstery"))
             return out
         pt = 0.06
-        out = [Part(box_between((x0, s * W / 2 - (pt if s > 0 else 0), 0.0),
-                                (x1, s * W / 2 + (pt if s < 0 else 0), zt + 0.02)), "wood") for s in (-1, 1)]
+        out = [_board((x0, s * W / 2 - (pt if s > 0 else 0), 0.0),
+                      (x1, s * W / 2 + (pt if s < 0 else 0), zt + 0.02), "wood") for s in (-1, 1)]
         yi = W / 2 - pt + OVERLAP
         zb = g["fh"] - 0.1
         xa, xb = x0 + 0.008, x1 - 0.008
         if hs == "panel" or not detail:
-            out.append(Part(box_between((xa, -yi, zb), (xb, yi, zt)), "wood"))
+            out.append(_board((xa, -yi, zb), (xb, yi, zt), "wood"))
             if hs == "panel":
-                out.append(Part(_soft((x0 - 0.0, -W / 2, zt - 0.01), (x1, W / 2, zt + 0.02), 0.006, detail), "wood"))
+                out.append(Part(_soft((x0 - 0.0, -W / 2, zt - 0.01), (x1, W / 2, zt + 0.02), 0.006,
+                                      detail), "wood"))
             return out
-        out.append(Part(box_between((xa, -yi, zt - 0.06), (xb, yi, zt)), "wood"))
-        out.append(Part(box_between((xa, -yi, zb), (xb, yi, zb + 0.06)), "wood"))
+        out.append(_board((xa, -yi, zt - 0.06), (xb, yi, zt), "wood"))
+        out.append(_board((xa, -yi, zb), (xb, yi, zb + 0.06), "wood"))
         n = max(3, int((2 * yi) / 0.12))
         for i in range(n):
             yc = -yi + (i + 0.5) * 2 * yi / n
-            out.append(Part(box_between((xa + 0.005, yc - 0.025, zb + 0.06 - OVERLAP),
-                                        (xb - 0.005, yc + 0.025, zt - 0.06 + OVERLAP)), "wood"))
+            out.append(_board((xa + 0.005, yc - 0.025, zb + 0.06 - OVERLAP),
+                              (xb - 0.005, yc + 0.025, zt - 0.06 + OVERLAP), "wood"))
         return out
 
     def _frame(self, p, g, detail) -> list[Part]:
@@ -190,10 +199,10 @@ class Bed(PartsFactory):
         out: list[Part] = []
         if style == "platform":
             inset = 0.08
-            out.append(Part(box_between((xa, -W / 2, zr0), (g["x_f1"], W / 2, g["z_deck"])), "wood"))
+            out.append(_board((xa, -W / 2, zr0), (g["x_f1"], W / 2, g["z_deck"]), "wood"))
             if not p["drawers"]:
-                out.append(Part(box_between((xa, -W / 2 + inset, 0.0), (g["x_f1"] - inset, W / 2 - inset,
-                                                                        zr0 + OVERLAP)), "wood"))
+                out.append(_board((xa, -W / 2 + inset, 0.0),
+                                  (g["x_f1"] - inset, W / 2 - inset, zr0 + OVERLAP), "wood"))
         else:
             rt = g["rt"]
             slot = "upholstery" if style == "upholstered" else "wood"
@@ -205,30 +214,31 @@ class Bed(PartsFactory):
             # the deck (slats) the mattress lies on
             yi = W / 2 - rt + OVERLAP
             if style == "slatted":  # slats on a centre beam
-                out.append(Part(box_between((xa, -0.03, g["z_deck"] - 0.06), (xb, 0.03, g["z_deck"] - 0.02 + OVERLAP)),
-                                "wood"))
+                out.append(_board((xa, -0.03, g["z_deck"] - 0.06),
+                                  (xb, 0.03, g["z_deck"] - 0.02 + OVERLAP), "wood"))
             if style == "slatted" and detail:
                 n = max(6, int((xb - xa) / 0.12))
                 for i in range(n):
                     xc = xa + 0.03 + i * (xb - xa - 0.06) / (n - 1)
-                    out.append(Part(box_between((xc - 0.035, -yi, g["z_deck"] - 0.02), (xc + 0.035, yi, g["z_deck"])),
-                                    "wood"))
+                    out.append(_board((xc - 0.035, -yi, g["z_deck"] - 0.02),
+                                      (xc + 0.035, yi, g["z_deck"]), "wood"))
             else:
-                out.append(Part(box_between((xa, -yi, g["z_deck"] - 0.02), (xb, yi, g["z_deck"])), "wood"))
+                out.append(_board((xa, -yi, g["z_deck"] - 0.02), (xb, yi, g["z_deck"]), "wood"))
             if not p["drawers"]:
                 lt = 0.06
                 lz = (z0 if style == "slatted" else zr0) + OVERLAP
                 for x in (g["x_h1"], g["x_f1"] - lt):
                     for s in (-1, 1):
                         y = s * W / 2 - (lt if s > 0 else 0)
-                        out.append(Part(box_between((x, y, 0.0), (x + lt, y + lt, lz)), "wood"))
+                        out.append(_board((x, y, 0.0), (x + lt, y + lt, lz), "wood"))
         # the foot: a rail, or a footboard reaching above the mattress
         if style == "platform" and not p["footboard"]:
             return out
         top = g["z_top"] + 0.08 if p["footboard"] else fh
         bottom = 0.0 if p["footboard"] else (fh - 0.1 if style == "slatted" and not p["drawers"] else zr0)
         soft = p["headboard_style"] in ("upholstered", "channel") and p["footboard"]
-        out.append(Part(_soft((g["x_f0"], -W / 2, bottom), (g["x_f1"], W / 2, top), 0.02 if soft else 0.004,
+        out.append(Part(_soft((g["x_f0"], -W / 2, bottom), (g["x_f1"], W / 2, top),
+                              0.02 if soft else 0.004,
                               detail), "upholstery" if soft else "wood"))
         return out
 
@@ -239,7 +249,7 @@ class Bed(PartsFactory):
         # up to the deck (or the platform slab) it carries
         z1 = (g["zr0"] if g["style"] == "platform" else g["z_deck"] - 0.02) + OVERLAP
         if not detail:  # the block with its drawers shut, fronts and handles included
-            return [Part(box_between((x0, -W / 2, 0.0), (x1, W / 2, z1)), "wood")]
+            return [_board((x0, -W / 2, 0.0), (x1, W / 2, z1), "wood")]
         block = box_between((x0, -face, 0.0), (x1, face, z1))
         _, depth = self._drawers(p, g)
         cuts = []
@@ -264,11 +274,13 @@ class Bed(PartsFactory):
             t = BLANKET
             zb = max(g["fh"] + 0.01, zt - 0.25)
             pieces = [_soft((xb0, -mw / 2 - t, zt - 0.003), (xm1 + t, mw / 2 + t, zt + t), 0.006, detail),
-                      _soft((xb0, -mw / 2 - t, zt + t - OVERLAP), (xb0 + 0.3, mw / 2 + t, zt + 2 * t), 0.006, detail)]
+                      _soft((xb0, -mw / 2 - t, zt + t - OVERLAP), (xb0 + 0.3, mw / 2 + t, zt + 2 * t),
+                            0.006, detail)]
             for s in (-1, 1):
                 y0, y1 = sorted((s * (mw / 2 - 0.001), s * (mw / 2 + t)))
                 pieces.append(box_between((xb0, y0, zb), (xm1 + t, y1, zt + OVERLAP)))
-            pieces.append(box_between((xm1 - 0.001, -mw / 2 - t, zb), (xm1 + t, mw / 2 + t, zt + OVERLAP)))
+            pieces.append(box_between((xm1 - 0.001, -mw / 2 - t, zb),
+                                      (xm1 + t, mw / 2 + t, zt + OVERLAP)))
             out += [Part(q, "fabric") for q in pieces]
         elif kind == "folded":
             x0, x1 = self._folded_x(g)
@@ -361,26 +373,29 @@ class BunkBed(PartsFactory):
         z0, z1 = zd - 0.05, zd - 0.05 + self.RAIL_H
         if not detail:  # rails, deck, mattress and bedding as one block
             ztop = max(z1, zd + g["mt"] + (0.11 if p["bedding"] else 0.0))
-            return [Part(box_between((-xi - rt, -yi - rt, z0), (xi + rt, yi + rt, ztop)), "wood")]
+            return [_board((-xi - rt, -yi - rt, z0), (xi + rt, yi + rt, ztop), "wood")]
         out = []
         for s in (-1, 1):  # long rails front/back, end rails
-            out.append(Part(box_between((s * xi - (0 if s > 0 else rt), -yi - OVERLAP, z0),
-                                        (s * xi + (rt if s > 0 else 0), yi + OVERLAP, z1)), "wood"))
-            out.append(Part(box_between((-xi - OVERLAP, s * yi - (0 if s > 0 else rt), z0),
-                                        (xi + OVERLAP, s * yi + (rt if s > 0 else 0), z1)), "wood"))
-        out.append(Part(box_between((-xi - OVERLAP, -yi - OVERLAP, zd - 0.02), (xi + OVERLAP, yi + OVERLAP, zd)),
-                        "wood"))  # deck
+            out.append(_board((s * xi - (0 if s > 0 else rt), -yi - OVERLAP, z0),
+                              (s * xi + (rt if s > 0 else 0), yi + OVERLAP, z1), "wood"))
+            out.append(_board((-xi - OVERLAP, s * yi - (0 if s > 0 else rt), z0),
+                              (xi + OVERLAP, s * yi + (rt if s > 0 else 0), z1), "wood"))
+        out.append(_board((-xi - OVERLAP, -yi - OVERLAP, zd - 0.02), (xi + OVERLAP, yi + OVERLAP, zd),
+                          "wood"))  # deck
         mt = g["mt"]
-        out.append(Part(_soft((-g["mw"] / 2, -g["ml"] / 2, zd - OVERLAP), (g["mw"] / 2, g["ml"] / 2, zd + mt),
+        out.append(Part(_soft((-g["mw"] / 2, -g["ml"] / 2, zd - OVERLAP),
+                              (g["mw"] / 2, g["ml"] / 2, zd + mt),
                               _mattress_r(mt), detail), "fabric"))
         if p["bedding"]:
             zt = zd + mt
             yh = -g["ls"] * (g["ml"] / 2 - 0.04)  # head end: away from the ladder
             y0, y1 = sorted((yh, yh + g["ls"] * 0.42))
-            out.append(Part(_soft((-g["mw"] / 2 + 0.08, y0, zt - 0.01), (g["mw"] / 2 - 0.08, y1, zt + 0.12), 0.054,
+            out.append(Part(_soft((-g["mw"] / 2 + 0.08, y0, zt - 0.01),
+                                  (g["mw"] / 2 - 0.08, y1, zt + 0.12), 0.054,
                                   detail, 3), "fabric"))
             f0, f1 = self._folded_y(g)
-            out.append(Part(_soft((-g["mw"] / 2 + 0.05, f0, zt - 0.003), (g["mw"] / 2 - 0.05, f1, zt + 0.06), 0.02,
+            out.append(Part(_soft((-g["mw"] / 2 + 0.05, f0, zt - 0.003),
+                                  (g["mw"] / 2 - 0.05, f1, zt + 0.06), 0.02,
                                   detail), "fabric"))
         return out
 
@@ -393,25 +408,29 @@ class BunkBed(PartsFactory):
         style = p["end_style"]
         out = []
         zl, zu = g["decks"]
-        spans = [(zl - 0.05 + self.RAIL_H - OVERLAP, zl + g["mt"] + 0.3), (zu - 0.05 + self.RAIL_H - OVERLAP, H - 0.02)]
+        spans = [(zl - 0.05 + self.RAIL_H - OVERLAP, zl + g["mt"] + 0.3),
+                 (zu - 0.05 + self.RAIL_H - OVERLAP, H - 0.02)]
         for s in (-1, 1):
             y0, y1 = (s * yi - (0 if s > 0 else rt), s * yi + (rt if s > 0 else 0))
             if not detail:  # both spans (and the rails between them) as one board
-                out.append(Part(box_between((-xi - OVERLAP, y0, spans[0][0]), (xi + OVERLAP, y1, spans[1][1])), "wood"))
+                out.append(_board((-xi - OVERLAP, y0, spans[0][0]), (xi + OVERLAP, y1, spans[1][1]),
+                                  "wood"))
                 continue
             for z0, z1 in spans:
                 if style == "panel":
-                    out.append(Part(box_between((-xi - OVERLAP, y0 + 0.005, z0), (xi + OVERLAP, y1 - 0.005, z1)), "wood"))
+                    out.append(_board((-xi - OVERLAP, y0 + 0.005, z0), (xi + OVERLAP, y1 - 0.005, z1),
+                                      "wood"))
                 elif style == "slats":
-                    out.append(Part(box_between((-xi - OVERLAP, y0, z1 - 0.05), (xi + OVERLAP, y1, z1)), "wood"))
+                    out.append(_board((-xi - OVERLAP, y0, z1 - 0.05), (xi + OVERLAP, y1, z1), "wood"))
                     n = max(3, int(2 * xi / 0.12))
                     for i in range(n):
                         xc = -xi + (i + 0.5) * 2 * xi / n
-                        out.append(Part(box_between((xc - 0.02, y0 + 0.005, z0), (xc + 0.02, y1 - 0.005, z1 - 0.05 + OVERLAP)),
-                                        "wood"))
+                        out.append(_board((xc - 0.02, y0 + 0.005, z0),
+                                          (xc + 0.02, y1 - 0.005, z1 - 0.05 + OVERLAP), "wood"))
                 else:
                     for z in np.linspace(z0 + 0.06, z1 - 0.025, 3):
-                        out.append(Part(box_between((-xi - OVERLAP, y0, z - 0.025), (xi + OVERLAP, y1, z + 0.025)), "wood"))
+                        out.append(_board((-xi - OVERLAP, y0, z - 0.025), (xi + OVERLAP, y1, z + 0.025),
+                                          "wood"))
         return out
 
     def _guard(self, p, g, detail) -> list[Part]:
@@ -428,18 +447,18 @@ class BunkBed(PartsFactory):
             if not detail:  # rails and posts as one board (the closing post included)
                 if s > 0:
                     ya, yb = ya - 0.02, yb + 0.02
-                out.append(Part(box_between((x0 - 0.004, ya, z0), (x1 + (0.01 if s > 0 else 0.004), yb, z1)),
-                                "wood"))
+                out.append(_board((x0 - 0.004, ya, z0), (x1 + (0.01 if s > 0 else 0.004), yb, z1),
+                                  "wood"))
                 continue
-            out.append(Part(box_between((x0, ya, z1 - 0.05), (x1, yb, z1)), "wood"))
-            out.append(Part(box_between((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025)), "wood"))
+            out.append(_board((x0, ya, z1 - 0.05), (x1, yb, z1), "wood"))
+            out.append(_board((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025), "wood"))
             # posts 4 mm thicker than the rails, so that no faces are coplanar (slivers)
             if s > 0:  # a short post closing the guard at the opening
                 yp = g["ls"] * (yi - self.OPENING)
-                out.append(Part(box_between((x0 - 0.004, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1)), "wood"))
+                out.append(_board((x0 - 0.004, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1), "wood"))
             else:
                 for y in np.linspace(-yi * 0.5, yi * 0.5, 2):
-                    out.append(Part(box_between((x0 - 0.004, y - 0.02, z0), (x1 + 0.004, y + 0.02, z1)), "wood"))
+                    out.append(_board((x0 - 0.004, y - 0.02, z0), (x1 + 0.004, y + 0.02, z1), "wood"))
         return out
 
     def _ladder(self, p, g, detail) -> list[Part]:
@@ -455,16 +474,17 @@ class BunkBed(PartsFactory):
         if p["ladder_style"] == "vertical":
             if not detail:
                 xr = (x_in + X) / 2
-                return [Part(box_between((min(x_in, xr - 0.014), ya, 0.0), (max(X, xr + 0.014), yb, top)), "wood")]
+                return [_board((min(x_in, xr - 0.014), ya, 0.0), (max(X, xr + 0.014), yb, top), "wood")]
             for y in (ya, yb - sw):
-                out.append(Part(box_between((x_in, y, 0.0), (X, y + sw, top)), "wood"))
+                out.append(_board((x_in, y, 0.0), (X, y + sw, top), "wood"))
             if detail:
                 for z in rung_zs:
-                    out.append(Part(rod_between(((x_in + X) / 2, ya + sw / 2, z), ((x_in + X) / 2, yb - sw / 2, z),
+                    out.append(Part(rod_between(((x_in + X) / 2, ya + sw / 2, z),
+                                                ((x_in + X) / 2, yb - sw / 2, z),
                                                 0.014, True, 12), "wood"))
             else:
-                out.append(Part(box_between(((x_in + X) / 2 - 0.014, ya, rung_zs[0] - 0.014),
-                                            ((x_in + X) / 2 + 0.014, yb, rung_zs[-1] + 0.014)), "wood"))
+                out.append(_board(((x_in + X) / 2 - 0.014, ya, rung_zs[0] - 0.014),
+                                  ((x_in + X) / 2 + 0.014, yb, rung_zs[-1] + 0.014), "wood"))
             return out
         run = 0.35  # how far the foot of an angled ladder stands out
         d = X - x_in

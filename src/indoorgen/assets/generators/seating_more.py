@@ -23,6 +23,11 @@ from ._common import PartsFactory, support_polygon, support_rect
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 
 
+def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
+    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
+    return Part(box_between(lo, hi), slot, link)
+
+
 # ===================================================================================== helpers
 def _unit_rows(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
@@ -188,9 +193,11 @@ def thick_polyline(center: Sequence[Sequence[float]], thickness: float) -> np.nd
 def profile_slab(outline_xz: np.ndarray, y0: float, y1: float) -> m3d.Manifold:
     """A 2D outline in the XZ plane (side view) extruded across Y from y0 to y1."""
     pts = np.asarray(outline_xz, float)
-    area = 0.5 * float(np.dot(pts[:, 0], np.roll(pts[:, 1], -1)) - np.dot(pts[:, 1], np.roll(pts[:, 0], -1)))
+    area = 0.5 * float(np.dot(pts[:, 0], np.roll(pts[:, 1], -1)) - np.dot(pts[:, 1],
+                                                                          np.roll(pts[:, 0], -1)))
     cs = m3d.CrossSection([pts], m3d.FillRule.Positive if area > 0 else m3d.FillRule.Negative)
-    return m3d.Manifold.extrude(cs, float(y1 - y0)).rotate((90.0, 0.0, 0.0)).translate((0.0, float(y1), 0.0))
+    return m3d.Manifold.extrude(cs,
+                                float(y1 - y0)).rotate((90.0, 0.0, 0.0)).translate((0.0, float(y1), 0.0))
 
 
 def shear_points(points: np.ndarray, z0: float, tilt_deg: float) -> np.ndarray:
@@ -416,11 +423,12 @@ class SideChair(PartsFactory):
             pts = [(xr - 0.02, s * ys, rt), (xf_floor, s * ys, rt), (sd / 2 - 0.01, s * ys, zr),
                    (xr, s * ys, zr), (xr - k * (ztop - zr), s * ys, ztop)]
             path = fillet_path(pts, 0.07, 6)
-            out += [Part(q, "metal") for q in ([tube(path, rt, 16)] if detail else tube_boxes(path, rt, 6))]
+            out += [Part(q,
+                         "metal") for q in ([tube(path, rt, 16)] if detail else tube_boxes(path, rt, 6))]
             if detail:  # floor glides under the runner's ends
                 for gx in (xr - 0.005, xf_floor - 0.09):
-                    out.append(Part(box_between((gx - 0.015, s * ys - 0.007, 0.0), (gx + 0.015, s * ys + 0.007, 0.005)),
-                                    "plastic"))
+                    out.append(_board((gx - 0.015, s * ys - 0.007, 0.0),
+                                      (gx + 0.015, s * ys + 0.007, 0.005), "plastic"))
         out.append(Part(rod_between((xr - 0.01, -ys, rt), (xr - 0.01, ys, rt), rt, detail, 16), "metal"))
         seat = (bevel_box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2), min(0.015, st / 3), 2)
                 if detail else box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2)))
@@ -456,16 +464,16 @@ class SideChair(PartsFactory):
             groups = np.array_split(np.arange(nseg), 3)
             for g in groups:
                 q = np.vstack([quads[i] for i in g])
-                out.append(Part(box_between((q[:, 0].min(), -sw / 2, q[:, 1].min()),
-                                            (min(q[:, 0].max(), sd / 2), sw / 2, q[:, 1].max())),
-                                "plastic"))
+                out.append(_board((q[:, 0].min(), -sw / 2, q[:, 1].min()),
+                                  (min(q[:, 0].max(), sd / 2), sw / 2, q[:, 1].max()), "plastic"))
         lt, splay = p["leg_thickness"], p["leg_splay"]
         zt = sh - t + OVERLAP
         ix, iy = sd / 2 - 0.08, sw / 2 - 0.07
         corners = [(sx * ix, sy * iy) for sx in (-1, 1) for sy in (-1, 1)]
         lp, axes = splay_legs(corners, zt - 0.012, lt / 2, lt * 0.4, splay + 0.02, detail, "wood")
         out += lp
-        plate = box_between((-ix - lt / 2, -iy - lt / 2, zt - 0.012 - OVERLAP), (ix + lt / 2, iy + lt / 2, zt))
+        plate = box_between((-ix - lt / 2, -iy - lt / 2, zt - 0.012 - OVERLAP),
+                            (ix + lt / 2, iy + lt / 2, zt))
         out.append(Part(plate, "metal"))
         zs0 = 0.18
         for j in (0, 1):
@@ -590,8 +598,8 @@ class UpholsteredChair(PartsFactory):
                 out.append(Part(soft((sd / 2 + 0.02 - xr0, 0.05, 0.025),
                                      ((xr0 + sd / 2 + 0.02) / 2, yc, za - 0.0125), 0.008), "wood"))
                 yp = s * (sw / 2 + 0.012)
-                out.append(Part(box_between((sd / 2 - 0.075, yp - 0.0175, z0 + 0.01),
-                                            (sd / 2 - 0.04, yp + 0.0175, za - 0.025 + OVERLAP)), "wood"))
+                out.append(_board((sd / 2 - 0.075, yp - 0.0175, z0 + 0.01),
+                                  (sd / 2 - 0.04, yp + 0.0175, za - 0.025 + OVERLAP), "wood"))
         style = p["leg_style"]
         lt = {"tapered": 0.045, "round": 0.045, "metal": 0.024}[style]
         taper = {"tapered": 0.6, "round": 0.7, "metal": 1.0}[style] if detail else 1.0
@@ -653,7 +661,8 @@ class OfficeChair(PartsFactory):
                              n * 2, circumscribed=not detail), "plastic")]
         for i in range(5):
             th = math.pi + 2 * math.pi * i / 5
-            d, t = np.array([math.cos(th), math.sin(th), 0.0]), np.array([-math.sin(th), math.cos(th), 0.0])
+            d, t = np.array([math.cos(th), math.sin(th), 0.0]), np.array([-math.sin(th), math.cos(th),
+                                                                          0.0])
             arm_pts = []
             for dist, hw, za, zb in ((0.03, 0.026, L["hub0"], L["hub1"]),
                                      (R + 0.02, 0.018, L["tip"], L["tip"] + 0.03)):
@@ -670,12 +679,14 @@ class OfficeChair(PartsFactory):
                     (0.0, 0.0, math.degrees(th) + 90.0)).translate((float(c[0]), float(c[1]), cr))
                 hood = box((0.05, 1.76 * cr, cr + 0.012), (0, 0, 0)).rotate(
                     (0.0, 0.0, math.degrees(th))).translate((float(c[0]), float(c[1]), 1.5 * cr + 0.006))
-                stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr), 16)
+                stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr),
+                                16)
                 out += [Part(wheel, "plastic"), Part(hood, "metal"), Part(stem, "metal")]
             else:  # the box around them, from their corners
                 pts = []
                 for ht, hd, zs in ((cr, 0.0225, (0.0, 2 * cr)), (0.88 * cr, 0.025, (cr, 2 * cr + 0.012))):
-                    pts += [c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd, hd) for z in zs]
+                    pts += [c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd,
+                                                                                       hd) for z in zs]
                 pts += [sc + (a, b, z) for a in (-0.008, 0.008) for b in (-0.008, 0.008)
                         for z in (2 * cr, L["tip"] + OVERLAP)]
                 out.append(Part(points_box(np.array(pts), 0.0), "plastic"))
@@ -701,12 +712,12 @@ class OfficeChair(PartsFactory):
 
         out = [Part(cylinder(0.016, L["mech0"] - L["gas"] - 0.002 + OVERLAP, (0, 0, L["gas"] + 0.002), n,
                              circumscribed=not detail), "metal", link),
-               Part(box_between((-0.11, -0.1, L["mech0"]), (0.12, 0.1, L["seat0"] + OVERLAP)), "metal", link),
+               _board((-0.11, -0.1, L["mech0"]), (0.12, 0.1, L["seat0"] + OVERLAP), "metal", link),
                Part(soft((sd, sw, st), (x0, 0, sh - st / 2), min(0.03, st / 3)), "fabric", link)]
         # spine: under the seat to the back, then up behind the back panel
         xb = x0 - sd / 2  # seat rear
         zs0 = L["seat0"] - 0.04
-        out.append(Part(box_between((xb - 0.065, -0.03, zs0), (-0.08, 0.03, L["seat0"] - 0.01)), "metal", link))
+        out.append(_board((xb - 0.065, -0.03, zs0), (-0.08, 0.03, L["seat0"] - 0.01), "metal", link))
         zb0, zb1 = sh + 0.05, sh + 0.05 + bh
         spine = box_between((xb - 0.065, -0.03, zs0), (xb - 0.022, 0.03, zb0 + 0.5 * bh))
         out.append(Part(shear_back(spine, sh, tilt), "metal", link))
@@ -717,12 +728,13 @@ class OfficeChair(PartsFactory):
             soft_back.append(((0.06, bw, bh), (xb, 0, (zb0 + zb1) / 2)))
         else:
             ring = frame(bw, bh, 0.03, 0.035, (xb - 0.0125, 0, (zb0 + zb1) / 2))
-            mesh = box((0.008, bw - 0.06 + 2 * OVERLAP, bh - 0.06 + 2 * OVERLAP), (xb - 0.0125, 0, (zb0 + zb1) / 2))
+            mesh = box((0.008, bw - 0.06 + 2 * OVERLAP, bh - 0.06 + 2 * OVERLAP),
+                       (xb - 0.0125, 0, (zb0 + zb1) / 2))
             back = ([Part(ring, "plastic", link), Part(mesh, "fabric", link)] if detail else
                     [Part(box((0.035, bw, bh), (xb - 0.0125, 0, (zb0 + zb1) / 2)), "plastic", link)])
         if p["headrest"]:
-            back.append(Part(box_between((xb - 0.03, -0.02, zb1 - 0.05), (xb - 0.002, 0.02, zb1 + 0.1)),
-                             "metal", link))
+            back.append(_board((xb - 0.03, -0.02, zb1 - 0.05), (xb - 0.002, 0.02, zb1 + 0.1), "metal",
+                               link))
             soft_back.append(((0.06, 0.28, 0.13), (xb - 0.01, 0, zb1 + 0.08 + 0.065 - OVERLAP)))
         out += [Part(shear_back(b.solid, sh, tilt), b.slot, link) for b in back]
         out += [Part(soft_sheared(ext, ctr, 0.025, sh, tilt, detail), "fabric", link)
@@ -731,12 +743,13 @@ class OfficeChair(PartsFactory):
             za = sh + 0.2
             for s in (-1, 1):
                 ya = s * (sw / 2 + 0.02)
-                out.append(Part(box_between((-0.07, min(s * 0.06, s * (sw / 2 + 0.035)), zs0 + 0.005),
-                                            (0.01, max(s * 0.06, s * (sw / 2 + 0.035)), L["seat0"] - 0.01)),
-                                "metal", link))
-                out.append(Part(box_between((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP)),
-                                "plastic", link))
-                out.append(Part(soft((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012), "plastic", link))
+                out.append(_board((-0.07, min(s * 0.06, s * (sw / 2 + 0.035)), zs0 + 0.005),
+                                  (0.01, max(s * 0.06, s * (sw / 2 + 0.035)),
+                                   L["seat0"] - 0.01), "metal", link))
+                out.append(_board((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP),
+                                  "plastic", link))
+                out.append(Part(soft((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012), "plastic",
+                                link))
         return out
 
     def parts(self, p, detail):
@@ -896,7 +909,8 @@ class BarStool(PartsFactory):
         out = []
         yp = R - 0.06
         for s in (-1, 1):
-            out.append(Part(rod_between((-R + 0.03, s * yp, z0 + 0.005), (-R + 0.03 - k * bh, s * yp, ztop),
+            out.append(Part(rod_between((-R + 0.03, s * yp, z0 + 0.005),
+                                        (-R + 0.03 - k * bh, s * yp, ztop),
                                         0.011, detail, 12), "metal"))
         bh2 = min(0.1, 0.5 * bh)
         out.append(Part(soft_sheared((0.025, S - 0.06, bh2), (-R + 0.03, 0, ztop - bh2 / 2), 0.008, sh,
@@ -957,7 +971,8 @@ class Stool(PartsFactory):
         if p["style"] == "pouf":
             return [(0.0, 0.0)]
         if p["shape"] == "round":
-            ring = [(0.25 * S * math.cos(a), 0.25 * S * math.sin(a)) for a in np.arange(5) * 2 * math.pi / 5]
+            ring = [(0.25 * S * math.cos(a),
+                     0.25 * S * math.sin(a)) for a in np.arange(5) * 2 * math.pi / 5]
             return [(0.0, 0.0)] + ring
         q = S / 4
         grid = [(sx * q, sy * q) for sx in (-1, 1) for sy in (-1, 1)]
@@ -1005,13 +1020,15 @@ class Stool(PartsFactory):
             rl = (R - 0.03 - lt / 2) if p["shape"] == "round" else (R - 0.03 - lt / 2) * math.sqrt(2)
             for i in range(n):
                 a = 2 * math.pi * i / n + math.pi / 4
-                out.append(Part(cylinder(lt / 2, self.FEET + 0.01, (rl * math.cos(a), rl * math.sin(a), 0.0),
+                out.append(Part(cylinder(lt / 2, self.FEET + 0.01,
+                                         (rl * math.cos(a), rl * math.sin(a), 0.0),
                                          16 if detail else 8, radius_top=lt / 2 * (1.0 if detail else 1.0),
                                          circumscribed=not detail), "wood"))
         else:  # pouf
             if p["shape"] == "round":
                 t = np.linspace(0.0, math.pi, 17)
-                prof = [(0.0, 0.0)] + list(zip(R * (0.8 + 0.2 * np.sin(t)), h * (1 - np.cos(t)) / 2)) + [(0.0, h)]
+                prof = [(0.0, 0.0)] + list(zip(R * (0.8 + 0.2 * np.sin(t)),
+                                               h * (1 - np.cos(t)) / 2)) + [(0.0, h)]
                 out.append(Part(lathe(prof, 48) if detail else
                                 cylinder(R, h, (0, 0, 0), 16, circumscribed=True), "upholstery"))
             else:
@@ -1099,7 +1116,7 @@ class SofaLShaped(PartsFactory):
             lo[1], hi[1] = sorted((s * lo[1], s * hi[1]))
             if detail:
                 return Part(bevel_box(hi - lo, (lo + hi) / 2, rad, 2), slot)
-            return Part(box_between(lo, hi), slot)
+            return _board(lo, hi, slot)
 
         out = [
             soft((x0, g["y_in0"] - OVERLAP, lh), (xd, g["y_in1"] + OVERLAP, zb), 0.005, "upholstery"),
@@ -1131,7 +1148,8 @@ class SofaLShaped(PartsFactory):
                                          circumscribed=not detail), "wood"))
         else:
             out.append(soft((x0, -W / 2, 0.0), (xd, W / 2 - g["cw"], 0.04), 0.003, "upholstery"))
-            out.append(soft((x0, W / 2 - g["cw"] - OVERLAP, 0.0), (L / 2, W / 2, 0.04), 0.003, "upholstery"))
+            out.append(soft((x0, W / 2 - g["cw"] - OVERLAP, 0.0), (L / 2, W / 2, 0.04), 0.003,
+                            "upholstery"))
         return out
 
     def _cushion_spans(self, g) -> list[tuple[float, float]]:
@@ -1216,11 +1234,11 @@ class Bench(PartsFactory):
         if detail:
             out += [soft((x0, -L / 2, zs), (x1, L / 2, sh), 0.003, "wood") for x0, x1 in self._slats(p)]
         else:
-            out.append(Part(box_between((-d / 2, -L / 2, zs), (d / 2, L / 2, sh)), "wood"))
+            out.append(_board((-d / 2, -L / 2, zs), (d / 2, L / 2, sh), "wood"))
         yb = L / 2 - self.END - p["leg_thickness"] / 2
         for y in (-yb, 0.0, yb):  # battens under the slats
-            out.append(Part(box_between((-d / 2 + 0.01, y - 0.02, sh - tt), (d / 2 - 0.01, y + 0.02, zs + OVERLAP)),
-                            "wood"))
+            out.append(_board((-d / 2 + 0.01, y - 0.02, sh - tt), (d / 2 - 0.01, y + 0.02, zs + OVERLAP),
+                              "wood"))
         return out
 
     def _base(self, p, detail) -> list[Part]:
@@ -1234,8 +1252,8 @@ class Bench(PartsFactory):
                 out.append(Part(leg, "wood"))
         elif base == "panel":
             for s in (-1, 1):
-                out.append(Part(box_between((-d / 2 + 0.02, s * yb - lt / 2, 0.0),
-                                            (d / 2 - 0.02, s * yb + lt / 2, zu)), "wood"))
+                out.append(_board((-d / 2 + 0.02, s * yb - lt / 2, 0.0),
+                                  (d / 2 - 0.02, s * yb + lt / 2, zu), "wood"))
         else:
             m = 0.03  # frame member section along X
             for s in (-1, 1):
@@ -1253,11 +1271,11 @@ class Bench(PartsFactory):
             if base == "legs":
                 cx = d / 2 - 0.02 - lt / 2
                 for sx in (-1, 1):
-                    out.append(Part(box_between((sx * cx - 0.01, -yb, zs - 0.02), (sx * cx + 0.01, yb, zs + 0.02)),
-                                    "wood"))
+                    out.append(_board((sx * cx - 0.01, -yb, zs - 0.02), (sx * cx + 0.01, yb, zs + 0.02),
+                                      "wood"))
             else:
-                out.append(Part(box_between((-0.015, -yb, zs - 0.03), (0.015, yb, zs + 0.03)),
-                                "metal" if base == "frame" else "wood"))
+                out.append(_board((-0.015, -yb, zs - 0.03), (0.015, yb, zs + 0.03),
+                                  "metal" if base == "frame" else "wood"))
         return out
 
     def _back(self, p, detail) -> list[Part]:
@@ -1272,7 +1290,8 @@ class Bench(PartsFactory):
         z0 = sh + 0.08
         style = p["style"]
         if style == "upholstered":
-            out.append(Part(soft_sheared((0.06, 2 * yb + 0.04, zt - z0), (xp1 + 0.02, 0, (z0 + zt) / 2), 0.02,
+            out.append(Part(soft_sheared((0.06, 2 * yb + 0.04, zt - z0), (xp1 + 0.02, 0, (z0 + zt) / 2),
+                                         0.02,
                                          sh, self.TILT, detail), "upholstery"))
         elif style == "solid" or not detail:
             out.append(Part(shear_back(box_between((x0, -yb, z0), (x1, yb, zt)), sh, self.TILT), "wood"))
@@ -1281,7 +1300,8 @@ class Bench(PartsFactory):
             h = (zt - z0 - (n - 1) * 0.02) / n
             for i in range(n):
                 za = z0 + i * (h + 0.02)
-                out.append(Part(shear_back(box_between((x0, -yb, za), (x1, yb, za + h)), sh, self.TILT), "wood"))
+                out.append(Part(shear_back(box_between((x0, -yb, za), (x1, yb, za + h)), sh, self.TILT),
+                                "wood"))
         return out
 
     def parts(self, p, detail):
@@ -1301,5 +1321,6 @@ class Bench(PartsFactory):
         for x0, x1 in self._slats(p):
             x0, x1 = max(x0 + 0.005, x_back), x1 - 0.005
             if x1 - x0 > 0.02:
-                out.append(support_rect(f"seat_{len(out)}", ((x0 + x1) / 2, 0, sh), (x1 - x0) / 2, L / 2 - 0.01))
+                out.append(support_rect(f"seat_{len(out)}", ((x0 + x1) / 2, 0, sh), (x1 - x0) / 2,
+                                        L / 2 - 0.01))
         return out

@@ -27,6 +27,11 @@ from .tables import rect_table_parts
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 
 
+def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
+    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
+    return Part(box_between(lo, hi), slot, link)
+
+
 def _translate(parts: list[Part], offset) -> list[Part]:
     off = tuple(float(v) for v in offset)
     return [Part(p.solid.translate(off), p.slot, p.link) for p in parts]
@@ -103,6 +108,7 @@ class DiningTableOval(PartsFactory):
     tags = frozenset({S.Object, S.Furniture, S.Table, S.DiningTable})
     size_class = "large"
     slots = ["wood", "metal"]
+    CHAIR_SPACING = 0.6  # perimeter length per chair facet (m)
     params = {
         "length": Param(1.4, 2.4, doc="Y extent, the long axis (m)"),
         "width": Param(0.9, 1.2, doc="X extent, the short axis (m)"),
@@ -115,7 +121,8 @@ class DiningTableOval(PartsFactory):
                             doc="one or two pedestals, or four legs with an apron"),
         "column_radius": Param(0.04, 0.09, doc="pedestal column radius (m)"),
         "leg_thickness": Param(0.04, 0.07, doc="leg diameter for the legged base (m)"),
-        "seat_spacing": Param(0.55, 0.7, doc="perimeter length per chair facet (m)"),
+        "taper": Param(0.5, 1.0, doc="legs' foot / top diameter; a pedestal column flares to "
+                                     "(2 - taper) times its radius at the foot"),
     }
 
     def _top(self, p, detail) -> m3d.Manifold:
@@ -140,15 +147,17 @@ class DiningTableOval(PartsFactory):
             top = cylinder(a, tt, (0, 0, h - tt), 96)
         return top.scale((1.0, b / a, 1.0))
 
-    def _pedestal(self, p, y: float, foot_r: float, detail) -> list[Part]:
+    def _pedestal(self, p, y: float, foot_r: float, detail, stretch: float = 1.0) -> list[Part]:
+        """Foot, column and head plate of a pedestal at (0, y); the foot stretched along Y."""
         h, tt, cr = p["height"], p["top_thickness"], p["column_radius"]
         zu = h - tt + OVERLAP
         n = 48 if detail else 12
         c = not detail
         prof = [(0, 0), (foot_r, 0), (foot_r, 0.015), (foot_r * 0.75, 0.035), (cr * 1.3, 0.06), (0, 0.06)]
         foot = (lathe(prof, n) if detail else cylinder(foot_r, 0.06, (0, 0, 0), n, circumscribed=True))
-        return [Part(foot.translate((0.0, y, 0.0)), "metal"),
-                Part(cylinder(cr, zu - 0.05, (0, y, 0.05), 32 if detail else 8, circumscribed=c), "wood"),
+        return [Part(foot.scale((1.0, stretch, 1.0)).translate((0.0, y, 0.0)), "metal"),
+                Part(cylinder(cr * (2.0 - p["taper"]), zu - 0.05, (0, y, 0.05), 32 if detail else 8,
+                              radius_top=cr, circumscribed=c), "wood"),
                 Part(cylinder(min(2.2 * cr, 0.2), 0.03, (0, y, zu - 0.03), 32 if detail else 8,
                               circumscribed=c), "wood")]
 
@@ -159,23 +168,26 @@ class DiningTableOval(PartsFactory):
         style = p["base_style"]
         zu = h - tt + OVERLAP
         if style == "pedestal":
-            out += self._pedestal(p, 0.0, min(0.8 * a, 0.45), detail)
+            # a long top gets a foot stretched along its length
+            out += self._pedestal(p, 0.0, min(0.8 * a, 0.45), detail, min(b / a, 1.6))
         elif style == "double_pedestal":
             yp = 0.5 * b
             for y in (-yp, yp):
                 out += self._pedestal(p, y, min(0.55 * a, 0.3, 0.9 * yp), detail)
-            out.append(Part(box_between((-0.04, -yp, zu - 0.09), (0.04, yp, zu)), "wood"))
+            out.append(_board((-0.04, -yp, zu - 0.09), (0.04, yp, zu), "wood"))
         else:
             lt = p["leg_thickness"]
             ka, kb = 0.75 * a, b - 0.25 * a
-            spots = [(sx * ka * math.sqrt(0.5), sy * kb * math.sqrt(0.5)) for sx in (-1, 1) for sy in (-1, 1)]
+            spots = [(sx * ka * math.sqrt(0.5), sy * kb * math.sqrt(0.5)) for sx in (-1,
+                                                                                     1) for sy in (-1, 1)]
             for x, y in spots:
-                out.append(Part(cylinder(lt / 2 * (0.7 if detail else 1.0), zu, (x, y, 0.0),
+                out.append(Part(cylinder(lt / 2 * (p["taper"] if detail else 1.0), zu, (x, y, 0.0),
                                          16 if detail else 8, radius_top=lt / 2, circumscribed=not detail),
                                 "wood"))
             # an oval apron through the legs' centres
             rr = ka  # the ellipse (ka, kb) passes through the legs' centres
-            ring = lathe([(rr - 0.02, zu - 0.07), (rr + 0.005, zu - 0.07), (rr + 0.005, zu), (rr - 0.02, zu)],
+            ring = lathe([(rr - 0.02, zu - 0.07), (rr + 0.005, zu - 0.07), (rr + 0.005, zu),
+                          (rr - 0.02, zu)],
                          64 if detail else 12, circumscribed=not detail).scale((1.0, kb / ka, 1.0))
             out.append(Part(ring, "wood"))
         return out
@@ -189,7 +201,7 @@ class DiningTableOval(PartsFactory):
             ia, ib = a - 0.02 - er, b - 0.02 - er * b / a
             plan = sg.Polygon(np.c_[ia * np.cos(t), ib * np.sin(t)])
         return [support_polygon("top", (0, 0, h), plan),
-                *oval_side_surfaces(p["top_shape"], a, b, h, p["seat_spacing"])]
+                *oval_side_surfaces(p["top_shape"], a, b, h, self.CHAIR_SPACING)]
 
 
 # ======================================================================================= desk
@@ -272,13 +284,15 @@ class Desk(PartsFactory):
         for k, (y0, y1) in enumerate(self._pedestals(p)):
             zb, zt = self.PLINTH + t, z_under
             step = (zt - zb) / n
-            cells = [Front(y0 + t, y1 - t, zb + i * step, zb + (i + 1) * step, "drawer") for i in range(n)]
+            cells = [Front(y0 + t, y1 - t, zb + i * step, zb + (i + 1) * step,
+                           "drawer") for i in range(n)]
             depth = xf - x0 - 0.006 - 0.02
             out += [(f, depth) for f in cabinet_fronts(xf, cells, depth, prefix=f"p{k}_")]
         if p["center_drawer"]:
             ky0, ky1 = self._knee(p)
             w, yc = min(0.6, ky1 - ky0 - 0.1), (ky0 + ky1) / 2
-            cells = [Front(yc - w / 2 + t, yc + w / 2 - t, z_under - self.CENTER_H + t, z_under, "drawer")]
+            cells = [Front(yc - w / 2 + t, yc + w / 2 - t, z_under - self.CENTER_H + t, z_under,
+                           "drawer")]
             depth = min(0.4, xf - x0 - 0.03)
             out += [(f, depth) for f in cabinet_fronts(xf, cells, depth, prefix="c_")]
         return out
@@ -294,10 +308,12 @@ class Desk(PartsFactory):
             pd, pw = xf - x0, y1 - y0
             ctr = ((xf + x0) / 2, (y0 + y1) / 2, 0.0)
             if detail:
-                out += _translate(carcass(pd, pw, self.PLINTH, z_under + OVERLAP, t, back=0.006, top=False), ctr)
+                out += _translate(carcass(pd, pw, self.PLINTH, z_under + OVERLAP, t, back=0.006,
+                                          top=False), ctr)
             else:
-                out.append(Part(box_between((x0, y0, self.PLINTH), (D / 2 - 0.005, y1, z_under + OVERLAP)), "front"))
-            out.append(Part(box_between((x0 + 0.01, y0 + 0.01, 0.0), (xf - 0.03, y1 - 0.01, self.PLINTH + OVERLAP)), "wood"))
+                out.append(_board((x0, y0, self.PLINTH), (D / 2 - 0.005, y1, z_under + OVERLAP), "front"))
+            out.append(_board((x0 + 0.01, y0 + 0.01, 0.0), (xf - 0.03, y1 - 0.01, self.PLINTH + OVERLAP),
+                              "wood"))
         style = self._style(p)
         if style == "legs":
             for leg in legs((D, W), 0.03, lt, 0.0, z_under + OVERLAP, taper=0.8 if detail else 1.0):
@@ -305,18 +321,19 @@ class Desk(PartsFactory):
             cx, cy = D / 2 - 0.03 - lt / 2, W / 2 - 0.03 - lt / 2
             ah = 0.07
             for s in (-1, 1):  # side aprons and the back apron
-                out.append(Part(box_between((-cx, s * cy - 0.01, z_under - ah), (cx, s * cy + 0.01, z_under + OVERLAP)),
-                                "wood"))
-            out.append(Part(box_between((-cx - 0.01, -cy, z_under - ah), (-cx + 0.01, cy, z_under + OVERLAP)), "wood"))
+                out.append(_board((-cx, s * cy - 0.01, z_under - ah),
+                                  (cx, s * cy + 0.01, z_under + OVERLAP), "wood"))
+            out.append(_board((-cx - 0.01, -cy, z_under - ah), (-cx + 0.01, cy, z_under + OVERLAP),
+                              "wood"))
         elif style == "single_pedestal":
             s = -1 if p["pedestal_side"] == "left" else 1
             ya, yb = sorted((s * W / 2, s * (W / 2 - 0.03)))
-            out.append(Part(box_between((-D / 2 + 0.02, ya, 0.0), (D / 2 - 0.02, yb, z_under + OVERLAP)), "wood"))
+            out.append(_board((-D / 2 + 0.02, ya, 0.0), (D / 2 - 0.02, yb, z_under + OVERLAP), "wood"))
         ky0, ky1 = self._knee(p)
         if p["modesty_panel"]:
             # against the carcasses' back panels (no sealed gap between them)
-            out.append(Part(box_between((-D / 2 + 0.02, ky0 - OVERLAP, z_under - 0.35),
-                                        (-D / 2 + 0.04, ky1 + OVERLAP, z_under + OVERLAP)), "wood"))
+            out.append(_board((-D / 2 + 0.02, ky0 - OVERLAP, z_under - 0.35),
+                              (-D / 2 + 0.04, ky1 + OVERLAP, z_under + OVERLAP), "wood"))
         if p["center_drawer"]:
             w, yc = min(0.6, ky1 - ky0 - 0.1), (ky0 + ky1) / 2
             zc = z_under - self.CENTER_H
@@ -324,8 +341,8 @@ class Desk(PartsFactory):
                 cd = carcass(xf - x0, w, zc, z_under + OVERLAP, t, back=0.006, top=False)
                 out += _translate(cd, ((xf + x0) / 2, yc, 0.0))
             else:
-                out.append(Part(box_between((x0, yc - w / 2, zc), (D / 2 - 0.005, yc + w / 2, z_under + OVERLAP)),
-                                "front"))
+                out.append(_board((x0, yc - w / 2, zc), (D / 2 - 0.005, yc + w / 2, z_under + OVERLAP),
+                                  "front"))
         if detail:
             for parts, _ in (f for f, _ in self._fronts(p)):
                 out += parts
@@ -341,12 +358,12 @@ class Desk(PartsFactory):
         t, hd = self.BOARD, self._hutch_depth(p)
         x0, x1 = -D / 2, -D / 2 + hd
         z0, z1 = h - OVERLAP, h + hh
-        out = [Part(box_between((x0, -W / 2, z1 - t), (x1, W / 2, z1)), "wood"),
-               Part(box_between((x0, -W / 2 + t - OVERLAP, z0), (x0 + 0.008, W / 2 - t + OVERLAP, z1 - t + OVERLAP)),
-                    "back")]
+        out = [_board((x0, -W / 2, z1 - t), (x1, W / 2, z1), "wood"),
+               _board((x0, -W / 2 + t - OVERLAP, z0),
+                      (x0 + 0.008, W / 2 - t + OVERLAP, z1 - t + OVERLAP), "back")]
         for s in (-1, 1):
             ya, yb = sorted((s * W / 2, s * (W / 2 - t)))
-            out.append(Part(box_between((x0, ya, z0), (x1, yb, z1 - t + OVERLAP)), "wood"))
+            out.append(_board((x0, ya, z0), (x1, yb, z1 - t + OVERLAP), "wood"))
         return out
 
     def joints(self, p):
@@ -357,10 +374,12 @@ class Desk(PartsFactory):
         x0 = -D / 2 + (self._hutch_depth(p) + 0.01 if p["hutch"] else 0.02)
         x1 = D / 2 - 0.02
         out = [support_rect("top", ((x0 + x1) / 2, 0, h), (x1 - x0) / 2, W / 2 - 0.02),
-               Surface.rect("side_0", Subpart.Side, (D / 2, 0, h / 2), (1, 0, 0), (0, 1, 0), W / 2, h / 2)]
+               Surface.rect("side_0", Subpart.Side, (D / 2, 0, h / 2), (1, 0, 0), (0, 1, 0), W / 2,
+                            h / 2)]
         if p["hutch"]:
             hd = self._hutch_depth(p)
-            out.append(support_rect("hutch_top", (-D / 2 + hd / 2, 0, h + p["hutch_height"]), hd / 2 - 0.02,
+            out.append(support_rect("hutch_top", (-D / 2 + hd / 2, 0, h + p["hutch_height"]),
+                                    hd / 2 - 0.02,
                                     W / 2 - 0.02))
         return out
 
@@ -410,12 +429,14 @@ class ConsoleTable(PartsFactory):
         z0, z1 = h - tt - ah + t, h - tt
         inner0, inner1 = y0 + t, y1 - t
         cw = (inner1 - inner0 - (n - 1) * t) / n
-        cells = [Front(inner0 + i * (cw + t), inner0 + i * (cw + t) + cw, z0, z1, "drawer") for i in range(n)]
+        cells = [Front(inner0 + i * (cw + t), inner0 + i * (cw + t) + cw, z0, z1,
+                       "drawer") for i in range(n)]
         depth = xf - x0 - 0.006 - 0.02
         return cabinet_fronts(xf, cells, depth), depth
 
     def _table_params(self, p) -> dict[str, Any]:
-        return {"height": p["height"], "top_thickness": p["top_thickness"], "edge_radius": p["edge_radius"],
+        return {"height": p["height"], "top_thickness": p["top_thickness"],
+                "edge_radius": p["edge_radius"],
                 "leg_thickness": p["leg_thickness"], "leg_inset": self.INSET, "leg_style": p["leg_style"],
                 "apron_height": p["apron_height"], "lower_shelf": p["lower_shelf"],
                 "shelf_height": p["shelf_height"], "stretchers": False}
@@ -432,17 +453,17 @@ class ConsoleTable(PartsFactory):
                         else box((D, W, tt), (0, 0, h - tt / 2)), "wood")]
             for s in (-1, 1):
                 ya, yb = sorted((s * (W / 2 - self.INSET), s * (W / 2 - self.INSET - lt)))
-                out.append(Part(box_between((-D / 2 + self.INSET, ya, 0.0), (D / 2 - self.INSET, yb, h - tt + OVERLAP)),
-                                "wood"))
+                out.append(_board((-D / 2 + self.INSET, ya, 0.0),
+                                  (D / 2 - self.INSET, yb, h - tt + OVERLAP), "wood"))
             if p["lower_shelf"]:
                 yi = W / 2 - self.INSET - lt + OVERLAP
                 zs = p["shelf_height"]
-                out.append(Part(box_between((-D / 2 + self.INSET, -yi, zs - 0.018), (D / 2 - self.INSET, yi, zs)),
-                                "wood"))
+                out.append(_board((-D / 2 + self.INSET, -yi, zs - 0.018), (D / 2 - self.INSET, yi, zs),
+                                  "wood"))
             if n == 0:  # a back apron stiffening the ends
                 yi = W / 2 - self.INSET - lt + OVERLAP
-                out.append(Part(box_between((-D / 2 + self.INSET, -yi, h - tt - p["apron_height"]),
-                                            (-D / 2 + self.INSET + 0.02, yi, h - tt + OVERLAP)), "wood"))
+                out.append(_board((-D / 2 + self.INSET, -yi, h - tt - p["apron_height"]),
+                                  (-D / 2 + self.INSET + 0.02, yi, h - tt + OVERLAP), "wood"))
         if n:
             x0, xf, y0, y1 = self._carcass_span(p)
             z0 = h - tt - p["apron_height"]
@@ -450,13 +471,14 @@ class ConsoleTable(PartsFactory):
                 inner0, inner1 = y0 + t, y1 - t
                 cw = (inner1 - inner0 - (n - 1) * t) / n
                 dividers = [inner0 + i * (cw + t) - t / 2 for i in range(1, n)]
-                cc = carcass(xf - x0, y1 - y0, z0, h - tt + OVERLAP, t, back=0.006, dividers=dividers, top=False)
+                cc = carcass(xf - x0, y1 - y0, z0, h - tt + OVERLAP, t, back=0.006, dividers=dividers,
+                             top=False)
                 out += _translate(cc, ((xf + x0) / 2, (y0 + y1) / 2, 0.0))
                 fronts, _ = self._fronts(p)
                 for parts, _ in fronts:
                     out += parts
             else:
-                out.append(Part(box_between((x0, y0, z0), (D / 2 - 0.005, y1, h - tt + OVERLAP)), "front"))
+                out.append(_board((x0, y0, z0), (D / 2 - 0.005, y1, h - tt + OVERLAP), "front"))
         return out
 
     def joints(self, p):
