@@ -457,7 +457,7 @@ def _blade_outline(style: str, L: float, w: float) -> sg.Polygon:
     pts = np.vstack([np.c_[x, edge], np.c_[x[::-1], spine[::-1]]])
     poly = sg.Polygon(pts).buffer(0)
     if style == "cleaver":
-        poly = poly.difference(sg.Point(0.85 * L, 0.6 * h).buffer(0.006, 8))
+        poly = poly.difference(sg.Point(0.85 * L, 0.6 * h).buffer(0.006, quad_segs=8))
     return poly
 
 
@@ -573,8 +573,8 @@ class Fork(PartsFactory):
             y0 = -W / 2 + (i + 1) * tw + i * sw
             poly = poly.difference(sg.box(0.45 * L, y0, L + 0.01, y0 + sw))
         r = 0.3 * min(tw, sw)
-        return poly.buffer(-r, join_style="round", resolution=3).buffer(r, join_style="round",
-                                                                        resolution=3)
+        return poly.buffer(-r, join_style="round", quad_segs=3).buffer(
+            r, join_style="round", quad_segs=3)
 
     def parts(self, p, detail):
         L, W, Lh = p["head_length"], p["head_width"], p["handle_length"]
@@ -736,14 +736,14 @@ class Spatula(PartsFactory):
         x0 = -0.005
         poly = sg.Polygon([(x0, -neck / 2), (0.3 * L, -W / 2), (L, -W / 2), (L, W / 2),
                            (0.3 * L, W / 2), (x0, neck / 2)])
-        poly = poly.buffer(-r, join_style="round", resolution=4).buffer(r, join_style="round",
-                                                                        resolution=4)
+        poly = poly.buffer(-r, join_style="round", quad_segs=4).buffer(
+            r, join_style="round", quad_segs=4)
         n = int(p["slots"]) if style == "turner" else 0
         if n:
             sw = min(0.005, 0.5 * W / (2 * n))
             for y in (np.arange(n) - (n - 1) / 2) * (0.7 * W / max(n, 1)):
                 poly = poly.difference(sg.box(0.35 * L, y - sw / 2, 0.85 * L, y + sw / 2)
-                                       .buffer(sw / 2 * 0.99, resolution=3))
+                                       .buffer(sw / 2 * 0.99, quad_segs=3))
         return poly
 
     def parts(self, p, detail):
@@ -789,12 +789,12 @@ class CuttingBoard(PartsFactory):
         """Convex pieces of the outline (board, and a paddle's tab)."""
         L, W, s = p["length"], p["width"], p["style"]
         r = 0.002 if s == "rect" else min(p["corner_radius"], 0.3 * W)
-        board = sg.box(-L / 2 + r, -W / 2 + r, L / 2 - r, W / 2 - r).buffer(r, resolution=4)
+        board = sg.box(-L / 2 + r, -W / 2 + r, L / 2 - r, W / 2 - r).buffer(r, quad_segs=4)
         if s != "paddle":
             return [board]
         tw, tl = 0.35 * W, self._tab(p)
         tab = sg.box(L / 2 - 0.02, -tw / 2 + 0.01, L / 2 + tl - 0.01, tw / 2 - 0.01).buffer(
-            0.01, resolution=4)
+            0.01, quad_segs=4)
         return [board, tab]
 
     def _tab(self, p) -> float:
@@ -805,9 +805,9 @@ class CuttingBoard(PartsFactory):
             return None
         L, W = p["length"], p["width"]
         if p["style"] == "paddle":
-            return sg.Point(L / 2 + self._tab(p) - 0.03, 0.0).buffer(0.012, resolution=4)
+            return sg.Point(L / 2 + self._tab(p) - 0.03, 0.0).buffer(0.012, quad_segs=4)
         return sg.LineString([(L / 2 - 0.045, -0.035), (L / 2 - 0.045, 0.035)]).buffer(
-            0.011, resolution=4)
+            0.011, quad_segs=4)
 
     def _groove(self, p) -> tuple[sg.Polygon, float] | None:
         """(the groove's ring, its depth)."""
