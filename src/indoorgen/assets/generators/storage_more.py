@@ -20,8 +20,8 @@ import shapely.geometry as sg
 from ...tags import Semantics as S
 from ...tags import Subpart
 from ..base import Joint, Param, Surface, register
-from ..parts import (MOVING_GAP, DoorJoint, Part, bar_handle, bevel_box, box, box_between,
-                     drawer, frame, hinged_door, legs, rod, solid_union)
+from ..parts import (MOVING_GAP, DoorJoint, Part, bevel_box, box, box_between, drawer, frame,
+                     hinged_door, legs, rod)
 from ._common import PartsFactory, bottom_rect, make_joint, support_polygon, support_rect
 
 OVERLAP = 0.002   # how far touching boards interpenetrate so each link is one shell

@@ -35,7 +35,7 @@ class PalletRack(PartsFactory):
         "n_levels": Param(2, 5, kind="int",
                           doc=f"beam levels (dropped if the rack would exceed {MAX_RACK_HEIGHT} m)"),
         "level_spacing": Param(1.0, 1.6, doc="vertical pitch between beam levels (m)"),
-        "first_level": Param(0.12, 0.3, doc="height of the lowest deck's top (m)"),
+        "first_level": Param(0.2, 0.35, doc="height of the lowest deck's top (m)"),
         "upright_width": Param(0.07, 0.11, doc="post section (m)"),
         "beam_height": Param(0.08, 0.14, doc="beam section height (m)"),
         "deck": Param(kind="choice", choices=("steel", "plywood"), doc="deck panels"),

@@ -1,0 +1,391 @@
+"""Storage, lighting and warehouse generators: what is specific to each beyond the generic
+contract of test_generators.py (surfaces where they should be, fronts that really move, lights
+that really emit, ...)."""
+from __future__ import annotations
+
+import math
+
+import manifold3d as m3d
+import numpy as np
+import pytest
+import shapely.geometry as sg
+import trimesh
+
+from indoorgen.assets.base import get_factory
+from indoorgen.tags import Semantics, Subpart
+from support.assetcheck import build, distances, sample_polygon
+
+STORAGE = ["cabinet", "wardrobe", "dresser", "nightstand", "cell_shelf", "wall_shelf",
+           "corner_shelf", "shoe_rack"]
+WAREHOUSE = ["pallet_rack", "wooden_pallet"]
+LIGHTS = ["ceiling_light", "pendant_light", "desk_lamp", "wall_sconce", "table_lamp"]
+ALL = STORAGE + WAREHOUSE + LIGHTS
+SEEDS = range(6)
+TOL = 1e-3
+
+
+def _on_mesh(asset, surface) -> float:
+    """Largest distance from the surface's sample points to the mesh."""
+    pts = surface.to_world(sample_polygon(surface.polygon))
+    assert len(pts) >= 3
+    return float(distances(asset.mesh, pts).max())
+
+
+def _solid(mesh: trimesh.Trimesh) -> m3d.Manifold:
+    return m3d.Manifold(m3d.Mesh(vert_properties=np.asarray(mesh.vertices, np.float32),
+                                 tri_verts=np.asarray(mesh.faces, np.uint32)))
+
+
+def _build_with(name: str, seed: int, **over):
+    f = get_factory(name)
+    p = f.sample_params(np.random.default_rng(seed))
+    p.update(over)
+    return f, p, f.create(p)
+
+
+def _signature(f, p) -> tuple:
+    """A cheap fingerprint of the detailed geometry: every piece's bounding box and volume."""
+    parts = f.parts(f.resolve(p), True)
+    return tuple(sorted((tuple(np.round(q.solid.bounding_box(), 6)), round(q.solid.volume(), 10),
+                         q.solid.num_tri()) for q in parts))
+
+
+# ------------------------------------------------------------------------------- declarations
+@pytest.mark.parametrize("name", ALL)
+def test_every_param_changes_the_geometry(name):
+    """Each documented parameter, moved across its range (or choices), changes the detailed
+    geometry for at least one sampled configuration."""
+    f = get_factory(name)
+    for key, prm in f.params.items():
+        if prm.kind in ("float", "int"):
+            values = [prm.low, prm.high]
+        elif prm.kind == "bool":
+            values = [False, True]
+        else:
+            values = list(prm.choices)
+        for seed in range(30):
+            base = f.sample_params(np.random.default_rng(seed))
+            sigs = {_signature(f, {**base, key: v}) for v in values}
+            if len(sigs) > 1:
+                break
+        else:
+            pytest.fail(f"{name}.{key} never changes the geometry")
+
+
+def test_tags():
+    for name in STORAGE:
+        assert Semantics.Storage in get_factory(name).tags
+    assert Semantics.WallMounted in get_factory("wall_shelf").tags
+    assert Semantics.WallMounted in get_factory("wall_sconce").tags
+    for name in ("ceiling_light", "pendant_light"):
+        assert Semantics.CeilingMounted in get_factory(name).tags
+    for name in LIGHTS:
+        assert Semantics.Lighting in get_factory(name).tags
+    assert {Semantics.Warehouse, Semantics.PalletRack, Semantics.Shelf} <= get_factory("pallet_rack").tags
+    assert {Semantics.Warehouse, Semantics.Pallet} <= get_factory("wooden_pallet").tags
+
+
+# ------------------------------------------------------------------------------ cabinets
+@pytest.mark.parametrize("seed", SEEDS)
+def test_cabinet_doors_shelves_and_top(seed):
+    f, p, _, a = build("cabinet", seed)
+    d, w, h = a.extents
+    top = a.surface("top")
+    assert top.subpart == Subpart.SupportSurface and abs(top.origin[2] - h) < TOL
+    assert _on_mesh(a, top) < TOL
+    doors = [j for j in a.joints if j.kind == "revolute"]
+    assert len(doors) == (1 if p["width"] < 0.5 else p["n_doors"])
+    drawers = [j for j in a.joints if j.kind == "prismatic"]
+    assert len(drawers) == (len(doors) if p["drawer_row"] else 0)
+    interior = a.surfaces_of(Subpart.Interior)
+    assert len(interior) >= 1
+    zs = sorted(s.origin[2] for s in interior)
+    assert all(b - a_ >= 0.18 for a_, b in zip(zs, zs[1:]))  # shelves keep 18 cm apart
+    for s in interior:
+        assert np.allclose(s.normal, (0, 0, 1)) and 0 < s.origin[2] < h
+        assert _on_mesh(a, s) < TOL
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_cabinet_open_doors_expose_the_shelves(seed):
+    """Fully open, no door leaf is in front of the compartment any more."""
+    _, p, _, a = build("cabinet", seed)
+    opened = a.posed({j.name: j.upper for j in a.joints})
+    d, w, h = a.extents
+    s = a.surfaces_of(Subpart.Interior)[0]
+    # a ray from the compartment floor straight out of the front (a quarter of the width off
+    # the middle, where two doors meet) meets nothing
+    origin = s.origin + np.array([0.0, w / 4, 0.05])
+    hits = opened.ray.intersects_location([origin], [[1.0, 0.0, 0.0]])[0]
+    assert len(hits) == 0
+    closed_hits = a.mesh.ray.intersects_location([origin], [[1.0, 0.0, 0.0]])[0]
+    assert len(closed_hits) > 0  # closed, the door is in the way
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_wardrobe_doors(seed):
+    f, p, _, a = build("wardrobe", seed)
+    doors = [j for j in a.joints if j.child.startswith("door")]
+    if p["door_type"] == "sliding":
+        assert len(doors) == 2 and all(j.kind == "prismatic" for j in doors)
+        axes = sorted(float(j.axis[1]) for j in doors)
+        assert axes == [-1.0, 1.0] and all(abs(j.axis[0]) < 1e-9 for j in doors)
+        # the panels run on separate tracks: they pass each other without touching
+        m0, m1 = (a.link_mesh(j.child) for j in doors)
+        assert m0.bounds[1][0] < m1.bounds[0][0] or m1.bounds[1][0] < m0.bounds[0][0]
+        j0 = doors[0]
+        moved = m0.copy()
+        moved.apply_transform(j0.transform(j0.upper))
+        assert (_solid(moved) ^ _solid(m1)).volume() < 1e-9
+    else:
+        n = f._n_doors(p)
+        assert 2 <= n <= 4 and len(doors) == n and all(j.kind == "revolute" for j in doors)
+        assert 0.3 - 1e-9 <= p["width"] / n <= 0.65 + 1e-9
+    drawers = [j for j in a.joints if j.child.startswith("drawer")]
+    assert len(drawers) == p["drawer_rows"] * (3 if p["width"] > 1.3 else 2)
+    interior = a.surfaces_of(Subpart.Interior)
+    assert interior and all(_on_mesh(a, s) < TOL for s in interior)
+    # the hat shelf over the hanging rail sits shelf_drop below the carcass top
+    H = a.extents[2]
+    target = H - p["board_thickness"] - p["shelf_drop"]
+    assert min(abs(s.origin[2] - target) for s in interior) < TOL
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_dresser_drawers(seed):
+    f, p, _, a = build("dresser", seed)
+    case = f.layout(p)
+    assert all(j.kind == "prismatic" and np.allclose(j.axis, (1, 0, 0)) for j in a.joints)
+    n_cells = len([c for c in case.cells if c.kind == "drawer"])
+    assert len(a.joints) == n_cells >= 3
+    for j in a.joints:
+        assert j.upper >= 0.8 * (p["depth"] - 0.03) - 1e-9  # opens most of its depth
+    top = a.surface("top")
+    assert abs(top.origin[2] - a.extents[2]) < TOL and _on_mesh(a, top) < TOL
+    # each drawer is a box: pulled out, its floor is reachable from above (open-topped)
+    j = a.joints[0]
+    opened = a.posed({j.name: j.upper})
+    child = a.link_mesh(j.child)
+    lo, hi = child.bounds
+    probe = np.array([[hi[0] - 0.12 + j.upper, (lo[1] + hi[1]) / 2, hi[2] + 0.5]])
+    hit = opened.ray.intersects_location(probe, [[0.0, 0.0, -1.0]])[0]
+    assert len(hit) and hit[:, 2].max() < hi[2] - 0.01
+
+
+@pytest.mark.parametrize("layout", ["drawer_shelf", "two_drawers", "drawer_door", "open",
+                                    "three_drawers"])
+def test_nightstand_layouts(layout):
+    f, p, a = _build_with("nightstand", 3, layout=layout, height=0.65)
+    kinds = sorted(j.kind for j in a.joints)
+    expected = {"drawer_shelf": ["prismatic"], "two_drawers": ["prismatic"] * 2,
+                "drawer_door": ["prismatic", "revolute"], "open": [],
+                "three_drawers": ["prismatic"] * 3}[layout]
+    assert kinds == expected
+    shelves = [s for s in a.surfaces if s.name.startswith("shelf_")]
+    assert len(shelves) == {"drawer_shelf": 1, "open": 2}.get(layout, 0)
+    for s in shelves + a.surfaces_of(Subpart.Interior) + [a.surface("top")]:
+        assert _on_mesh(a, s) < TOL
+    assert len(a.surfaces_of(Subpart.Interior)) == (1 if layout == "drawer_door" else 0)
+
+
+# -------------------------------------------------------------------------------- shelves
+@pytest.mark.parametrize("seed", SEEDS)
+def test_cell_shelf_cells(seed):
+    f, p, _, a = build("cell_shelf", seed)
+    nr, nc = p["n_rows"], p["n_cols"]
+    cells = [s for s in a.surfaces if s.name.startswith("cell_")]
+    assert len(cells) == nr * nc
+    assert all(s.subpart == Subpart.SupportSurface for s in cells)
+    zs = sorted({round(float(s.origin[2]), 6) for s in cells})
+    assert len(zs) == nr
+    assert np.allclose(np.diff(zs), p["cell_size"] + p["inner_thickness"], atol=1e-6)
+    for s in cells:
+        assert _on_mesh(a, s) < TOL
+        # a cube of cell_size is free above every cell floor
+        hit = a.mesh.ray.intersects_location([s.origin + (0, 0, 0.001)], [[0.0, 0.0, 1.0]])[0]
+        assert abs(hit[:, 2].min() - s.origin[2] - p["cell_size"]) < TOL
+
+
+@pytest.mark.parametrize("style", ["floating", "bracketed", "boxed"])
+@pytest.mark.parametrize("n_boards", [1, 3])
+def test_wall_shelf_back_on_wall(style, n_boards):
+    f, p, a = _build_with("wall_shelf", 1, style=style, n_boards=n_boards, edge_radius=0.004)
+    back = a.surface("back")
+    d = a.extents[0]
+    assert np.allclose(back.normal, (-1, 0, 0)) and np.allclose(back.corners()[:, 0], -d / 2)
+    assert _on_mesh(a, back) < TOL
+    shelves = [s for s in a.surfaces if s.name.startswith("shelf_")]
+    assert len(shelves) == n_boards + (1 if style == "boxed" else 0)
+    zs = sorted(s.origin[2] for s in shelves)
+    assert abs(zs[-1] - a.extents[2]) < TOL  # the top board is the top
+    assert all(b - a_ >= p["spacing"] for a_, b in zip(zs, zs[1:]))
+    assert all(_on_mesh(a, s) < TOL for s in shelves)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_corner_shelf_fits_a_corner(seed):
+    f, p, _, a = build("corner_shelf", seed)
+    d, w, h = a.extents
+    assert abs(d - p["size"]) < TOL and abs(w - p["size"]) < TOL
+    back, side = a.surface("back"), a.surface("side_left")
+    assert np.allclose(side.normal, (0, 1, 0))
+    assert _on_mesh(a, back) < TOL and _on_mesh(a, side) < TOL  # flat against both walls
+    shelves = sorted((s for s in a.surfaces if s.name.startswith("shelf_")), key=lambda s: s.origin[2])
+    assert len(shelves) == p["n_levels"]
+    assert np.allclose(np.diff([s.origin[2] for s in shelves]), p["level_spacing"])
+    for s in shelves:
+        assert _on_mesh(a, s) < TOL
+        # every shelf lies in the corner's half: beyond the diagonal there is nothing
+        c = s.corners()
+        assert ((c[:, 0] + d / 2) + (w / 2 - c[:, 1]) <= p["size"] * math.sqrt(2) + 1e-6).all()
+    # the open front corner (+X, -Y) is empty
+    probe = np.array([[d / 2 - 0.01, -w / 2 + 0.01, h / 2]])
+    assert distances(a.mesh, probe)[0] > 0.005
+
+
+@pytest.mark.parametrize("tier_style", ["slats", "solid"])
+@pytest.mark.parametrize("seed", range(3))
+def test_shoe_rack_tiers(tier_style, seed):
+    f, p, a = _build_with("shoe_rack", seed, tier_style=tier_style)
+    tiers = sorted((s for s in a.surfaces if s.name.startswith("tier_")), key=lambda s: s.origin[2])
+    assert len(tiers) == p["n_tiers"]
+    assert np.allclose(np.diff([s.origin[2] for s in tiers]), p["tier_spacing"])
+    for s in tiers:
+        assert _on_mesh(a, s) < TOL
+        holes = list(s.polygon.interiors)
+        assert len(holes) == (p["n_slats"] - 1 if tier_style == "slats" else 0)
+        for hole in holes:  # the holes really are gaps between slats
+            c = np.asarray(sg.Polygon(hole).centroid.coords)
+            assert distances(a.mesh, s.to_world(c))[0] > 0.005
+
+
+# ------------------------------------------------------------------------------ warehouse
+@pytest.mark.parametrize("seed", SEEDS)
+def test_pallet_rack_levels(seed):
+    f, p, _, a = build("pallet_rack", seed)
+    levels = [s for s in a.surfaces if s.name.startswith("level_")]
+    n_levels = len({s.name.split("_")[1] for s in levels})
+    assert 2 <= n_levels <= p["n_levels"]
+    assert len(levels) == n_levels * p["n_bays"]
+    assert a.extents[2] <= 6.0 + 1e-9
+    zs = sorted({round(float(s.origin[2]), 6) for s in levels})
+    assert abs(zs[0] - p["first_level"]) < 1e-6
+    assert np.allclose(np.diff(zs), p["level_spacing"])
+    for s in levels:
+        assert _on_mesh(a, s) < TOL
+        # room for a 1.2 x 0.8 m pallet on each bay
+        x0, y0, x1, y1 = s.polygon.bounds
+        assert x1 - x0 >= min(0.75, p["depth"] - 0.05) and y1 - y0 >= 1.2
+
+
+@pytest.mark.parametrize("style", ["block", "stringer"])
+@pytest.mark.parametrize("seed", range(4))
+def test_wooden_pallet_deck(style, seed):
+    f, p, a = _build_with("wooden_pallet", seed, style=style)
+    d, w, h = a.extents
+    assert abs(d - p["width"]) < TOL and abs(w - p["length"]) < TOL and 0.09 < h < 0.2
+    top = a.surface("top")
+    assert top.subpart == Subpart.SupportSurface and abs(top.origin[2] - h) < TOL
+    assert _on_mesh(a, top) < TOL
+    holes = list(top.polygon.interiors)
+    assert len(holes) == p["n_top_boards"] - 1
+    for hole in holes:  # the gaps between deck boards are open
+        c = np.asarray(sg.Polygon(hole).centroid.coords)
+        assert distances(a.mesh, top.to_world(c))[0] > 0.005
+    # a forklift fork (10 cm wide, 4 cm high) passes right through the pallet under the deck:
+    # along Y between the blocks, or along X between the stringers
+    t, hb = p["deck_thickness"], p["block_height"]
+    if style == "block":
+        bx = min(0.145, d * 0.16)
+        fork = trimesh.creation.box((0.1, w + 0.2, 0.04))
+        fork.apply_translation(((-d / 2 + bx / 2) / 2, 0.0, t + hb / 2))
+    else:
+        z0 = t if p["bottom_deck"] else 0.0
+        fork = trimesh.creation.box((d + 0.2, 0.1, 0.04))
+        fork.apply_translation((0.0, (-w / 2 + 0.019) / 2, z0 + hb / 2))
+    assert (_solid(a.mesh) ^ _solid(fork)).volume() < 1e-9
+
+
+# ------------------------------------------------------------------------------- lighting
+def _emissive_faces(a) -> np.ndarray:
+    return np.nonzero(np.asarray(a.slots)[a.face_slots] == "emissive")[0]
+
+
+@pytest.mark.parametrize("name", LIGHTS)
+@pytest.mark.parametrize("seed", range(8))
+def test_lights_emit(name, seed):
+    _, _, _, a = build(name, seed)
+    faces = _emissive_faces(a)
+    assert len(faces) >= 8 and a.mesh.area_faces[faces].sum() > 1e-4
+
+
+@pytest.mark.parametrize("name", ["ceiling_light", "pendant_light"])
+@pytest.mark.parametrize("seed", range(10))
+def test_ceiling_mounts(name, seed):
+    _, _, _, a = build(name, seed)
+    top = a.surface("top")
+    assert top.subpart == Subpart.Top and np.allclose(top.normal, (0, 0, 1))
+    assert abs(top.origin[2] - a.extents[2]) < TOL
+    assert _on_mesh(a, top) < TOL  # a flat canopy against the ceiling
+    assert top.polygon.area >= math.pi * 0.035 ** 2
+
+
+@pytest.mark.parametrize("style", ["dome", "drum", "panel", "spots", "chandelier"])
+def test_ceiling_light_styles(style):
+    f, p, a = _build_with("ceiling_light", 2, style=style)
+    top = a.surface("top")
+    assert _on_mesh(a, top) < TOL
+    assert a.mesh.is_watertight and a.mesh.body_count == 1
+    # the light comes out below the mounting: emissive faces are in the lower 90 %
+    em = a.mesh.triangles_center[_emissive_faces(a)]
+    assert em[:, 2].min() < 0.9 * a.extents[2]
+
+
+@pytest.mark.parametrize("shade", ["dome", "cone", "drum", "globe", "cage"])
+def test_pendant_hangs_by_its_cord(shade):
+    f, p, a = _build_with("pendant_light", 0, shade=shade, drop=0.9)
+    assert a.extents[2] > 0.9 + p["shade_height"] * 0.5
+    # the cord is thin: a horizontal slice half way up the drop is smaller than 2 cm across
+    z = a.extents[2] - 0.025 - 0.45
+    section = a.mesh.section(plane_origin=(0, 0, z), plane_normal=(0, 0, 1))
+    assert section is not None
+    ext = section.bounds[1] - section.bounds[0]
+    assert ext[:2].max() < 0.02
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_desk_lamp_head_tilts(seed):
+    f, p, _, a = build("desk_lamp", seed)
+    (j,) = a.joints
+    assert j.kind == "revolute" and j.child == "head" and np.allclose(np.abs(j.axis), (0, 1, 0))
+    head = a.link_mesh("head")
+    em = np.isin(a.link_faces("head"), _emissive_faces(a))
+    assert em.any()  # the bulb is in the head
+    for q in (j.lower, j.upper):
+        moved = trimesh.transform_points(head.vertices, j.transform(q))
+        assert np.linalg.norm(moved - head.vertices, axis=1).max() > 0.05
+    bottom = a.surface("bottom")
+    assert _on_mesh(a, bottom) < TOL
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_wall_sconce_back_on_wall(seed):
+    _, p, _, a = build("wall_sconce", seed)
+    back = a.surface("back")
+    d = a.extents[0]
+    assert np.allclose(back.normal, (-1, 0, 0)) and np.allclose(back.corners()[:, 0], -d / 2)
+    assert _on_mesh(a, back) < TOL
+    # nothing but the plate touches the wall: the mesh within 1 cm of it is plate-sized
+    near = a.mesh.vertices[a.mesh.vertices[:, 0] < -d / 2 + 0.01]
+    assert np.ptp(near[:, 1]) <= p["plate_size"] + 1e-6 and np.ptp(near[:, 2]) <= p["plate_size"] + 1e-6
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_table_lamp_bulb_under_shade(seed):
+    _, p, _, a = build("table_lamp", seed)
+    em = a.mesh.triangles_center[_emissive_faces(a)]
+    r = np.linalg.norm(em[:, :2], axis=1)
+    assert r.max() < p["shade_radius"] * 0.6  # the bulb is on the axis, inside the shade
+    z_shade0 = p["base_height"] + p["neck_height"]
+    assert em[:, 2].min() > z_shade0 - 0.06 and em[:, 2].max() < z_shade0 + p["shade_height"]
+    assert _on_mesh(a, a.surface("bottom")) < TOL
