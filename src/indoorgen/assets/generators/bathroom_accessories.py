@@ -23,6 +23,7 @@ from .bathroom_fixtures import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_so
 PLATE = 0.012  # thickness of a wall plate or rosette (m)
 TOWEL = 0.01  # thickness of a folded towel's layer (m)
 HOOK_PLATE_ASPECT = 1.5  # a robe hook's plate is taller than wide
+SHELF_CLEARANCE = 0.12  # least height between a mirror cabinet's shelves (bottles) (m)
 
 def _plate(shape: str, size: float, y: float, z: float, aspect: float = 1.0) -> Prim:
     """A round (oval) rosette or square (oblong) plate on the wall (x = 0), centred on (y, z):
@@ -335,7 +336,8 @@ class BathroomMirrorCabinet(PartsFactory):
         "height": Param(0.5, 0.8, doc="Z extent of the carcass (m)"),
         "depth": Param(0.1, 0.18, doc="X extent of the carcass (m)"),
         "n_doors": Param(1, 3, kind="int", doc="doors (adjusted so each is 0.25 to 0.6 m wide)"),
-        "n_shelves": Param(1, 3, kind="int", doc="glass shelves behind the doors"),
+        "n_shelves": Param(1, 3, kind="int", doc="glass shelves behind the doors (fewer if "
+                                                   "they would be under 12 cm apart)"),
         "open_shelf": Param(kind="bool", doc="an open compartment under the doors"),
         "light": Param(kind="choice", choices=("none", "top", "bottom"), doc="light bar"),
         "door_style": Param(kind="choice", choices=("mirror", "framed"),
@@ -348,7 +350,7 @@ class BathroomMirrorCabinet(PartsFactory):
         n = min(max(int(p["n_doors"]), math.ceil(W / 0.6)), max(1, int(W // 0.25)))
         z_d0 = 0.13 if p["open_shelf"] else 0.0  # bottom of the door zone
         z_in = z_d0 + t  # floor of the closed part
-        k = int(p["n_shelves"])
+        k = min(int(p["n_shelves"]), int((H - t - z_in) / SHELF_CLEARANCE) - 1)
         zs = [z_in + (i + 1) * (H - t - z_in) / (k + 1) for i in range(k)]
         return dict(W=W, H=H, D=D, t=t, n=n, z_d0=z_d0, z_in=z_in, shelves=zs)
 

@@ -1175,7 +1175,9 @@ class Toilet(PartsFactory):
         top = g["H"] + g["ch"] + (0.025 if g["style"] == "two_piece" else 0.0)
         if p["flush"] == "button":
             return [("cyl", 0.022, 0.009, (g["cd"] / 2, 0.0, top - OV))]
-        x, y, z = g["cd"] - 0.035, g["cw"] / 2, g["H"] + g["ch"] - 0.05
+        x, y, z = g["cd"] - 0.05, g["cw"] / 2, g["H"] + g["ch"] - 0.05
+        if g["style"] == "one_piece":  # its sides lean in: 0.5 cw wide at H - 0.12, 0.46 cw at the top
+            y = g["cw"] * (0.5 - 0.04 * (z - g["H"] + 0.12) / (g["ch"] + 0.12)) - 0.004
         return [("rod", (x, y - OV, z), (x, y + 0.01, z), 0.018),
                 ("rod", (x, y + 0.012, z), (x - 0.075, y + 0.012, z + 0.01), 0.007)]
 
@@ -1408,7 +1410,11 @@ class ShowerEnclosure(PartsFactory):
                                                             for s in prim_parts(knob, True)]
                 motion = DoorJoint("revolute", np.array([0.0, 0.0, sgn]), np.array([cx, cy, 0.0]),
                                    f"door_{i}")
-                out.append((parts, motion, math.radians(36.0)))
+                # a leaf slides round until its far end is 9 cm (mixer) from the back wall or
+                # 2 cm from the left wall, at most 36 degrees
+                room = (cx - g["x_w"] - 0.09) if sgn < 0 else (g["y_w"] - 0.02 - cy)
+                out.append((parts, motion, min(math.asin(min(max(room / (rd + t / 2), 0.1), 1.0)),
+                                               math.radians(36.0))))
             return out
         if p["door"] == "hinged":
             h = self._hinged(g)
