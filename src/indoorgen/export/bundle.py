@@ -1,0 +1,285 @@
+"""`ExportBundle`: everything the exporters read, gathered once.
+
+Every exporter (USD, URDF, MJCF, glTF, OBJ) is a pure function of one bundle, so the same code
+exports a single furnished room today and a whole home (many rooms, doors, windows, stairs)
+tomorrow. A bundle holds:
+
+- `scene`: the `Scene` (objects with generator, params, seed, pose, tags, room, relations);
+- `assets`: object name -> full `Asset` (mesh in the object's local frame, links, joints,
+  material slots, UVs, convex collision pieces);
+- `materials`: object name -> {slot: `MatRef`}: one material (and texture seed) per slot,
+  drawn deterministically from the object's `seed`, so re-exporting a saved scene.json gives
+  the same materials;
+- `elements`: the architecture as `ArchElement`s (floors, walls, ceilings, doors, windows,
+  stairs...), meshes in world coordinates, each part with its material.
+
+Builders: `bundle_from_generated` (a freshly generated scene), `bundle_from_scene` (a saved
+scene: rooms rebuilt with `floorplan.room.build_room`, assets from the generators) and
+`elements_from_architecture` (a solidified home from `floorplan.solidify`).
+"""
+from __future__ import annotations
+
+import logging
+import zlib
+from dataclasses import dataclass, field
+from typing import Any, Iterable
+
+import numpy as np
+import trimesh
+
+from ..assets.base import Asset
+from ..assets.materials import choose_materials
+from ..scene import Scene, SceneObject
+
+log = logging.getLogger(__name__)
+
+#: slots whose faces emit light (bulbs, diffusers, LED faces, flames)
+EMISSIVE_SLOTS = ("emissive", "bulb")
+#: tags of objects that hang from walls or ceilings (fixed in simulators)
+FIXED_TAGS = {"wall_mounted", "ceiling_mounted"}
+
+
+@dataclass(frozen=True)
+class MatRef:
+    """A material and the seed its textures are baked with: the unit textures are shared by."""
+
+    name: str
+    seed: int
+
+    @property
+    def key(self) -> str:
+        """File-name-safe identifier, e.g. ``oak_3``."""
+        return f"{self.name}_{self.seed}"
+
+
+@dataclass
+class ArchPart:
+    """One mesh of an architectural element (world coordinates) and its material."""
+
+    name: str
+    mesh: trimesh.Trimesh
+    material: MatRef
+    slot: str
+
+
+@dataclass
+class ArchElement:
+    """An architectural element: `path` (names under /World/Architecture, the last one the
+    element's own), `kind` (floor | wall | ceiling | door | window | stair | railing ...), the
+    `room` it belongs to, its semantic tags and its parts."""
+
+    name: str
+    kind: str
+    room: str
+    path: tuple[str, ...]
+    parts: list[ArchPart]
+    semantics: list[str] = field(default_factory=list)
+    parent: str = ""
+
+
+@dataclass
+class ExportBundle:
+    """The input of every exporter (see module docstring)."""
+
+    scene: Scene
+    assets: dict[str, Asset]
+    materials: dict[str, dict[str, MatRef]]
+    elements: list[ArchElement]
+    #: room name -> room type, for tagging the room prims of the architecture
+    room_types: dict[str, str] = field(default_factory=dict)
+    #: derived data memoised for all exporters of one bundle (inertials, convex pieces)
+    _memo: dict = field(default_factory=dict, repr=False)
+
+    def inertials(self, name: str) -> dict:
+        """Per-link `physics.Inertial` of object `name` (computed once per distinct look)."""
+        from .physics import link_inertials
+        key = ("inertial", self.proto_key(name))
+        if key not in self._memo:
+            self._memo[key] = link_inertials(self.assets[name], self.materials[name])
+        return self._memo[key]
+
+    def element_pieces(self, element: "ArchElement") -> list[trimesh.Trimesh]:
+        """Convex collision pieces (world coordinates) of an architectural element."""
+        from .convex import convex_parts
+        key = ("pieces", element.path)
+        if key not in self._memo:
+            self._memo[key] = [p for part in element.parts for p in convex_parts(part.mesh)]
+        return self._memo[key]
+
+    @property
+    def objects(self) -> list[SceneObject]:
+        """Objects that have an asset, in placement order."""
+        return [o for n, o in self.scene.objects.items() if n in self.assets]
+
+    def is_fixed(self, obj: SceneObject) -> bool:
+        """Whether `obj` hangs from a wall or ceiling (static in simulators) rather than resting
+        on something (a free, movable body)."""
+        return is_fixed(obj, set(self.scene.rooms) | set(self.room_types))
+
+    def all_matrefs(self) -> list[MatRef]:
+        """Every material used, deduplicated, in a stable order."""
+        refs = [r for m in self.materials.values() for r in m.values()]
+        refs += [p.material for e in self.elements for p in e.parts]
+        return list(dict.fromkeys(refs))
+
+    def proto_key(self, name: str) -> tuple:
+        """Identity of an object's look: objects with equal keys have identical meshes and
+        materials and may share one prototype."""
+        o = self.scene.objects[name]
+        mats = tuple(sorted((s, r.key) for s, r in self.materials[name].items()))
+        return (o.generator, params_key(o.params), mats)
+
+    def mesh_key(self, name: str) -> str:
+        """Short stable identifier of an object's geometry (generator + params), used to share
+        mesh files between identical objects."""
+        o = self.scene.objects[name]
+        h = zlib.crc32(params_key(o.params).encode()) & 0xFFFFFFFF
+        return f"{o.generator}_{h:08x}"
+
+
+def params_key(params: dict[str, Any]) -> str:
+    """Canonical text of a parameter dict (sorted keys, stable float repr)."""
+    import json
+    return json.dumps(params, sort_keys=True, default=str)
+
+
+def is_fixed(obj: SceneObject, rooms: Iterable[str]) -> bool:
+    """True for objects tagged wall/ceiling mounted, or whose every relation attaches them to a
+    room's wall or ceiling (wall art, sconces)."""
+    if FIXED_TAGS & set(obj.tags):
+        return True
+    rooms = set(rooms)
+    rels = obj.relations
+    return bool(rels) and all(
+        r.parent in rooms and (r.parent_surface.startswith("wall") or r.parent_surface == "ceiling")
+        for r in rels)
+
+
+def texture_seed(material: str, variant: int) -> int:
+    """The seed a material's textures are baked with for `variant` (0..variants-1)."""
+    return (zlib.crc32(material.encode()) + 7919 * int(variant)) % 100_000
+
+
+def object_materials(obj: SceneObject, asset: Asset, variants: int = 1) -> dict[str, MatRef]:
+    """One `MatRef` per slot of `asset`, deterministic from `obj.seed`: the material name from
+    `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices)`, the texture
+    variant from the same stream (`variants` distinct textures per material in a scene)."""
+    from ..assets import get_factory
+    try:
+        overrides = get_factory(obj.generator).material_choices
+    except Exception:  # an unregistered generator: library defaults
+        overrides = {}
+    rng = np.random.default_rng(int(obj.seed))
+    names = choose_materials(list(asset.slots), rng, overrides)
+    out = {}
+    for slot, mat in names.items():
+        v = int(rng.integers(variants)) if variants > 1 else 0
+        out[slot] = MatRef(mat, texture_seed(mat, v))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# architecture
+
+#: material slot of each architectural part kind
+PART_SLOTS = {"floor": "floor", "wall": "wall", "walls": "wall", "ceiling": "ceiling",
+              "leaf": "door", "casing": "door", "frame": "frame", "glass": "glass",
+              "flight": "wood", "rail": "metal"}
+
+
+def _room_materials(seed: int, room: str) -> dict[str, MatRef]:
+    """Floor, wall, ceiling, door, frame, glass, wood and metal materials of one room, drawn
+    from the scene seed and the room name (the same room always looks the same)."""
+    rng = np.random.default_rng([int(seed), zlib.crc32(room.encode())])
+    slots = ["floor", "wall", "ceiling", "door", "frame", "glass", "wood", "metal"]
+    names = choose_materials(slots, rng)
+    return {s: MatRef(m, texture_seed(m, 0)) for s, m in names.items()}
+
+
+def elements_from_rooms(scene: Scene, rooms: dict) -> list[ArchElement]:
+    """Floor, ceiling and walls of each `RoomGeometry` in `rooms` (single-room layout:
+    /World/Architecture/<room>/{floor, ceiling, wall_<i>})."""
+    out = []
+    for room_name, geo in rooms.items():
+        mats = _room_materials(scene.seed, room_name)
+        parts = [("floor", "floor", geo.floor), ("ceiling", "ceiling", geo.ceiling)]
+        walls = list(geo.walls)
+        parts += [(f"wall_{i}", "wall", w) for i, w in enumerate(walls)]
+        for name, kind, mesh in parts:
+            slot = PART_SLOTS[kind]
+            out.append(ArchElement(name, kind, room_name, (room_name, name),
+                                   [ArchPart("mesh", mesh, mats[slot], slot)], [kind]))
+    return out
+
+
+def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
+    """Every element of a solidified home (`floorplan.solidify.Architecture`): each room's
+    floor, ceiling and walls under storey_<k>/<room>, and the doors, windows, stairs and rails
+    under storey_<k>/{doors, windows} or stairs/."""
+    out: list[ArchElement] = []
+    for room_name, geo in arch.rooms.items():
+        mats = _room_materials(scene.seed, room_name)
+        storey = f"storey_{getattr(geo, 'storey', 0)}"
+        parts = [("floor", "floor", geo.floor), ("ceiling", "ceiling", geo.ceiling)]
+        parts += [(f"walls_{i}" if i else "walls", "wall", w) for i, w in enumerate(geo.walls)]
+        for name, kind, mesh in parts:
+            slot = PART_SLOTS[kind]
+            out.append(ArchElement(name, kind, room_name, (storey, room_name, name),
+                                   [ArchPart("mesh", mesh, mats[slot], slot)],
+                                   [kind, "architecture"]))
+    groups = {"door": "doors", "entrance": "doors", "window": "windows"}
+    for el in arch.elements:
+        mats = _room_materials(scene.seed, el.room or "home")
+        if el.kind in ("stair", "railing"):
+            path = ("stairs", el.name)
+        else:
+            path = (f"storey_{el.storey}", groups.get(el.kind, "elements"), el.name)
+        parts = []
+        for pname, mesh in el.meshes.items():
+            slot = PART_SLOTS.get(pname, "frame")
+            parts.append(ArchPart(pname, mesh, mats[slot], slot))
+        out.append(ArchElement(el.name, el.kind, el.room, path, parts,
+                               list(el.semantics) or [el.kind, "architecture"], el.room))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# builders
+
+
+def make_bundle(scene: Scene, assets: dict[str, Asset], elements: list[ArchElement], *,
+                variants: int = 1, room_types: dict[str, str] | None = None) -> ExportBundle:
+    """A bundle from its parts; per-object materials are drawn here (see `object_materials`)."""
+    mats = {n: object_materials(scene.objects[n], a, variants) for n, a in assets.items()
+            if n in scene.objects}
+    types = {r.name: r.room_type for r in scene.rooms.values()}
+    types.update(room_types or {})
+    return ExportBundle(scene, dict(assets), mats, elements, types)
+
+
+def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
+    """The bundle of a `pipeline.Generated` (full assets from its cache; architecture from its
+    rooms, or from `gen.architecture` when it is a whole home)."""
+    arch = getattr(gen, "architecture", None)
+    if arch is not None:
+        elements = elements_from_architecture(gen.scene, arch)
+        types = {n: g.room.room_type for n, g in arch.rooms.items()}
+    else:
+        elements = elements_from_rooms(gen.scene, gen.rooms)
+        types = {n: g.room.room_type for n, g in gen.rooms.items()}
+    return make_bundle(gen.scene, gen.full_assets(), elements, variants=variants,
+                       room_types=types)
+
+
+def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
+                      variants: int = 1) -> ExportBundle:
+    """The bundle of a saved scene without solving: rooms rebuilt from the scene's `Room`s with
+    `build_room` (unless given) and assets from their generators (through `cache`, an
+    `AssetCache`, so identical objects are built once)."""
+    from ..floorplan.room import build_room
+    from ..solver.assets_cache import AssetCache
+    cache = cache or AssetCache()
+    if rooms is None:
+        rooms = {n: build_room(r) for n, r in scene.rooms.items()}
+    assets = {n: cache.full(o.generator, o.params) for n, o in scene.objects.items()}
+    return make_bundle(scene, assets, elements_from_rooms(scene, rooms), variants=variants)

@@ -1,0 +1,116 @@
+"""Mesh pieces every exporter needs: per-corner normals and UVs, sub-meshes by link and by
+material slot, and welding face-varying data into indexed vertices (OBJ, glTF, MuJoCo)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+
+from ..assets.base import Asset
+from ..assets.parts import box_uv
+
+#: corners whose vertex normal deviates more than this from the face normal get the face normal
+CREASE_DEG = 35.0
+
+
+@dataclass
+class Piece:
+    """Indexed triangles with per-vertex UVs (metres) and normals, ready for a file format."""
+
+    vertices: np.ndarray  # (V, 3) float
+    uv: np.ndarray        # (V, 2) float, metres
+    normals: np.ndarray   # (V, 3) float, unit
+    faces: np.ndarray     # (F, 3) int
+
+    def transformed(self, m: np.ndarray) -> "Piece":
+        """The piece under the 4x4 rigid transform `m`."""
+        return Piece(self.vertices @ m[:3, :3].T + m[:3, 3], self.uv, self.normals @ m[:3, :3].T,
+                     self.faces)
+
+
+def corner_normals(mesh: trimesh.Trimesh, crease_deg: float = CREASE_DEG) -> np.ndarray:
+    """Normals per face corner (F, 3, 3): the smooth vertex normal where the surface is smooth,
+    the face normal across creases (box edges stay sharp, lathed shapes look round)."""
+    if len(mesh.faces) == 0:
+        return np.zeros((0, 3, 3))
+    fn = np.asarray(mesh.face_normals, float)
+    vn = np.asarray(mesh.vertex_normals, float)[mesh.faces]
+    cos = np.einsum("fij,fj->fi", vn, fn)
+    sharp = cos < np.cos(np.radians(crease_deg))
+    out = np.where(sharp[..., None], fn[:, None, :], vn)
+    n = np.linalg.norm(out, axis=-1, keepdims=True)
+    return out / np.where(n < 1e-12, 1.0, n)
+
+
+def corner_uv(asset: Asset) -> np.ndarray:
+    """The asset's per-corner UVs in metres (box projection when it has none)."""
+    if asset.corner_uv is not None and len(asset.corner_uv) == len(asset.mesh.faces):
+        return np.asarray(asset.corner_uv, float)
+    return box_uv(asset.mesh.vertices, asset.mesh.faces)
+
+
+def mesh_uv(mesh: trimesh.Trimesh) -> np.ndarray:
+    """Box-projected per-corner UVs (metres) of a plain mesh (architecture)."""
+    return box_uv(mesh.vertices, mesh.faces)
+
+
+def face_slot_names(asset: Asset) -> np.ndarray:
+    """The slot index of every face (0 when the asset has a single slot)."""
+    if asset.face_slots is None:
+        return np.zeros(len(asset.mesh.faces), int)
+    return np.asarray(asset.face_slots, int)
+
+
+def weld(tri: np.ndarray, uv: np.ndarray, nrm: np.ndarray, decimals: int = 6) -> Piece:
+    """Indexed vertices from corner arrays tri (F,3,3), uv (F,3,2), nrm (F,3,3): corners with
+    equal position, UV and normal share one vertex."""
+    f = len(tri)
+    if f == 0:
+        return Piece(np.zeros((0, 3)), np.zeros((0, 2)), np.zeros((0, 3)), np.zeros((0, 3), int))
+    rows = np.concatenate([tri.reshape(-1, 3), uv.reshape(-1, 2), nrm.reshape(-1, 3)], axis=1)
+    key = np.round(rows, decimals)
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    v = rows[first]
+    return Piece(v[:, :3], v[:, 3:5], v[:, 5:8], inverse.reshape(f, 3).astype(np.int64))
+
+
+def face_pieces(mesh: trimesh.Trimesh, uv: np.ndarray, faces: np.ndarray,
+                normals: np.ndarray | None = None) -> Piece:
+    """The faces `faces` (indices) of `mesh` as a welded `Piece`."""
+    normals = corner_normals(mesh) if normals is None else normals
+    tri = np.asarray(mesh.vertices, float)[np.asarray(mesh.faces)[faces]]
+    return weld(tri, uv[faces], normals[faces])
+
+
+def asset_slot_pieces(asset: Asset, link: str) -> list[tuple[str, Piece]]:
+    """(slot name, Piece) for each material slot of one link's faces (asset frame, closed
+    pose)."""
+    faces = asset.link_faces(link)
+    if len(faces) == 0:
+        return []
+    uv = corner_uv(asset)
+    normals = corner_normals(asset.mesh)
+    fs = face_slot_names(asset)[faces]
+    out = []
+    for si in np.unique(fs):
+        sel = faces[fs == si]
+        slot = asset.slots[int(si)] if int(si) < len(asset.slots) else "body"
+        out.append((slot, face_pieces(asset.mesh, uv, sel, normals)))
+    return out
+
+
+def mesh_piece(mesh: trimesh.Trimesh) -> Piece:
+    """A whole plain mesh as one Piece with box UVs."""
+    return face_pieces(mesh, mesh_uv(mesh), np.arange(len(mesh.faces)))
+
+
+def joint_frames(asset: Asset) -> dict[str, np.ndarray]:
+    """Each link's frame origin in the asset frame: the base at 0, a moving link at its
+    joint's origin (so its joint turns about the link frame's origin)."""
+    frames = {"base": np.zeros(3)}
+    for link in asset.links:
+        frames.setdefault(link, np.zeros(3))
+    for j in asset.joints:
+        frames[j.child] = np.asarray(j.origin, float)
+    return frames

@@ -1,0 +1,194 @@
+"""MJCF export (`scene.xml`) for MuJoCo.
+
+- The architecture: static geoms in the world body (convex pieces for collision, textured
+  visual meshes).
+- Every movable object: a body at its pose with a `freejoint`; articulated parts as child
+  bodies with `hinge` / `slide` joints (limits, damping and friction loss so flaps and doors
+  stay shut under gravity until pushed).
+- Objects hanging from walls or ceilings: bodies welded to the world (no joint).
+- Collision: one mesh geom per convex piece (MuJoCo hulls every mesh anyway); visual: textured
+  mesh geoms that never collide (contype = conaffinity = 0, group 2).
+- Inertials are written explicitly (mass from volume x density), and contacts between the
+  links of one object are excluded.
+
+Mesh and texture files are shared with the URDF export (`obj.MeshFiles`) and referenced by
+paths relative to scene.xml.
+"""
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+from xml.etree import ElementTree as ET
+
+import numpy as np
+
+from .bundle import ExportBundle
+from .meshes import joint_frames
+from .obj import MeshFiles
+from .physics import Inertial, matrix_to_quat
+
+log = logging.getLogger(__name__)
+
+TIMESTEP = 0.002
+#: joint damping (N m s/rad or N s/m) and dry friction (N m or N) of doors, drawers and lids
+JOINT_DAMPING, JOINT_FRICTIONLOSS = 2.0, 0.5
+FRICTION = "0.9 0.02 0.001"
+
+
+def _f(v) -> str:
+    return " ".join(f"{float(x):.6g}" for x in np.ravel(v))
+
+
+class _Assets:
+    """The <asset> section: meshes, textures and materials, each added once."""
+
+    def __init__(self, root: ET.Element, files: MeshFiles) -> None:
+        self.el = ET.SubElement(root, "asset")
+        self.files = files
+        self._names: set[str] = set()
+
+    def mesh(self, path: str) -> str:
+        name = path.removeprefix("meshes/").replace("/", "__").rsplit(".", 1)[0]
+        if name not in self._names:
+            ET.SubElement(self.el, "mesh", name=name, file=path)
+            self._names.add(name)
+        return name
+
+    def material(self, ref, emissive: bool = False) -> str:
+        name = f"mat_{ref.key}" + ("_emissive" if emissive else "")
+        if name in self._names:
+            return name
+        info = self.files.textures.info(ref)
+        attrs = {"name": name, "specular": f"{0.5 * (1 - info.mean_roughness):.3f}",
+                 "shininess": f"{0.8 * (1 - info.mean_roughness):.3f}",
+                 "reflectance": f"{0.2 * info.metallic_value:.3f}"}
+        rel = self.files.textures.relpath(ref, "base_color", self.files.root)
+        if rel:
+            tex = f"tex_{ref.key}"
+            if tex not in self._names:
+                ET.SubElement(self.el, "texture", name=tex, type="2d", file=rel)
+                self._names.add(tex)
+            attrs["texture"] = tex
+            attrs["rgba"] = f"1 1 1 {info.opacity:.3f}"
+        else:
+            r, g, b = info.mean_color
+            attrs["rgba"] = f"{r:.4f} {g:.4f} {b:.4f} {info.opacity:.3f}"
+        if emissive:
+            attrs["emission"] = "1"
+        ET.SubElement(self.el, "material", **attrs)
+        self._names.add(name)
+        return name
+
+
+def _inertial(body: ET.Element, inertial: Inertial, frame: np.ndarray) -> None:
+    moments, axes = inertial.diagonalised()
+    q = matrix_to_quat(axes)
+    ET.SubElement(body, "inertial", pos=_f(inertial.com - frame), quat=_f(q),
+                  mass=f"{inertial.mass:.6g}", diaginertia=_f(moments))
+
+
+def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link: str,
+           frame: np.ndarray) -> None:
+    pos = _f(-frame)
+    for vf in files.visuals(name):
+        if vf.link == link:
+            ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path),
+                                         "material": assets.material(
+                                             vf.material, vf.slot in ("emissive", "bulb")),
+                                         "pos": pos})
+    for plink, path in files.collisions(name):
+        if plink == link:
+            ET.SubElement(body, "geom", {"class": "collision", "mesh": assets.mesh(path),
+                                         "pos": pos})
+
+
+def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files: MeshFiles,
+                 name: str) -> list[str]:
+    """The body tree of object `name`; returns its body names (for contact exclusion)."""
+    obj = bundle.scene.objects[name]
+    asset = bundle.assets[name]
+    frames = joint_frames(asset)
+    inertials = bundle.inertials(name)
+    yaw = obj.pose.yaw
+    base = ET.SubElement(world, "body", name=name, pos=_f(obj.pose.position),
+                         quat=_f([math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]))
+    fixed = bundle.is_fixed(obj)
+    if not fixed:
+        ET.SubElement(base, "freejoint", name=f"{name}__free")
+        _inertial(base, inertials["base"], frames["base"])
+    _geoms(base, assets, files, name, "base", frames["base"])
+    bodies = {"base": base}
+    names = [name]
+    pending = list(asset.joints)
+    while pending:
+        progressed = False
+        for j in list(pending):
+            if j.parent not in bodies:
+                continue
+            pending.remove(j)
+            progressed = True
+            bname = f"{name}__{j.child}"
+            b = ET.SubElement(bodies[j.parent], "body", name=bname,
+                              pos=_f(frames[j.child] - frames[j.parent]))
+            axis = np.asarray(j.axis, float)
+            ET.SubElement(b, "joint", name=f"{name}__{j.name}",
+                          type="slide" if j.kind == "prismatic" else "hinge",
+                          axis=_f(axis / np.linalg.norm(axis)), pos="0 0 0",
+                          range=f"{j.lower:.6g} {j.upper:.6g}", limited="true",
+                          damping=f"{JOINT_DAMPING:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
+                          armature="0.01")
+            _inertial(b, inertials[j.child], frames[j.child])
+            _geoms(b, assets, files, name, j.child, frames[j.child])
+            bodies[j.child] = b
+            names.append(bname)
+        if not progressed:
+            log.warning("MJCF: object %r has joints whose parent link is missing: %s", name,
+                        [j.name for j in pending])
+            break
+    return names
+
+
+def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
+    """The <mujoco> element of `bundle` (mesh files written through `files`)."""
+    root = ET.Element("mujoco", model=f"indoorgen_{bundle.scene.seed}")
+    ET.SubElement(root, "compiler", angle="radian", autolimits="true", inertiafromgeom="false")
+    ET.SubElement(root, "option", timestep=f"{TIMESTEP:g}", gravity="0 0 -9.81",
+                  integrator="implicitfast", cone="elliptic")
+    ET.SubElement(root, "size", memory="256M")
+    default = ET.SubElement(root, "default")
+    vis = ET.SubElement(default, "default", {"class": "visual"})
+    ET.SubElement(vis, "geom", type="mesh", contype="0", conaffinity="0", group="2",
+                  density="0")
+    col = ET.SubElement(default, "default", {"class": "collision"})
+    ET.SubElement(col, "geom", type="mesh", group="3", density="0", friction=FRICTION,
+                  rgba="0.5 0.5 0.5 0.3", solref="0.004 1")
+    assets = _Assets(root, files)
+    world = ET.SubElement(root, "worldbody")
+    ET.SubElement(world, "light", name="sun", directional="true", pos="0 0 10",
+                  dir="0.2 0.3 -1", diffuse="0.6 0.6 0.6")
+    for el in bundle.elements:
+        vis_files, col_files = files.architecture(el)
+        for vf in vis_files:
+            ET.SubElement(world, "geom", {"class": "visual", "mesh": assets.mesh(vf.path),
+                                          "material": assets.material(vf.material)})
+        for path in col_files:
+            ET.SubElement(world, "geom", {"class": "collision", "mesh": assets.mesh(path)})
+    contact = ET.Element("contact")
+    for obj in bundle.objects:
+        names = _object_body(world, assets, bundle, files, obj.name)
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                ET.SubElement(contact, "exclude", body1=a, body2=b)
+    if len(contact):
+        root.append(contact)
+    return root
+
+
+def write_mjcf(bundle: ExportBundle, root: Path, files: MeshFiles) -> Path:
+    """Write `scene.xml` under `root`; returns its path."""
+    el = build_mjcf(bundle, files)
+    ET.indent(el, "  ")
+    path = Path(root) / "scene.xml"
+    path.write_text(ET.tostring(el, encoding="unicode") + "\n")
+    return path

@@ -1,0 +1,214 @@
+"""Wavefront OBJ + MTL: the mesh files URDF and MJCF reference, and the `obj` export format.
+
+`MeshFiles` writes (and deduplicates) the per-object mesh files of one export under `meshes/`:
+visual meshes as one OBJ per (link, material slot) with a one-material MTL (UVs already scaled
+to texture repeats; MuJoCo takes one material per geom) and collision pieces as binary STL.
+`write_obj_format` writes `scene.obj` (world coordinates) and `obj/<object>.obj` (object frame).
+"""
+from __future__ import annotations
+
+import io
+import logging
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from .bundle import ArchElement, ExportBundle, MatRef
+from .meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
+from .textures import TextureStore
+
+log = logging.getLogger(__name__)
+
+MESH_DIR = "meshes"
+
+
+def _rows(fmt: str, arr: np.ndarray) -> str:
+    if len(arr) == 0:
+        return ""
+    buf = io.StringIO()
+    np.savetxt(buf, arr, fmt=fmt)
+    return buf.getvalue()
+
+
+def obj_text(groups: list[tuple[str, Piece, float]], mtllib: str | None = None) -> str:
+    """OBJ text of `groups` = (material name, piece, uv scale); one `usemtl` group each."""
+    out = ["# indoorgen\n"]
+    if mtllib:
+        out.append(f"mtllib {mtllib}\n")
+    base = 0
+    for mat, piece, scale in groups:
+        out.append(f"o {mat}\n")
+        out.append(_rows("v %.6f %.6f %.6f", piece.vertices))
+        out.append(_rows("vt %.5f %.5f", piece.uv * scale))
+        out.append(_rows("vn %.4f %.4f %.4f", piece.normals))
+        out.append(f"usemtl {mat}\n")
+        f = piece.faces + 1 + base
+        tri = np.repeat(f, 3, axis=1)
+        out.append(_rows("f %d/%d/%d %d/%d/%d %d/%d/%d", tri))
+        base += len(piece.vertices)
+    return "".join(out)
+
+
+def mtl_text(materials: dict[str, MatRef], textures: TextureStore, mtl_dir: Path,
+             emissive: set[str] = frozenset()) -> str:
+    """MTL text: one `newmtl` per entry (scalar fallbacks plus texture maps relative to
+    `mtl_dir`; `map_Pr`/`map_Pm`/`norm` are the PBR extension of the format)."""
+    out = []
+    for name, ref in materials.items():
+        info = textures.info(ref)
+        r, g, b = info.mean_color
+        out.append(f"newmtl {name}\nKa 0 0 0\nKd {r:.4f} {g:.4f} {b:.4f}\nKs 0.1 0.1 0.1\n"
+                   f"Ns {max(1.0, (1 - info.mean_roughness) * 200):.1f}\n"
+                   f"d {info.opacity:.3f}\nillum 2\nPr {info.mean_roughness:.3f}\n"
+                   f"Pm {info.metallic_value:.3f}\n")
+        if name in emissive:
+            out.append("Ke 1.0 0.9 0.75\n")
+        for kind, key in (("base_color", "map_Kd"), ("roughness", "map_Pr"),
+                          ("metallic", "map_Pm"), ("normal", "norm")):
+            rel = textures.relpath(ref, kind, mtl_dir)
+            if rel:
+                out.append(f"{key} {rel}\n")
+        out.append("\n")
+    return "".join(out)
+
+
+@dataclass
+class VisualFile:
+    """One visual mesh file: its path (relative to the export root), material and slot."""
+
+    path: str
+    material: MatRef
+    slot: str
+    link: str
+
+
+class MeshFiles:
+    """Mesh files of one export, written once per distinct object look (state: what has been
+    written)."""
+
+    def __init__(self, bundle: ExportBundle, root: Path, textures: TextureStore) -> None:
+        self.bundle, self.root, self.textures = bundle, Path(root), textures
+        self._visual: dict[tuple, list[VisualFile]] = {}
+        self._collision: dict[str, list[tuple[str, str]]] = {}
+        self._arch: dict[tuple, tuple[list[VisualFile], list[str]]] = {}
+        self._ids: dict[tuple, str] = {}
+
+    def proto_id(self, name: str) -> str:
+        """Directory name of an object's look (generator + short hash)."""
+        key = self.bundle.proto_key(name)
+        if key not in self._ids:
+            self._ids[key] = f"{self.bundle.mesh_key(name)}_{len(self._ids)}"
+        return self._ids[key]
+
+    def visuals(self, name: str) -> list[VisualFile]:
+        """Visual OBJ files of object `name` (one per link and slot), in the asset frame."""
+        key = self.bundle.proto_key(name)
+        if key in self._visual:
+            return self._visual[key]
+        asset = self.bundle.assets[name]
+        mats = self.bundle.materials[name]
+        d = self.root / MESH_DIR / self.proto_id(name)
+        d.mkdir(parents=True, exist_ok=True)
+        files = []
+        for link in asset.links:
+            for slot, piece in asset_slot_pieces(asset, link):
+                ref = mats.get(slot) or next(iter(mats.values()))
+                stem = f"{link}_{slot}"
+                self._write_visual(d, stem, piece, ref, slot in ("emissive", "bulb"))
+                files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link))
+        self._visual[key] = files
+        return files
+
+    def _write_visual(self, d: Path, stem: str, piece: Piece, ref: MatRef,
+                      emissive: bool) -> None:
+        scale = self.textures.uv_scale(ref)
+        (d / f"{stem}.obj").write_text(obj_text([(ref.key, piece, scale)], f"{stem}.mtl"))
+        (d / f"{stem}.mtl").write_text(
+            mtl_text({ref.key: ref}, self.textures, d, {ref.key} if emissive else set()))
+
+    def collisions(self, name: str) -> list[tuple[str, str]]:
+        """(link, STL path relative to the root) of each convex piece of object `name`."""
+        key = self.bundle.mesh_key(name)
+        if key in self._collision:
+            return self._collision[key]
+        asset = self.bundle.assets[name]
+        d = self.root / MESH_DIR / f"{key}_collision"
+        d.mkdir(parents=True, exist_ok=True)
+        out = []
+        for i, (link, piece) in enumerate(asset.collision):
+            p = d / f"{link}_{i}.stl"
+            piece.export(p, file_type="stl")
+            out.append((link, f"{MESH_DIR}/{d.name}/{p.name}"))
+        self._collision[key] = out
+        return out
+
+    def architecture(self, el: ArchElement) -> tuple[list[VisualFile], list[str]]:
+        """Visual OBJ files and collision STL pieces of an element (world coordinates)."""
+        if el.path in self._arch:
+            return self._arch[el.path]
+        ident = "_".join(el.path)
+        d = self.root / MESH_DIR / "architecture"
+        d.mkdir(parents=True, exist_ok=True)
+        vis = []
+        for part in el.parts:
+            stem = f"{ident}_{part.name}"
+            self._write_visual(d, stem, mesh_piece(part.mesh), part.material, False)
+            vis.append(VisualFile(f"{MESH_DIR}/architecture/{stem}.obj", part.material,
+                                  part.slot, "base"))
+        col = []
+        for i, piece in enumerate(self.bundle.element_pieces(el)):
+            p = d / f"{ident}_collision_{i}.stl"
+            piece.export(p, file_type="stl")
+            col.append(f"{MESH_DIR}/architecture/{p.name}")
+        self._arch[el.path] = (vis, col)
+        return vis, col
+
+
+def link_frames(bundle: ExportBundle, name: str) -> dict[str, np.ndarray]:
+    """Frame origin of each link of object `name` in its asset frame."""
+    return joint_frames(bundle.assets[name])
+
+
+def write_obj_format(bundle: ExportBundle, root: Path, textures: TextureStore) -> list[Path]:
+    """`scene.obj` + `scene.mtl` (everything, world coordinates) and `obj/<object>.obj` + .mtl
+    per object (object frame, closed pose). Returns the files written."""
+    root = Path(root)
+    (root / "obj").mkdir(parents=True, exist_ok=True)
+    scene_groups: list[tuple[str, Piece, float]] = []
+    scene_mats: dict[str, MatRef] = {}
+    written = []
+    for el in bundle.elements:
+        for part in el.parts:
+            g = f"{'_'.join(el.path)}_{part.name}"
+            scene_groups.append((part.material.key, mesh_piece(part.mesh),
+                                 textures.uv_scale(part.material)))
+            scene_mats[part.material.key] = part.material
+            del g
+    for obj in bundle.objects:
+        asset = bundle.assets[obj.name]
+        mats = bundle.materials[obj.name]
+        groups, used = [], {}
+        for link in asset.links:
+            for slot, piece in asset_slot_pieces(asset, link):
+                ref = mats.get(slot) or next(iter(mats.values()))
+                groups.append((ref.key, piece, textures.uv_scale(ref)))
+                used[ref.key] = ref
+        stem = obj.name
+        (root / "obj" / f"{stem}.obj").write_text(obj_text(groups, f"{stem}.mtl"))
+        (root / "obj" / f"{stem}.mtl").write_text(mtl_text(used, textures, root / "obj"))
+        written.append(root / "obj" / f"{stem}.obj")
+        m = obj.pose.matrix()
+        scene_groups += [(k, p.transformed(m), s) for k, p, s in groups]
+        scene_mats.update(used)
+    (root / "scene.obj").write_text(obj_text(scene_groups, "scene.mtl"))
+    (root / "scene.mtl").write_text(mtl_text(scene_mats, textures, root))
+    written.insert(0, root / "scene.obj")
+    return written
+
+
+def relpath(path: str, start: Path, root: Path) -> str:
+    """`path` (relative to `root`) made relative to directory `start`."""
+    return Path(os.path.relpath(root / path, start)).as_posix()

@@ -1,0 +1,156 @@
+"""URDF export: `urdf/<object>.urdf` per object, `urdf/architecture.urdf`, and `scene.urdf`.
+
+An object's URDF has its `base` link plus one child link per moving part, joined by revolute or
+prismatic joints with limits (door leaves, drawers, appliance doors, lids). A child link's frame
+sits at its joint's origin, so the joint turns about the link frame. Visual meshes are OBJ (+MTL
++ textures), collision geometry the asset's convex pieces (STL), inertials from the pieces with
+mass from volume x density (`physics.link_inertials`).
+
+`scene.urdf` holds everything in one robot whose root link is `world`: the architecture and
+every object fixed to it at its pose (link names prefixed `<object>__`). All paths are relative.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import os
+from pathlib import Path
+from xml.etree import ElementTree as ET
+
+import numpy as np
+
+from .bundle import ExportBundle
+from .meshes import joint_frames
+from .obj import MeshFiles
+from .physics import Inertial
+
+log = logging.getLogger(__name__)
+
+URDF_DIR = "urdf"
+#: joint effort (N or N m) and velocity (m/s or rad/s) limits written for every joint
+EFFORT, VELOCITY = 50.0, 2.0
+
+
+def _f(v) -> str:
+    return " ".join(f"{float(x):.6g}" for x in np.ravel(v))
+
+
+def _origin(parent: ET.Element, xyz, rpy=(0.0, 0.0, 0.0)) -> None:
+    ET.SubElement(parent, "origin", xyz=_f(xyz), rpy=_f(rpy))
+
+
+def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, obj_name: str,
+          link: str, frame: np.ndarray, inertial: Inertial | None, rel: str) -> None:
+    """A <link> with inertial, visuals and collisions of one asset link; geometry is in the
+    asset frame, shifted by -frame into the link frame. `rel` prefixes mesh paths."""
+    el = ET.SubElement(robot, "link", name=name)
+    if inertial is not None:
+        ine = ET.SubElement(el, "inertial")
+        _origin(ine, inertial.com - frame)
+        ET.SubElement(ine, "mass", value=f"{inertial.mass:.6g}")
+        i = inertial.inertia
+        ET.SubElement(ine, "inertia", ixx=f"{i[0, 0]:.6g}", ixy=f"{i[0, 1]:.6g}",
+                      ixz=f"{i[0, 2]:.6g}", iyy=f"{i[1, 1]:.6g}", iyz=f"{i[1, 2]:.6g}",
+                      izz=f"{i[2, 2]:.6g}")
+    for vf in files.visuals(obj_name):
+        if vf.link != link:
+            continue
+        vis = ET.SubElement(el, "visual", name=f"{vf.link}_{vf.slot}")
+        _origin(vis, -frame)
+        geo = ET.SubElement(vis, "geometry")
+        ET.SubElement(geo, "mesh", filename=rel + vf.path)
+        mat = ET.SubElement(vis, "material", name=vf.material.key)
+        r, g, b = files.textures.info(vf.material).mean_color
+        ET.SubElement(mat, "color", rgba=f"{r:.4f} {g:.4f} {b:.4f} 1")
+    for k, (plink, path) in enumerate(files.collisions(obj_name)):
+        if plink != link:
+            continue
+        col = ET.SubElement(el, "collision", name=f"{link}_collision_{k}")
+        _origin(col, -frame)
+        geo = ET.SubElement(col, "geometry")
+        ET.SubElement(geo, "mesh", filename=rel + path)
+
+
+def _object_links(robot: ET.Element, bundle: ExportBundle, files: MeshFiles, name: str,
+                  prefix: str, rel: str) -> None:
+    """Links and joints of one object into `robot` (link names `prefix + link`)."""
+    asset = bundle.assets[name]
+    frames = joint_frames(asset)
+    inertials = bundle.inertials(name)
+    for link in asset.links:
+        _link(robot, prefix + link, bundle, files, name, link, frames[link],
+              inertials.get(link), rel)
+    for j in asset.joints:
+        if j.child not in frames or j.parent not in frames:
+            continue
+        je = ET.SubElement(robot, "joint", name=prefix + j.name, type=j.kind)
+        _origin(je, frames[j.child] - frames[j.parent])
+        ET.SubElement(je, "parent", link=prefix + j.parent)
+        ET.SubElement(je, "child", link=prefix + j.child)
+        axis = np.asarray(j.axis, float)
+        ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
+        ET.SubElement(je, "limit", lower=f"{j.lower:.6g}", upper=f"{j.upper:.6g}",
+                      effort=f"{EFFORT:g}", velocity=f"{VELOCITY:g}")
+        ET.SubElement(je, "dynamics", damping="1.0", friction="0.1")
+
+
+def _architecture_link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles,
+                       rel: str) -> None:
+    el = ET.SubElement(robot, "link", name=name)
+    for e in bundle.elements:
+        vis, col = files.architecture(e)
+        for vf in vis:
+            v = ET.SubElement(el, "visual", name=f"{'_'.join(e.path)}_{vf.slot}")
+            geo = ET.SubElement(v, "geometry")
+            ET.SubElement(geo, "mesh", filename=rel + vf.path)
+        for k, path in enumerate(col):
+            c = ET.SubElement(el, "collision", name=f"{'_'.join(e.path)}_collision_{k}")
+            geo = ET.SubElement(c, "geometry")
+            ET.SubElement(geo, "mesh", filename=rel + path)
+
+
+def _write(robot: ET.Element, path: Path) -> None:
+    ET.indent(robot, "  ")
+    path.write_text('<?xml version="1.0"?>\n' + ET.tostring(robot, encoding="unicode") + "\n")
+
+
+def write_urdf(bundle: ExportBundle, root: Path, files: MeshFiles) -> list[Path]:
+    """Write `urdf/<object>.urdf`, `urdf/architecture.urdf` and `scene.urdf` under `root`.
+    Returns the files written (scene.urdf first)."""
+    root = Path(root)
+    udir = root / URDF_DIR
+    udir.mkdir(parents=True, exist_ok=True)
+    rel_u = Path(os.path.relpath(root, udir)).as_posix() + "/"
+    written = []
+    for obj in bundle.objects:
+        robot = ET.Element("robot", name=obj.name)
+        _object_links(robot, bundle, files, obj.name, "", rel_u)
+        p = udir / f"{obj.name}.urdf"
+        _write(robot, p)
+        written.append(p)
+    arch = ET.Element("robot", name="architecture")
+    _architecture_link(arch, "architecture", bundle, files, rel_u)
+    _write(arch, udir / "architecture.urdf")
+    written.append(udir / "architecture.urdf")
+
+    scene = ET.Element("robot", name="scene")
+    ET.SubElement(scene, "link", name="world")
+    _architecture_link(scene, "architecture", bundle, files, "")
+    j = ET.SubElement(scene, "joint", name="world__architecture", type="fixed")
+    ET.SubElement(j, "parent", link="world")
+    ET.SubElement(j, "child", link="architecture")
+    for obj in bundle.objects:
+        prefix = f"{obj.name}__"
+        _object_links(scene, bundle, files, obj.name, prefix, "")
+        j = ET.SubElement(scene, "joint", name=f"world__{obj.name}", type="fixed")
+        _origin(j, obj.pose.position, (0.0, 0.0, obj.pose.yaw))
+        ET.SubElement(j, "parent", link="world")
+        ET.SubElement(j, "child", link=prefix + "base")
+    _write(scene, root / "scene.urdf")
+    written.insert(0, root / "scene.urdf")
+    return written
+
+
+def yaw_rpy(yaw: float) -> tuple[float, float, float]:
+    """URDF roll-pitch-yaw of a rotation about +Z."""
+    return (0.0, 0.0, math.remainder(yaw, 2 * math.pi))
