@@ -121,7 +121,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     g = sub.add_parser("generate", help="generate a furnished room into a directory")
     g.add_argument("--seed", type=int, default=0)
-    g.add_argument("--room", default="living_room", help="living_room | dining_room")
+    g.add_argument("--room", default="living_room",
+                   help="room type: living_room, dining_room, bedroom, kitchen, bathroom, office, "
+                        "closet, hallway, utility, staircase_room, garage, balcony, warehouse")
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
     g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")

@@ -37,7 +37,20 @@ log = logging.getLogger(__name__)
 DEFAULT_SIZES = {
     "living_room": ((4.6, 6.4), (3.9, 5.4)),
     "dining_room": ((4.0, 5.4), (3.6, 4.8)),
+    "bedroom": ((3.4, 4.6), (3.2, 4.2)),
+    "kitchen": ((3.2, 4.8), (2.8, 4.2)),
+    "bathroom": ((2.2, 3.2), (2.0, 2.8)),
+    "closet": ((1.6, 2.4), (1.4, 2.2)),
+    "hallway": ((1.4, 2.0), (3.0, 5.0)),
+    "utility": ((2.0, 3.0), (1.8, 2.6)),
+    "staircase_room": ((2.4, 3.2), (3.0, 4.5)),
+    "garage": ((3.2, 6.0), (5.5, 6.5)),
+    "balcony": ((2.0, 4.0), (1.4, 2.2)),
+    "office": ((3.0, 4.2), (2.8, 3.8)),
+    "warehouse": ((14.0, 22.0), (10.0, 16.0)),
 }
+#: wall height per room type when the user gives none (m)
+DEFAULT_HEIGHTS = {"warehouse": 6.5}
 
 
 @dataclass
@@ -47,7 +60,7 @@ class GenerateConfig:
     room_type: str = "living_room"
     size: tuple[float, float] | None = None
     polygon: list[tuple[float, float]] | None = None
-    height: float = 2.7
+    height: float | None = None  # None: the room type's usual height
     wall_thickness: float = 0.12
     steps: dict[str, int] | None = None
     check: bool = False
@@ -99,11 +112,12 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
             (w0, w1), (d0, d1) = DEFAULT_SIZES.get(cfg.room_type, ((4.0, 6.0), (3.5, 5.0)))
             w, d = round(float(rng.uniform(w0, w1)), 2), round(float(rng.uniform(d0, d1)), 2)
         poly = rectangle(w, d)
-    if not (1.8 <= cfg.height <= 6.0):
-        raise InvalidGeometryError(f"wall height {cfg.height} m is out of range [1.8, 6.0]")
+    height = cfg.height if cfg.height is not None else DEFAULT_HEIGHTS.get(cfg.room_type, 2.7)
+    if not (1.8 <= height <= 12.0):
+        raise InvalidGeometryError(f"wall height {height} m is out of range [1.8, 12.0]")
     shape = validate_polygon(poly)
     coords = [tuple(map(float, c)) for c in list(shape.exterior.coords)[:-1]]
-    room = Room(cfg.room_type + "_0", cfg.room_type, coords, cfg.height, cfg.wall_thickness)
+    room = Room(cfg.room_type + "_0", cfg.room_type, coords, height, cfg.wall_thickness)
     room.doors.append(place_door(room, rng))
     return room
 

@@ -151,3 +151,28 @@ def test_cardinality_bounds_per_context_and_state_sensitive():
     assert (cvt.lo, cvt.hi, cvt.count) == (0, 8, 1)
     cups = [b for b in bounds if b.name == "cups"]
     assert len(cups) == 2 and all(b.lo == 1 and b.hi == math.inf for b in cups)
+
+
+def test_sum_of_counts_bounds_each_term_by_what_the_others_leave():
+    """"a bath or a shower": (baths + showers) in [1, 2]. With neither present both may be
+    added and both are below their share; once a bath exists, a shower is optional."""
+    def prog(room):
+        floor = scene().related_to(room, on_floor)
+        baths, showers = floor[S.Bathtub], floor[S.Shower]
+        return Problem(constraints={"wet": (baths.count() + showers.count()).in_range(1, 2),
+                                    "at most 2": 2 >= baths.count() + showers.count()})
+    v = base_view()
+    ev = Evaluator(prog(room()), v)
+    ev.evaluate()
+    wet = [b for b in find_bounds(ev.problem, ev) if b.name == "wet"]
+    assert [(sorted(t.value for t in b.context.tags), b.lo, b.hi, b.below) for b in wet] == [
+        (["bathtub"], 1, 2, True), (["shower"], 1, 2, True)]
+    v.add("b0", {S.Bathtub}, (1, 1, 0.3), relations=[(on_floor, "r")])
+    ev.notify(added=["b0"])
+    ev.evaluate()
+    bounds = find_bounds(ev.problem, ev)
+    bath, shower = [b for b in bounds if b.name == "wet"]
+    assert (bath.count, bath.lo, bath.hi, bath.can_delete) == (1, 1, 2, False)
+    assert (shower.count, shower.lo, shower.hi, shower.below, shower.can_add) == (0, 0, 1, False, True)
+    cap = [b for b in bounds if b.name == "at most 2"]
+    assert [(b.lo, b.hi) for b in cap] == [(0, 2), (-1, 1)]

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from ..tags import Semantics, Subpart
 from .evaluator import Evaluator
-from .expressions import (BoolOp, Compare, Count, ForAll, FromGenerator, InRange, Node, Problem,
+from .expressions import (BinOp, BoolOp, Compare, Count, ForAll, FromGenerator, InRange, Node, Problem,
                           RelatedTo, SceneSet, Tagged, Var)
 from .relations import Relation
 
@@ -144,22 +144,44 @@ def term_stage(expr: Node) -> str:
     return best
 
 
+def _count_terms(x: Node) -> list[Node] | None:
+    """The set nodes of `x` if it is a count or a sum of counts (`a.count() + b.count()`),
+    else None."""
+    if isinstance(x, Count):
+        return [x.children[0]]
+    if isinstance(x, BinOp) and x.op == "+":
+        a, b = (_count_terms(ch) for ch in x.children)
+        if a is not None and b is not None:
+            return a + b
+    return None
+
+
+def _split_sum(sets: list[Node], lo: float, hi: float, ev: Evaluator, env: dict
+               ) -> list[tuple[Node, float, float, dict]]:
+    """Bounds on each set of a sum of counts bounded by [lo, hi]: each term may take what the
+    others leave (so "a bath or a shower" lets the solver add either while none exists)."""
+    counts = [len(ev.value(n, env)) for n in sets]
+    total = sum(counts)
+    return [(n, lo - (total - c), hi - (total - c), env) for n, c in zip(sets, counts)]
+
+
 def _count_bounds(c: Node, ev: Evaluator, env: dict) -> list[tuple[Node, float, float, dict]]:
     """(set node, lo, hi, env) for each count bound found in constraint `c` under `env`."""
     out = []
-    if isinstance(c, InRange) and isinstance(c.children[0], Count):
-        out.append((c.children[0].children[0], c.lo, c.hi, env))
+    if isinstance(c, InRange) and _count_terms(c.children[0]) is not None:
+        out += _split_sum(_count_terms(c.children[0]), c.lo, c.hi, ev, env)
     elif isinstance(c, Compare):
         a, b = c.children
         op = c.op
-        if isinstance(b, Count) and not isinstance(a, Count):
+        if _count_terms(b) is not None and _count_terms(a) is None:
             a, b = b, a
             op = {"<=": ">=", ">=": "<=", "<": ">", ">": "<", "==": "=="}[op]
-        if isinstance(a, Count):
+        sets = _count_terms(a)
+        if sets is not None:
             k = float(ev.value(b, env))
             lo, hi = {"<=": (0, k), ">=": (k, math.inf), "==": (k, k),
                       "<": (0, math.ceil(k) - 1), ">": (math.floor(k) + 1, math.inf)}[op]
-            out.append((a.children[0], lo, hi, env))
+            out += _split_sum(sets, lo, hi, ev, env)
     elif isinstance(c, BoolOp) and c.op == "and":
         for ch in c.children:
             out += _count_bounds(ch, ev, env)

@@ -5,12 +5,29 @@ from typing import Callable
 
 from ..constraints import Problem
 from ..errors import UnknownRoomTypeError
+from .bathroom import bathroom
+from .bedroom import bedroom
 from .dining_room import dining_room
+from .kitchen import kitchen
 from .living_room import living_room
+from .office import office
+from .small_rooms import balcony, closet, garage, hallway, staircase_room, utility
+from .warehouse import warehouse
 
 ROOM_PROGRAMS: dict[str, Callable[..., Problem]] = {
     "living_room": living_room,
     "dining_room": dining_room,
+    "bedroom": bedroom,
+    "kitchen": kitchen,
+    "bathroom": bathroom,
+    "closet": closet,
+    "hallway": hallway,
+    "utility": utility,
+    "staircase_room": staircase_room,
+    "garage": garage,
+    "balcony": balcony,
+    "office": office,
+    "warehouse": warehouse,
 }
 
 

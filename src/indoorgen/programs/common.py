@@ -12,3 +12,7 @@ on_wall = StableAgainst(Subpart.Back, Subpart.Wall)
 on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
 #: a chair pulled up to a table: its seat's front 8 cm under the table's edge
 at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.08, overhang=False)
+#: hanging from the ceiling by its top (ceiling lights, pendants)
+on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
+#: a side flush against a wall (the second wall of a corner: a bathtub, a kitchen run's end)
+side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)

@@ -1,55 +1,62 @@
 """A good home floorplan, as a constraint program over rooms (Infinigen Indoors, D.3).
 
-Hard constraints are what every accepted plan keeps; the twelve score terms are the paper's
-objective. Write your own with the same terms (`indoorgen.constraints.room_terms`) and pass it as
-`FloorplanConfig(program=...)`.
+The hard constraints are what every accepted plan keeps; the twelve score terms are the paper's
+objective. Write your own with the same terms (`indoorgen.constraints.room_terms`) and pass it
+as `FloorplanConfig(program=...)`.
 """
 from ..constraints import Problem, scene
-from ..constraints.room_terms import (STOREY, aspect_ratio, convexity, exterior_corners,
-                                      exterior_length, ideal_area, longest_exterior_wall,
-                                      min_area, missing_doors, narrow_area, on_storey, path_directness,
-                                      ratio_mismatch, room_area, rooms_of, stair_coverage,
-                                      stair_iou, wall_count, wall_lines)
+from ..constraints.room_terms import (
+    STOREY, aspect_ratio, convexity, exterior_corners, exterior_length, ideal_area,
+    longest_exterior_wall, min_area, missing_doors, narrow_area, on_storey, outline_corners,
+    outline_length, path_directness, ratio_mismatch, room_area, rooms_of, stair_coverage,
+    stair_iou, storey_area, wall_count, wall_lines)
 from ..tags import Semantics
 
 
 def floorplan() -> Problem:
     rooms, storeys = scene()[Semantics.Room], scene()[STOREY]
     stairs = rooms_of(rooms, "staircase_room")
-    view_rooms = rooms_of(rooms, "bedroom", "balcony")
+    with_a_view = rooms_of(rooms, "bedroom", "balcony")
     functional = rooms_of(rooms, "kitchen", "bedroom", "living_room", "bathroom", "dining_room")
     square = rooms_of(rooms, "kitchen", "bedroom", "living_room", "dining_room", "bathroom",
                       "garage", "utility")
 
-    def share(part, whole, measure):
-        return storeys.sum(lambda s: (on_storey(part, s).sum(measure).safediv(
-            on_storey(whole, s).sum(measure), 1.0) - 1) ** 2)
+    def share(part, measure, total):  # (part's share of each storey's total - 1)^2
+        return storeys.sum(
+            lambda s: (on_storey(part, s).sum(measure).safediv(total(s), 1.0) - 1) ** 2)
 
     return Problem(
         constraints={
             "graph neighbours share a door-wide wall": rooms.all(lambda r: missing_doors(r) == 0),
             "bedrooms, garages and balconies have an outside wall": rooms_of(
-                rooms, "bedroom", "garage", "balcony").all(lambda r: longest_exterior_wall(r) >= 1.5),
+                rooms, "bedroom", "garage", "balcony").all(
+                lambda r: longest_exterior_wall(r) >= 1.5),
             "the entrance has an outside wall for the front door": rooms["entrance"].all(
                 lambda r: longest_exterior_wall(r) >= 1.5),
             "rooms at least 1.2 m wide": rooms.excluding("closet").all(
                 lambda r: narrow_area(r, 1.2) <= 0.01),
             "rooms big enough for their use": rooms.all(lambda r: room_area(r) >= min_area(r)),
-            "the staircase room holds the stairs": stairs.all(lambda r: stair_coverage(r) >= 0.999),
+            "the staircase room holds the stairs": stairs.all(
+                lambda r: stair_coverage(r) >= 0.999),
         },
         score_terms={
-            "shortest path to entrance": rooms.sum(lambda r: (1 - path_directness(r)) ** 2).minimize(4),
-            "typical room area": rooms.sum(lambda r: ratio_mismatch(room_area(r), ideal_area(r)) - 1).minimize(2),
+            "shortest path to entrance": rooms.sum(
+                lambda r: (1 - path_directness(r)) ** 2).minimize(4),
+            "typical room area": rooms.sum(
+                lambda r: ratio_mismatch(room_area(r), ideal_area(r)) - 1).minimize(2),
             "square rooms": square.sum(lambda r: (aspect_ratio(r) - 1) ** 2).minimize(1),
             "convex rooms": rooms.sum(lambda r: (convexity(r) - 1) ** 2).minimize(8),
             "concise walls": rooms.sum(lambda r: (wall_count(r) - 4) ** 2).minimize(0.15),
-            "functional area": share(functional, rooms, room_area).minimize(4),
-            "collinear walls": storeys.sum(lambda s: wall_lines(on_storey(rooms, s))).minimize(0.05),
+            "functional area": share(functional, room_area, storey_area).minimize(4),
+            "collinear walls": storeys.sum(
+                lambda s: wall_lines(on_storey(rooms, s))).minimize(0.05),
             "few narrow passages": rooms.excluding("hallway", "closet").sum(
                 lambda r: narrow_area(r, 2.0)).minimize(0.3),
-            "bedrooms and balconies get the outside walls": share(view_rooms, rooms, exterior_length).minimize(2),
-            "bedrooms and balconies get the corners": share(view_rooms, rooms, exterior_corners).minimize(1),
+            "bedrooms and balconies get the outside walls": share(
+                with_a_view, exterior_length, outline_length).minimize(2),
+            "bedrooms and balconies get the corners": share(
+                with_a_view, exterior_corners, outline_corners).minimize(1),
             "staircase occupancy": stairs.sum(lambda r: (stair_coverage(r) - 1) ** 2).minimize(4),
-            "staircase IoU": stairs.sum(lambda r: (stair_iou(r) - 1) ** 2).minimize(2),
+            "staircase IoU": stairs.sum(lambda r: (stair_iou(r) - 1) ** 2).minimize(8),
         },
     )

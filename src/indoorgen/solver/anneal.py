@@ -22,7 +22,7 @@ from ..constraints.evaluator import Evaluator, Result
 from ..constraints.expressions import Problem
 from ..rng import child_seed
 from .placement import placements_hold, sample_point, solve_pose
-from .state import ObjState, Placement, State
+from .state import ObjState, Placement, State, rotation
 
 log = logging.getLogger(__name__)
 
@@ -102,8 +102,10 @@ class Annealer:
     def _valid(self, name: str) -> bool:
         return placements_hold(self.state, name) and not self.state.collides(name)
 
-    def _place(self, ob: ObjState, tries: int | None = None) -> bool:
-        """Sample poses on the object's planes until one is valid (the object is in state)."""
+    def _place(self, ob: ObjState, tries: int | None = None) -> list[str]:
+        """Sample poses on the object's planes until one is valid (the object is in state,
+        whatever rests on it moves along). Returns the objects moved; empty if none was
+        valid."""
         st = self.state
         anchor, placement = self._anchor(ob)
         child = ob.asset.surface(placement.child_surface)
@@ -116,12 +118,11 @@ class Annealer:
                           [0, 0, 1.0]])
             res = solve_pose(st, ob.asset, ob.placements, q - r @ child.origin, yaw)
             if res is None:
-                return False
-            pos, yaw, _ = res
-            st.set_pose(ob.name, pos, yaw)
-            if self._valid(ob.name):
-                return True
-        return False
+                return []
+            moved = self._move(ob.name, res[0], res[1])
+            if self._valid_group(moved):
+                return moved
+        return []
 
     def _grid_yaw(self, ob: ObjState, anchor) -> float:
         """A yaw square to the surface `ob` rests on: the surface's own axes (a room's floor:
@@ -143,6 +144,24 @@ class Annealer:
         i = int(np.argmin([s.polygon.area for s in surfaces]))
         return surfaces[i], ob.placements[i]
 
+    def _draw_placements(self, asset, parents, tries: int = 12) -> list[Placement] | None:
+        """Choose, for each relation, a parent, a parent surface and a child surface, such that
+        all the planes can hold at once (two walls of a corner for a bath, not two opposite
+        walls). None if no compatible choice turned up in `tries` draws."""
+        for _ in range(tries if len(parents) > 1 else 1):
+            placements = []
+            for rel, parent_ids in parents:
+                parent = self._pick(list(parent_ids))
+                ps = [s.name for s in self.state.surfaces(parent) if s.subpart == rel.parent]
+                cs = [s.name for s in asset.surfaces if s.subpart == rel.child]
+                if not ps or not cs:
+                    return None
+                placements.append(Placement(rel, parent, self._pick(cs), self._pick(ps)))
+            if len(placements) == 1 or \
+                    solve_pose(self.state, asset, placements, np.zeros(3), 0.0) is not None:
+                return placements
+        return None
+
     # -- moves: each returns (changed, added, removed, undo) or None when invalid -----------
     def move_add(self):
         bounds = [b for b in self._bounds() if b.can_add]
@@ -163,14 +182,9 @@ class Annealer:
         seed = child_seed(self.rng)
         params = fac.sample_params(np.random.default_rng(seed))
         asset = self.state.cache.placeholder(gen, params)
-        placements = []
-        for rel, parent_ids in b.parents:
-            parent = self._pick(list(parent_ids))
-            ps = [s.name for s in self.state.surfaces(parent) if s.subpart == rel.parent]
-            cs = [s.name for s in asset.surfaces if s.subpart == rel.child]
-            if not ps or not cs:
-                return None
-            placements.append(Placement(rel, parent, cs[0], self._pick(ps)))
+        placements = self._draw_placements(asset, b.parents)
+        if placements is None:
+            return None
         ob = ObjState(self.namer(gen), gen, params, seed, frozenset(fac.tags), self.room,
                       self.stage, asset, placements, np.zeros(3), 0.0, bound=b.name,
                       context=b.context, env=dict(b.env))
@@ -199,9 +213,38 @@ class Annealer:
         return (), (), (name,), undo
 
     def _pose_undo(self, name: str):
-        ob = self.state.objects[name]
-        pos, yaw = ob.position.copy(), ob.yaw
-        return lambda: self.state.set_pose(name, pos, yaw)
+        """An undo for a pose change of `name` and of everything resting on it."""
+        group = [name] + self.state.descendants(name)
+        saved = [(n, self.state.objects[n].position.copy(), self.state.objects[n].yaw)
+                 for n in group]
+
+        def undo():
+            for n, pos, yaw in saved:
+                self.state.set_pose(n, pos, yaw)
+        return undo
+
+    def _move(self, name: str, position: np.ndarray, yaw: float) -> list[str]:
+        """Pose `name` and carry what rests on it along rigidly (a TV moves with its stand).
+        Returns every object moved."""
+        st = self.state
+        ob = st.objects[name]
+        old_pos, old_yaw = ob.position.copy(), ob.yaw
+        st.set_pose(name, position, yaw)
+        moved = [name]
+        rest = st.descendants(name)
+        if rest:
+            turn = rotation(yaw - old_yaw)
+            for d in rest:
+                child = st.objects[d]
+                st.set_pose(d, turn @ (child.position - old_pos) + np.asarray(position, float),
+                            child.yaw + yaw - old_yaw)
+            moved += rest
+        return moved
+
+    def _valid_group(self, names: list[str]) -> bool:
+        """The first object's relations hold and none of the moved objects collides."""
+        return placements_hold(self.state, names[0]) and \
+            not any(self.state.collides(n) for n in names)
 
     def move_translate(self):
         mine = self._mine()
@@ -219,11 +262,11 @@ class Annealer:
         res = solve_pose(self.state, ob.asset, ob.placements, ob.position + step, ob.yaw)
         if res is None:
             return None
-        self.state.set_pose(name, res[0], res[1])
-        if not self._valid(name):
+        moved = self._move(name, res[0], res[1])
+        if not self._valid_group(moved):
             undo()
             return None
-        return (name,), (), (), undo
+        return tuple(moved), (), (), undo
 
     def move_rotate(self):
         mine = [n for n in self._mine()]
@@ -242,11 +285,11 @@ class Annealer:
         res = solve_pose(self.state, ob.asset, ob.placements, ob.position, new_yaw)
         if res is None:
             return None
-        self.state.set_pose(name, res[0], res[1])
-        if not self._valid(name):
+        moved = self._move(name, res[0], res[1])
+        if not self._valid_group(moved):
             undo()
             return None
-        return (name,), (), (), undo
+        return tuple(moved), (), (), undo
 
     def move_reinit(self):
         mine = self._mine()
@@ -255,13 +298,15 @@ class Annealer:
         name = self._pick(mine)
         ob = self.state.objects[name]
         undo = self._pose_undo(name)
-        if not self._place(ob, tries=3):
+        moved = self._place(ob, tries=3)
+        if not moved:
             undo()
             return None
-        return (name,), (), (), undo
+        return tuple(moved), (), (), undo
 
     def move_resample(self):
-        mine = self._mine()
+        # new params mean new surfaces: whatever rests on an object keeps it as it is
+        mine = [n for n in self._mine() if not self.state.children(n)]
         if not mine:
             return None
         name = self._pick(mine)
@@ -287,15 +332,16 @@ class Annealer:
     def _replace_placement(self, name: str, i: int, new: Placement):
         ob = self.state.objects[name]
         old_pl, undo_pose = list(ob.placements), self._pose_undo(name)
-        ob.placements = ob.placements[:i] + [new] + ob.placements[i + 1:]
+        self.state.set_placements(name, ob.placements[:i] + [new] + ob.placements[i + 1:])
 
         def undo():
-            ob.placements = old_pl
+            self.state.set_placements(name, old_pl)
             undo_pose()
-        if not self._place(ob, tries=4):
+        moved = self._place(ob, tries=4)
+        if not moved:
             undo()
             return None
-        return (name,), (), (), undo
+        return tuple(moved), (), (), undo
 
     def move_reassign_plane(self):
         mine = self._mine()

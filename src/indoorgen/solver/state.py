@@ -71,6 +71,7 @@ class State:
         self._room_surfaces = {n: {s.name: s for s in g.surfaces} for n, g in rooms.items()}
         self._ids = frozenset(rooms)
         self._geo: dict[str, dict] = {}
+        self._children: dict[str, set[str]] = {}
         self.manager = fcl.DynamicAABBTreeCollisionManager()
         self.static = []
         for g in rooms.values():
@@ -219,14 +220,45 @@ class State:
     def add(self, ob: ObjState) -> None:
         self.objects[ob.name] = ob
         self._ids = self._ids | {ob.name}
+        self._link(ob)
         self._register(ob)
 
     def remove(self, name: str) -> ObjState:
         ob = self.objects.pop(name)
         self._ids = self._ids - {name}
         self._geo.pop(name, None)
+        self._unlink(ob)
         self._unregister(ob)
         return ob
+
+    def _link(self, ob: ObjState) -> None:
+        for p in ob.placements:
+            self._children.setdefault(p.parent, set()).add(ob.name)
+
+    def _unlink(self, ob: ObjState) -> None:
+        for p in ob.placements:
+            self._children.get(p.parent, set()).discard(ob.name)
+
+    def set_placements(self, name: str, placements: list[Placement]) -> None:
+        """Replace an object's relations (keeping the parent -> children index right)."""
+        ob = self.objects[name]
+        self._unlink(ob)
+        ob.placements = list(placements)
+        self._link(ob)
+
+    def children(self, name: str) -> set[str]:
+        """Objects that rest on, hang from or otherwise relate to `name` directly."""
+        return self._children.get(name, set())
+
+    def descendants(self, name: str) -> list[str]:
+        """Everything that rests on `name`, directly or through others, parents first."""
+        out, stack = [], sorted(self.children(name))
+        while stack:
+            n = stack.pop(0)
+            if n not in out:
+                out.append(n)
+                stack.extend(sorted(self.children(n)))
+        return out
 
     def set_pose(self, name: str, position: np.ndarray, yaw: float) -> None:
         ob = self.objects[name]

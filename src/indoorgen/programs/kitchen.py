@@ -1,0 +1,52 @@
+"""A kitchen: cabinet runs along the walls with a fridge and a cooker, wall cabinets above,
+maybe an island with stools, and kitchenware on the counters."""
+from ..constraints import Problem, accessibility_cost, angle_alignment_cost, scene
+from ..tags import Semantics as S
+from .common import against_wall, at_table, on_ceiling, on_floor, on_top, on_wall
+
+
+def kitchen(room) -> Problem:
+    floor = scene().related_to(room, on_floor)
+    along_walls = floor.related_to(room, against_wall)
+    cabinets = along_walls[S.KitchenCabinet].excluding(S.KitchenIsland)
+    fridges = along_walls[S.Fridge]
+    cookers = along_walls[S.Range]
+    dishwashers = along_walls[S.Dishwasher]
+    islands = floor[S.KitchenIsland]
+    stools = floor[S.Stool]
+    wall_cabinets = scene()[S.WallCabinet].related_to(room, on_wall)
+    lights = scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling)
+    counters = cabinets | islands
+    kitchenware = scene()[S.Kitchenware].related_to(counters, on_top)
+    tableware = scene()[S.Tableware].related_to(counters, on_top)
+    food = scene()[S.Food].related_to(counters, on_top)
+    appliances_on_counters = scene()[S.Microwave].related_to(cabinets, on_top)
+    return Problem(
+        constraints={
+            "cabinet runs": cabinets.count().in_range(1, 4),
+            "a fridge": fridges.count() == 1,
+            "a cooker": cookers.count() == 1,
+            "a dishwasher at most": dishwashers.count().in_range(0, 1),
+            "an island at most": islands.count().in_range(0, 1),
+            "stools only at the island": islands.all(
+                lambda i: stools.related_to(i, at_table).count().in_range(0, 4)),
+            "wall cabinets": wall_cabinets.count().in_range(0, 3),
+            "a ceiling light": lights.count().in_range(1, 2),
+            "a microwave at most": appliances_on_counters.count().in_range(0, 1),
+            "kitchenware out": kitchenware.count().in_range(1, 6),
+            "crockery out": tableware.count().in_range(0, 6),
+            "food out": food.count().in_range(0, 4),
+        },
+        score_terms={
+            "a working triangle": fridges.mean(lambda f: f.distance(cookers).hinge(0.6, 2.7)).minimize(2),
+            "counter space": cabinets.count().maximize(1),
+            "fronts free": accessibility_cost(along_walls, floor).minimize(2),
+            "island clear of the runs": islands.mean(
+                lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
+            "stools at the island": stools.count().maximize(0.3),
+            "wall cabinets over counters": wall_cabinets.mean(
+                lambda w: w.distance(cabinets).hinge(0.0, 0.05)).minimize(2),
+            "square to the walls": angle_alignment_cost(floor, room).minimize(1),
+            "a lived-in kitchen": (kitchenware.count() + tableware.count() + food.count()).maximize(0.2),
+        },
+    )

@@ -1,0 +1,35 @@
+"""A home office or study: a desk with a chair and a screen, shelves of books and files."""
+from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from ..tags import Semantics as S
+from .common import against_wall, at_table, on_ceiling, on_floor, on_top, on_wall
+
+
+def office(room) -> Problem:
+    floor = scene().related_to(room, on_floor)
+    desks = floor[S.Desk].related_to(room, against_wall)
+    chairs = floor[S.OfficeChair]
+    bookcases = floor[S.Bookcase].related_to(room, against_wall)
+    books = scene()[S.Book].related_to(bookcases, on_top)
+    on_desks = scene().related_to(desks, on_top)
+    return Problem(
+        constraints={
+            "a desk": desks.count().in_range(1, 2),
+            "a chair at each desk": desks.all(lambda d: chairs.related_to(d, at_table).count() == 1),
+            "a screen on a desk": desks.all(lambda d: on_desks[S.Monitor].related_to(d, on_top).count().in_range(0, 2)),
+            "a lamp": on_desks[S.DeskLamp].count().in_range(0, 1),
+            "a laptop at most": on_desks[S.Laptop].count().in_range(0, 1),
+            "bookcases": bookcases.count().in_range(1, 2),
+            "books": bookcases.all(lambda b: books.related_to(b, on_top).count().in_range(6, 24)),
+            "a light": scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling).count() == 1,
+            "pictures": scene()[S.WallDecoration].related_to(room, on_wall).count().in_range(0, 2),
+        },
+        score_terms={
+            "a screen to work at": on_desks[S.Monitor].count().maximize(0.5),
+            "desk well lit": on_desks[S.DeskLamp].count().maximize(0.3),
+            "shelves free": accessibility_cost(bookcases, floor).minimize(1),
+            "square to the walls": angle_alignment_cost(floor, room).minimize(1),
+            "books upright": angle_alignment_cost(books, room).minimize(0.5),
+            "pictures at eye level": scene()[S.WallDecoration].related_to(room, on_wall).mean(
+                lambda a: height(a).hinge(1.3, 1.8)).minimize(1),
+        },
+    )
