@@ -214,7 +214,8 @@ def test_dishwasher_control_strip():
     for panel in ("visible", "integrated"):
         _, p, a = _make("dishwasher", panel=panel, n_buttons=5)
         door = a.link_faces("door")
-        buttons = np.intersect1d(door, np.concatenate([_faces_of_slot(a, "metal"), _faces_of_slot(a, "plastic")]))
+        buttons = np.intersect1d(door,
+                                 np.concatenate([_faces_of_slot(a, "metal"), _faces_of_slot(a, "plastic")]))
         top = a.mesh.triangles_center[buttons]
         assert (top[:, 2] > a.mesh.bounds[1][2] - 0.1).any()
 
@@ -257,7 +258,8 @@ def test_range_hob_at_declared_height(hob):
 
 
 # ---------------------------------------------------------------------- wall-mounted things
-@pytest.mark.parametrize("name,seed", [(n, s) for n in ("range_hood", "kitchen_wall_cabinet") for s in SEEDS])
+@pytest.mark.parametrize("name,seed",
+                         [(n, s) for n in ("range_hood", "kitchen_wall_cabinet") for s in SEEDS])
 def test_wall_mounted_back_lies_on_mesh(name, seed):
     _, _, _, a = build(name, seed)
     back = a.surface("back")
@@ -335,7 +337,8 @@ def test_kitchen_island_seating_overhang(seed):
     # from the ends
     x_panel = lo[0] + p["seating_overhang"]
     w = a.extents[1]
-    g = np.stack(np.meshgrid(np.linspace(lo[0] + 0.02, x_panel - 0.02, 4), np.linspace(-w / 2 + 0.12, w / 2 - 0.12, 7),
+    g = np.stack(np.meshgrid(np.linspace(lo[0] + 0.02, x_panel - 0.02, 4),
+                             np.linspace(-w / 2 + 0.12, w / 2 - 0.12, 7),
                              np.linspace(0.15, H - ct - 0.08, 5)), -1).reshape(-1, 3)
     assert not a.mesh.contains(g).any()
     assert (trimesh.proximity.closest_point(a.mesh, g)[1] > 0.005).all()

@@ -38,9 +38,11 @@ def open_shell(lo: Sequence[float], hi: Sequence[float], wall: float, back: floa
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     b = wall if back is None else back
     if open_top:
-        inner = box_between((lo[0] + wall, lo[1] + wall, lo[2] + b), (hi[0] - wall, hi[1] - wall, hi[2] + 0.01))
+        inner = box_between((lo[0] + wall, lo[1] + wall, lo[2] + b),
+                            (hi[0] - wall, hi[1] - wall, hi[2] + 0.01))
     else:
-        inner = box_between((lo[0] + b, lo[1] + wall, lo[2] + wall), (hi[0] + 0.01, hi[1] - wall, hi[2] - wall))
+        inner = box_between((lo[0] + b, lo[1] + wall, lo[2] + wall),
+                            (hi[0] + 0.01, hi[1] - wall, hi[2] - wall))
     return box_between(lo, hi) - inner
 
 
@@ -239,7 +241,8 @@ def cabinet_front(fx: float, cell: Front, opening: tuple[float, float, float, fl
             zh = z0 + min(0.04, 0.2 * h) if hinge == "top" else z1 - min(0.04, 0.2 * h)
             grip, vertical, length = ((y0 + y1) / 2, zh), False, min(0.3, 0.5 * w)
         # the axis runs along the outermost front edge (a shaker frame stands proud of the leaf)
-        motion = hinge_motion(hinge, x1 + (SHAKER_DEPTH if style == "shaker" else 0.0), y0, y1, z0, z1, link)
+        motion = hinge_motion(hinge, x1 + (SHAKER_DEPTH if style == "shaker" else 0.0), y0, y1, z0, z1,
+                              link)
     g = grip_handle(x1, grip[0], grip[1], length, vertical, handle)
     if g is not None:
         parts.append(Part(g, "metal", link))
@@ -293,7 +296,8 @@ def unit_parts(u: Unit, depth: float, z0: float, z1: float, t: float, detail: bo
     """One cabinet unit: carcass (x in [-depth/2, depth/2], y in u.y0..u.y1, z0..z1, boards
     `t`; a top board when `top`) with its overlay fronts, joints and `Subpart.Interior`
     surfaces (the bottom board and `n_shelves` evenly spaced fixed shelves behind doors).
-    Side-hinged doors open to `open_angle`. With detail=False the fronts and handles are one block (the placeholder)."""
+    Side-hinged doors open to `open_angle`. With detail=False the carcass, fronts and handles
+    are one block (the placeholder)."""
     w, yc = u.y1 - u.y0, (u.y0 + u.y1) / 2
     cells = unit_cells(u, z0, z1)
     door_cells = [c for c in cells if c.kind != "drawer"]
@@ -310,7 +314,8 @@ def unit_parts(u: Unit, depth: float, z0: float, z1: float, t: float, detail: bo
             surfaces.append(interior_rect(f"{prefix}interior_{i}", ix0, ix1, u.y0 + t, u.y1 - t, zs))
     fx = depth / 2
     if not detail:  # the closed block: carcass, contents, fronts and handles
-        return ([Part(box_between((-depth / 2, u.y0, z0), (fx + front_proud(handle, style), u.y1, z1)), "wood")],
+        return ([Part(box_between((-depth / 2, u.y0, z0), (fx + front_proud(handle, style), u.y1, z1)),
+                      "wood")],
                 [], surfaces)
     out = [Part(s.solid.translate((0.0, yc, 0.0)), s.slot)
            for s in carcass(depth, w, z0, z1, t, back=t, shelves=shelves, top=top)]

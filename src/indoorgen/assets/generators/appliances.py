@@ -15,7 +15,7 @@ import numpy as np
 
 from ...tags import Semantics as S
 from ..base import Param, register
-from ..parts import MOVING_GAP, Part, bevel_box, box_between, cylinder, rod
+from ..parts import MOVING_GAP, Part, bevel_box, box_between, cylinder
 from ._common import PartsFactory, bottom_rect, support_rect
 from ._kitchen_common import (HANDLE_PROUD, OVERLAP, hinge_motion, interior_rect, joint_for,
                               open_shell, pull_bar, slide_motion, slotted_plate, window_leaf,
@@ -132,13 +132,16 @@ class Fridge(PartsFactory):
         lo, hi = (zb + r, zd - r), (zd + r, H)
         if p["style"] == "top_freezer":
             return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=True),
-                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1], fridge=False)]
+                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1],
+                         fridge=False)]
         if p["style"] == "bottom_freezer":
             return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
-                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=False)]
+                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1],
+                         fridge=False)]
         return [dict(link="door_left", kind="left", y0=-W / 2, y1=-r, z0=hi[0], z1=hi[1], fridge=True),
                 dict(link="door_right", kind="right", y0=r, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
-                dict(link="drawer_freezer", kind="drawer", y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=False)]
+                dict(link="drawer_freezer", kind="drawer", y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1],
+                     fridge=False)]
 
     def _handle_proud(self, p) -> float:
         return 0.05 if p["handle"] == "bar" else 0.03
@@ -155,9 +158,11 @@ class Fridge(PartsFactory):
         if p["dispenser"] and link in ("door_fridge", "door_left") and y1 - y0 > 0.3 and z1 - z0 > 0.7:
             dw, dh = 0.17, 0.26
             yc, zc = (y0 + y1) / 2, min(z1 - 0.25 - dh / 2, 1.2)
-            slab = slab - box_between((x1 - 0.025, yc - dw / 2, zc - dh / 2), (x1 + 0.01, yc + dw / 2, zc + dh / 2))
+            slab = slab - box_between((x1 - 0.025, yc - dw / 2, zc - dh / 2),
+                                      (x1 + 0.01, yc + dw / 2, zc + dh / 2))
             extra = [Part(box_between((x1 - 0.026, yc - dw / 2 - 0.001, zc - dh / 2 - 0.001),
-                                      (x1 - 0.024, yc + dw / 2 + 0.001, zc + dh / 2 + 0.001)), "plastic", link),
+                                      (x1 - 0.024, yc + dw / 2 + 0.001,
+                                       zc + dh / 2 + 0.001)), "plastic", link),
                      Part(box_between((x1 - 0.001, yc - 0.04, zc + dh / 2 + 0.02),
                                       (x1 + 0.001, yc + 0.04, zc + dh / 2 + 0.06)), "screen", link)]
         else:
@@ -165,8 +170,10 @@ class Fridge(PartsFactory):
         out = [Part(slab, "appliance", link), *extra]
         # gasket: a rubber ring on the back of the leaf, standing in the door gap
         g = 0.02
-        ring = box_between((x0 - self.DOOR_GAP + 0.0015, y0 + 0.01, z0 + 0.01), (x0 + 0.001, y1 - 0.01, z1 - 0.01)) - \
-            box_between((x0 - 0.02, y0 + 0.01 + g, z0 + 0.01 + g), (x0 + 0.01, y1 - 0.01 - g, z1 - 0.01 - g))
+        ring = box_between((x0 - self.DOOR_GAP + 0.0015, y0 + 0.01, z0 + 0.01),
+                           (x0 + 0.001, y1 - 0.01, z1 - 0.01)) - \
+            box_between((x0 - 0.02, y0 + 0.01 + g, z0 + 0.01 + g),
+                        (x0 + 0.01, y1 - 0.01 - g, z1 - 0.01 - g))
         out.append(Part(ring, "rubber", link))
         hp = self._handle_proud(p)
         if leaf["kind"] == "drawer":
@@ -174,7 +181,8 @@ class Fridge(PartsFactory):
             out.append(Part(pull_bar(x1, (y0 + 0.12, zc), (y1 - 0.12, zc), hp, 0.011, 12), "metal", link))
             f0, f1 = self._compartments(p)["freezer"]
             c = 2 * MOVING_GAP  # clear of the liner all round
-            out.append(Part(open_shell((-D / 2 + w + 0.05, cy0 + c, f0 + c), (x0 + 0.001, cy1 - c, f1 - 0.03),
+            out.append(Part(open_shell((-D / 2 + w + 0.05, cy0 + c, f0 + c),
+                                       (x0 + 0.001, cy1 - c, f1 - 0.03),
                                        0.005, open_top=True), "plastic", link))
             return out, slide_motion(link, (x1, 0.0, zc))
         free_edge, toward = (y1, -1.0) if leaf["kind"] == "left" else (y0, 1.0)
@@ -184,7 +192,8 @@ class Fridge(PartsFactory):
             by0 = max(y0, cy0) + 0.012
             by1 = min(y1, cy1) - 0.012
             for zt in _shelf_levels(z0 + 0.05, z1 - 0.1, 3):
-                out.append(Part(open_shell((fx - 0.05, by0, zt - 0.09), (x0 + 0.001, by1, zt), 0.004, open_top=True),
+                out.append(Part(open_shell((fx - 0.05, by0, zt - 0.09), (x0 + 0.001, by1, zt), 0.004,
+                                           open_top=True),
                                 "plastic", link))
         return out, hinge_motion(leaf["kind"], x1, y0, y1, z0, z1, link)
 
@@ -213,13 +222,15 @@ class Fridge(PartsFactory):
         w = COLD_WALL
         comp = self._compartments(p)
         body = box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H))
-        cutters = [box_between((-D / 2 + w, -W / 2 + w, z0), (D / 2 + 0.01, W / 2 - w, z1)) for z0, z1 in comp.values()]
+        cutters = [box_between((-D / 2 + w, -W / 2 + w, z0), (D / 2 + 0.01, W / 2 - w, z1))
+                   for z0, z1 in comp.values()]
         cutters += _vent_slots(D / 2, -W / 2 + 0.05, W / 2 - 0.05, 0.012, zb - 0.01)
         out = [Part(m3d.Manifold.batch_boolean([body] + cutters, m3d.OpType.Subtract), "appliance")]
         # a plastic liner inside each compartment (its visible faces are the cavity's)
         for z0, z1 in comp.values():
             out.append(Part(open_shell((-D / 2 + w - 0.001, -W / 2 + w - 0.001, z0 - 0.001),
-                                       (D / 2 - 0.003, W / 2 - w + 0.001, z1 + 0.001), LINER + 0.001), "plastic"))
+                                       (D / 2 - 0.003, W / 2 - w + 0.001,
+                                        z1 + 0.001), LINER + 0.001), "plastic"))
         for zs in self._shelves(p):
             out.append(Part(box_between((-D / 2 + w - 0.001, -W / 2 + w - 0.002, zs - 0.006),
                                         (D / 2 - 0.075, W / 2 - w + 0.002, zs)), "glass"))
@@ -302,7 +313,8 @@ class BeverageFridge(PartsFactory):
         proud = 0.045 if p["handle"] == "bar" else 0.03
         if p["handle"] == "bar":  # on the frame's stile
             y = edge + toward * fw / 2
-            parts.append(Part(pull_bar(x1, (y, zh - 0.18), (y, zh + 0.2), proud, 0.009, 12), "metal", "door"))
+            parts.append(Part(pull_bar(x1, (y, zh - 0.18), (y, zh + 0.2), proud, 0.009, 12), "metal",
+                              "door"))
         else:
             parts.append(Part(_grip(x1, edge, toward, zh - 0.2, zh + 0.2, "edge", proud), "metal", "door"))
         return parts, hinge_motion(hs, x1, y0, y1, z0, z1, "door")
@@ -312,25 +324,31 @@ class BeverageFridge(PartsFactory):
         if not detail:
             proud = 0.045 if p["handle"] == "bar" else 0.03
             return [Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H)), "appliance"),
-                    Part(box_between((D / 2 - 0.01, -W / 2, zb - 0.03), (D / 2 + MOVING_GAP + self.DOOR_T + proud, W / 2, H)),
+                    Part(box_between((D / 2 - 0.01, -W / 2, zb - 0.03),
+                                     (D / 2 + MOVING_GAP + self.DOOR_T + proud, W / 2, H)),
                          "appliance")]
         cx0, cx1, cy0, cy1, cz0, cz1 = self._cavity(p)
         # cabinet: the cavity from the kick plate up; the kick plate itself is recessed and vented
         body = box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H))
         cutters = [box_between((cx0, cy0, cz0), (cx1 + 0.01, cy1, cz1)),
-                   box_between((D / 2 - 0.03, -W / 2 - 0.01, -0.01), (D / 2 + 0.01, W / 2 + 0.01, zb - 0.03))]
+                   box_between((D / 2 - 0.03, -W / 2 - 0.01, -0.01),
+                               (D / 2 + 0.01, W / 2 + 0.01, zb - 0.03))]
         cutters += _vent_slots(D / 2 - 0.03, -W / 2 + 0.04, W / 2 - 0.04, 0.01, zb - 0.04)
         out = [Part(m3d.Manifold.batch_boolean([body] + cutters, m3d.OpType.Subtract), "appliance"),
-               Part(open_shell((cx0 - 0.001, cy0 - 0.001, cz0 - 0.001), (cx1 - 0.003, cy1 + 0.001, cz1 + 0.001),
+               Part(open_shell((cx0 - 0.001, cy0 - 0.001, cz0 - 0.001),
+                               (cx1 - 0.003, cy1 + 0.001, cz1 + 0.001),
                                LINER + 0.001), "plastic")]
         sx1 = cx1 - 0.03
         for zs in self._shelves(p):
             if p["shelf_style"] == "wire":
-                out.append(Part(wire_rack(cx0 + 0.005, sx1, cy0 - 0.001, cy1 + 0.001, zs, 0.0025, 0.028), "metal"))
+                out.append(Part(wire_rack(cx0 + 0.005, sx1, cy0 - 0.001, cy1 + 0.001, zs, 0.0025, 0.028),
+                                "metal"))
             else:
-                out.append(Part(box_between((cx0, cy0 - 0.001, zs - 0.006), (sx1, cy1 + 0.001, zs)), "glass"))
+                out.append(Part(box_between((cx0, cy0 - 0.001, zs - 0.006), (sx1, cy1 + 0.001, zs)),
+                                "glass"))
         if p["light"]:
-            out.append(Part(box_between((cx0 + 0.02, cy0 + 0.03, cz1 - 0.008), (cx0 + 0.06, cy1 - 0.03, cz1 + 0.001)),
+            out.append(Part(box_between((cx0 + 0.02, cy0 + 0.03, cz1 - 0.008),
+                                        (cx0 + 0.06, cy1 - 0.03, cz1 + 0.001)),
                             "emissive"))
         out += self._door(p)[0]
         return out
@@ -400,22 +418,27 @@ class Dishwasher(PartsFactory):
         nb = int(p["n_buttons"])
         if visible:
             sh = 0.09
-            parts.append(Part(box_between((x1 - 0.001, y0, z1 - sh), (x1 + 0.002, y1, z1)), "plastic", "door"))
-            parts.append(Part(box_between((x1 + 0.001, y1 - 0.17, z1 - 0.06), (x1 + 0.003, y1 - 0.05, z1 - 0.03)),
+            parts.append(Part(box_between((x1 - 0.001, y0, z1 - sh), (x1 + 0.002, y1, z1)), "plastic",
+                              "door"))
+            parts.append(Part(box_between((x1 + 0.001, y1 - 0.17, z1 - 0.06),
+                                          (x1 + 0.003, y1 - 0.05, z1 - 0.03)),
                               "screen", "door"))
             for i in range(nb):
                 yb = y0 + 0.05 + i * 0.035
-                parts.append(Part(box_between((x1 + 0.001, yb, z1 - 0.06), (x1 + 0.005, yb + 0.022, z1 - 0.045)),
+                parts.append(Part(box_between((x1 + 0.001, yb, z1 - 0.06),
+                                              (x1 + 0.005, yb + 0.022, z1 - 0.045)),
                                   "metal", "door"))
             zh = z1 - sh - 0.035
         else:  # buttons on the top edge of the door
             for i in range(nb):
                 yb = y1 - 0.06 - i * 0.03
-                parts.append(Part(box_between((x0 + 0.012, yb - 0.02, z1 - 0.002), (x0 + 0.028, yb, z1 + 0.002)),
+                parts.append(Part(box_between((x0 + 0.012, yb - 0.02, z1 - 0.002),
+                                              (x0 + 0.028, yb, z1 + 0.002)),
                                   "plastic", "door"))
             zh = z1 - 0.06
         if p["handle"] == "bar":
-            parts.append(Part(pull_bar(x1, (-min(0.2, 0.35 * W), zh), (min(0.2, 0.35 * W), zh), HANDLE_PROUD, 0.007, 12),
+            parts.append(Part(pull_bar(x1, (-min(0.2, 0.35 * W), zh), (min(0.2, 0.35 * W), zh),
+                                       HANDLE_PROUD, 0.007, 12),
                               "metal", "door"))
         else:  # a pocket grip recessed into the top of the door
             parts[0] = Part(leaf - box_between((x1 - 0.025, -0.1, z1 - 0.03), (x1 + 0.01, 0.1, z1 + 0.01)),
@@ -430,14 +453,18 @@ class Dishwasher(PartsFactory):
         top_extra = 0.002 if p["panel"] == "integrated" else 0.0
         if not detail:
             return [Part(box_between((-D / 2, -W / 2, zk), (D / 2, W / 2, H)), "appliance"),
-                    Part(box_between((-D / 2, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)), "plastic"),
-                    Part(box_between((D / 2 - 0.01, -W / 2, zk), (D / 2 + self._proud(p), W / 2, H + top_extra)),
+                    Part(box_between((-D / 2, -W / 2 + 0.02, 0.0),
+                                     (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)), "plastic"),
+                    Part(box_between((D / 2 - 0.01, -W / 2, zk),
+                                     (D / 2 + self._proud(p), W / 2, H + top_extra)),
                          "appliance")]
         tx0, tx1, ty0, ty1, tz0, tz1 = self._tub(p)
         out = [Part(open_shell((-D / 2, -W / 2, zk), (D / 2, W / 2, H), self.WALL), "appliance"),
-               Part(open_shell((tx0 - 0.001, ty0 - 0.001, tz0 - 0.001), (tx1 - 0.002, ty1 + 0.001, tz1 + 0.001), 0.003),
+               Part(open_shell((tx0 - 0.001, ty0 - 0.001, tz0 - 0.001),
+                               (tx1 - 0.002, ty1 + 0.001, tz1 + 0.001), 0.003),
                     "metal"),
-               Part(box_between((-D / 2, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)), "plastic")]
+               Part(box_between((-D / 2, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zk + OVERLAP)),
+                    "plastic")]
         for i, zr in enumerate(self._racks(p)):
             wall_h = 0.1 if i == 0 else 0.07 if i == 1 else 0.03
             out.append(Part(_basket(tx0 + 0.02, tx1 - 0.04, ty0 - 0.001, ty1 + 0.001, zr, wall_h), "metal"))
@@ -445,7 +472,8 @@ class Dishwasher(PartsFactory):
         zs = self._racks(p)[0] - 0.025
         xc = (tx0 + tx1) / 2 - 0.01
         out.append(Part(cylinder(0.02, zs - tz0 + 0.001, (xc, 0.0, tz0 - 0.001), 16), "plastic"))
-        out.append(Part(box_between((xc - 0.02, ty0 + 0.06, zs - 0.004), (xc + 0.02, ty1 - 0.06, zs + 0.006)), "plastic"))
+        out.append(Part(box_between((xc - 0.02, ty0 + 0.06, zs - 0.004),
+                                    (xc + 0.02, ty1 - 0.06, zs + 0.006)), "plastic"))
         out += self._door(p)[0]
         return out
 
@@ -457,5 +485,6 @@ class Dishwasher(PartsFactory):
         tx0, tx1, ty0, ty1, _, _ = self._tub(p)
         out = [bottom_rect((-0.03, 0, 0), D / 2 - 0.03, W / 2 - 0.02)]
         for i, z in enumerate(self._racks(p)):
-            out.append(interior_rect(f"interior_{i}", tx0 + 0.02, tx1 - 0.04, ty0 + 0.01, ty1 - 0.01, z, 0.005))
+            out.append(interior_rect(f"interior_{i}", tx0 + 0.02, tx1 - 0.04, ty0 + 0.01, ty1 - 0.01, z,
+                                     0.005))
         return out

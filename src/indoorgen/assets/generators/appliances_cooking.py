@@ -9,10 +9,8 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
-import shapely.ops
 
 from ...tags import Semantics as S
-from ...tags import Subpart
 from ..base import Param, Surface, register
 from ..parts import (MOVING_GAP, Part, bevel_box, box, box_between, cylinder, knob, lathe,
                      solid_union)
@@ -97,7 +95,8 @@ def hob_parts(style: str, region: tuple[float, float, float, float], z_top: floa
         k = min(n + 2, 7)
         for i in range(k):
             y = (y0 + y1) / 2 + (i - (k - 1) / 2) * 0.035
-            out.append(Part(box_between((xf - 0.008, y - 0.008, z_top - 0.0001), (xf + 0.008, y + 0.008, z_top + 0.0004)),
+            out.append(Part(box_between((xf - 0.008, y - 0.008, z_top - 0.0001),
+                                        (xf + 0.008, y + 0.008, z_top + 0.0004)),
                             "plastic"))
         return out
     zg = z_top + GRATE_HEIGHT
@@ -114,7 +113,8 @@ def hob_parts(style: str, region: tuple[float, float, float, float], z_top: floa
         out.append(Part(solid_union(solids), "rubber"))
     if detail:
         for x, y, r in burners:
-            cap = lathe([(0.0, 0.0), (r * 1.15, 0.0), (r * 1.15, 0.008), (r, 0.014), (r, 0.018), (r * 0.95, 0.024),
+            cap = lathe([(0.0, 0.0), (r * 1.15, 0.0), (r * 1.15, 0.008), (r, 0.014), (r, 0.018),
+                         (r * 0.95, 0.024),
                          (0.0, 0.024)], 24)
             out.append(Part(cap.translate((x, y, z_top - 0.001)), "metal"))
     if knobs:
@@ -138,11 +138,27 @@ def hob_surfaces(style: str, region: tuple[float, float, float, float], z_top: f
     burners, cells = hob_layout(region, n, knobs)
     out = []
     for i, bars in enumerate(_grates(cells, burners, continuous)):
-        poly = shapely.ops.unary_union([sg.box(a + 0.0005, c + 0.0005, b - 0.0005, d - 0.0005) for a, b, c, d in bars])
-        if poly.geom_type != "Polygon":
-            poly = max(poly.geoms, key=lambda g: g.area)
-        out.append(support_polygon(f"grate_{i}", (0.0, 0.0, z_top + GRATE_HEIGHT), poly))
+        out.append(support_polygon(f"grate_{i}", (0.0, 0.0, z_top + GRATE_HEIGHT),
+                                   _rects_union(bars, 0.0005)))
     return out
+
+
+def _rects_union(rects: list[tuple[float, float, float, float]], inset: float) -> sg.Polygon:
+    """The union of connected rectangles (x0, x1, y0, y1), shrunk by `inset`, as one polygon
+    with holes (2D booleans in manifold3d: much faster than shapely's)."""
+    squares = [m3d.CrossSection.square((b - a, d - c)).translate((a, c)) for a, b, c, d in rects]
+    union = m3d.CrossSection.batch_boolean(squares, m3d.OpType.Add).offset(-inset, m3d.JoinType.Miter)
+    rings = [np.asarray(r, float) for r in union.to_polygons()]
+    areas = [abs(_ring_area(r)) for r in rings]
+    k = int(np.argmax(areas))
+    outer = sg.Polygon(rings[k])
+    holes = [r for i, r in enumerate(rings) if i != k and outer.contains(sg.Point(r[0]))]
+    return sg.Polygon(rings[k], holes)
+
+
+def _ring_area(r: np.ndarray) -> float:
+    """Signed area of a closed 2D ring (N, 2) (shoelace)."""
+    return 0.5 * float(np.dot(r[:, 0], np.roll(r[:, 1], -1)) - np.dot(r[:, 1], np.roll(r[:, 0], -1)))
 
 
 # ------------------------------------------------------------------------------- cooktop
@@ -183,7 +199,8 @@ class Cooktop(PartsFactory):
         out = [Part(slab, "glass" if glass else "metal")]
         if glass and p["frame"]:
             fw = 0.008
-            ring = box((D, W, t + 0.001), (0, 0, (t + 0.001) / 2)) - box((D - 2 * fw, W - 2 * fw, 1.0), (0, 0, 0))
+            ring = box((D, W, t + 0.001),
+                       (0, 0, (t + 0.001) / 2)) - box((D - 2 * fw, W - 2 * fw, 1.0), (0, 0, 0))
             out.append(Part(ring if detail else box((D, W, t + 0.001), (0, 0, (t + 0.001) / 2)), "metal"))
         out += hob_parts(p["style"], (-D / 2, D / 2, -W / 2, W / 2), t, n, p["grates"] == "continuous",
                          detail, not glass)
@@ -205,12 +222,14 @@ def _oven_door(x_face: float, y0: float, y1: float, z0: float, z1: float, t: flo
     x0, x1 = x_face + MOVING_GAP, x_face + MOVING_GAP + t
     w, h = y1 - y0, z1 - z0
     side = (1 - window) * w / 2
-    parts = window_leaf(x0, x1, y0, y1, z0, z1, (side, side, 0.08 * h + 0.03, 0.22 * h + 0.02), link, "appliance")
+    parts = window_leaf(x0, x1, y0, y1, z0, z1, (side, side, 0.08 * h + 0.03, 0.22 * h + 0.02), link,
+                        "appliance")
     zh = z1 - 0.045
     if handle == "bar":
         parts.append(Part(pull_bar(x1, (y0 + 0.06, zh), (y1 - 0.06, zh), 0.05, 0.011, 16), "metal", link))
     else:  # a steel grip strip along the top edge
-        parts.append(Part(box_between((x1 - 0.001, y0 + 0.04, z1 - 0.035), (x1 + 0.015, y1 - 0.04, z1 - 0.01)),
+        parts.append(Part(box_between((x1 - 0.001, y0 + 0.04, z1 - 0.035),
+                                      (x1 + 0.015, y1 - 0.04, z1 - 0.01)),
                           "metal", link))
     return parts, hinge_motion("bottom", x1, y0, y1, z0, z1, link)
 
@@ -222,13 +241,16 @@ def _oven_cavity(lo, hi, racks: list[float], detail: bool) -> tuple[list[m3d.Man
     cut = [box_between((x0, y0, z0), (x1 + 0.01, y1, z1))]
     if not detail:
         return cut, []
-    parts = [Part(open_shell((x0 - 0.001, y0 - 0.001, z0 - 0.001), (x1 - 0.004, y1 + 0.001, z1 + 0.001), 0.004),
+    parts = [Part(open_shell((x0 - 0.001, y0 - 0.001, z0 - 0.001), (x1 - 0.004, y1 + 0.001, z1 + 0.001),
+                             0.004),
                   "ceramic")]
     for zr in racks:
-        parts.append(Part(wire_rack(x0 + 0.02, x1 - 0.03, y0 + 0.002, y1 - 0.002, zr, 0.0025, 0.03), "metal"))
+        parts.append(Part(wire_rack(x0 + 0.02, x1 - 0.03, y0 + 0.002, y1 - 0.002, zr, 0.0025, 0.03),
+                          "metal"))
         for s in (-1, 1):  # runners the rack rests on
             ya, yb = (y0 - 0.001, y0 + 0.012) if s < 0 else (y1 - 0.012, y1 + 0.001)
-            parts.append(Part(box_between((x0 + 0.01, ya, zr - 0.011), (x1 - 0.02, yb, zr - 0.004)), "metal"))
+            parts.append(Part(box_between((x0 + 0.01, ya, zr - 0.011), (x1 - 0.02, yb, zr - 0.004)),
+                              "metal"))
     return cut, parts
 
 
@@ -238,7 +260,8 @@ def _controls(x_face: float, y0: float, y1: float, zc: float, n_knobs: int, styl
     touch strip (display and a row of touch keys)."""
     out = []
     w = y1 - y0
-    out.append(Part(box_between((x_face - 0.001, -0.06, zc - 0.018), (x_face + 0.002, 0.06, zc + 0.018)), "screen"))
+    out.append(Part(box_between((x_face - 0.001, -0.06, zc - 0.018), (x_face + 0.002, 0.06, zc + 0.018)),
+                    "screen"))
     if style == "knobs":  # split either side of the display
         nl = n_knobs // 2
         ys = list(np.linspace(y0 + 0.05, -0.1, nl + 2)[1:-1]) if nl else []
@@ -249,7 +272,8 @@ def _controls(x_face: float, y0: float, y1: float, zc: float, n_knobs: int, styl
         for i in range(6):
             y = 0.09 + i * min(0.03, (w / 2 - 0.12) / 6)
             for s in (-1, 1):
-                out.append(Part(box_between((x_face - 0.001, s * y - 0.008, zc - 0.008), (x_face + 0.002, s * y + 0.008, zc + 0.008)),
+                out.append(Part(box_between((x_face - 0.001, s * y - 0.008, zc - 0.008),
+                                            (x_face + 0.002, s * y + 0.008, zc + 0.008)),
                                 "plastic"))
     return out
 
@@ -294,7 +318,8 @@ class Oven(PartsFactory):
         return (-D / 2 + 0.03, -W / 2 + 0.05, z0 + 0.04), (D / 2 + self.FASCIA, W / 2 - 0.05, z1 - 0.03)
 
     def _racks(self, p, lo, hi) -> list[float]:
-        return [lo[2] + (hi[2] - lo[2]) * (i + 1) / (int(p["n_racks"]) + 1) for i in range(int(p["n_racks"]))]
+        k = int(p["n_racks"])
+        return [lo[2] + (hi[2] - lo[2]) * (i + 1) / (k + 1) for i in range(k)]
 
     def _door_parts(self, p):
         W = p["width"]
@@ -311,8 +336,10 @@ class Oven(PartsFactory):
         fascia = box_between((D / 2, -W / 2, 0.0), (fx, W / 2, H))
         if not detail:
             return [Part(box_part, "appliance"), Part(fascia, "appliance"),
-                    Part(box_between((fx - 0.01, -W / 2, 0.0), (fx + proud, W / 2, H - p["control_height"])), "appliance"),
-                    Part(box_between((fx - 0.01, -W / 2, H - p["control_height"]), (fx + 0.03, W / 2, H)), "metal")]
+                    Part(box_between((fx - 0.01, -W / 2, 0.0),
+                                     (fx + proud, W / 2, H - p["control_height"])), "appliance"),
+                    Part(box_between((fx - 0.01, -W / 2, H - p["control_height"]), (fx + 0.03, W / 2, H)),
+                         "metal")]
         cutters, inner = [], []
         for z0, z1 in self._doors(p):
             lo, hi = self._cavity_box(p, z0, z1)
@@ -334,7 +361,8 @@ class Oven(PartsFactory):
         for z0, z1 in self._doors(p):
             lo, hi = self._cavity_box(p, z0, z1)
             for z in [lo[2] + 0.003] + self._racks(p, lo, hi):
-                out.append(interior_rect(f"interior_{len(out)}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015, hi[1] - 0.015, z,
+                out.append(interior_rect(f"interior_{len(out)}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015,
+                                         hi[1] - 0.015, z,
                                          0.005))
         return out
 
@@ -402,9 +430,12 @@ class Range(PartsFactory):
         if p["drawer"]:
             a, b = g["z_drawer"]
             x0, x1 = D / 2 + MOVING_GAP, D / 2 + MOVING_GAP + 0.025
-            dparts = [Part(box_between((x0, -W / 2 + 0.002, a), (x1, W / 2 - 0.002, b)), "appliance", "drawer"),
-                      Part(pull_bar(x1, (-0.15, b - 0.04), (0.15, b - 0.04), 0.035, 0.008, 12), "metal", "drawer"),
-                      Part(open_shell((-D / 2 + 0.12, -W / 2 + 0.05, a + 0.01), (x0 + 0.001, W / 2 - 0.05, b - 0.02), 0.004,
+            dparts = [Part(box_between((x0, -W / 2 + 0.002, a), (x1, W / 2 - 0.002, b)), "appliance",
+                           "drawer"),
+                      Part(pull_bar(x1, (-0.15, b - 0.04), (0.15, b - 0.04), 0.035, 0.008, 12), "metal",
+                           "drawer"),
+                      Part(open_shell((-D / 2 + 0.12, -W / 2 + 0.05, a + 0.01),
+                                      (x0 + 0.001, W / 2 - 0.05, b - 0.02), 0.004,
                                       open_top=True), "metal", "drawer")]
             out.append((dparts, slide_motion("drawer", (x1, 0.0, b)), 0.7 * (D - 0.12)))
         return out
@@ -415,23 +446,28 @@ class Range(PartsFactory):
         bgh = p["backguard_height"]
         hob_style = p["hob"]
         proud = MOVING_GAP + self.DOOR_T + (0.05 if p["handle"] == "bar" else 0.015)
-        plinth = box_between((-D / 2 + 0.02, -W / 2 + 0.02, 0.0), (D / 2 - 0.06, W / 2 - 0.02, zf + OVERLAP))
+        plinth = box_between((-D / 2 + 0.02, -W / 2 + 0.02, 0.0),
+                             (D / 2 - 0.06, W / 2 - 0.02, zf + OVERLAP))
         body = box_between((-D / 2, -W / 2, zf), (D / 2, W / 2, H - self.TOP_T + 0.001))
         top = box_between((-D / 2, -W / 2, H - self.TOP_T), (D / 2, W / 2, H))
         guard = box_between((-D / 2, -W / 2, H - 0.001), (-D / 2 + self.BG_D, W / 2, H + bgh))
-        out = [Part(plinth, "plastic"), Part(top, "glass" if hob_style == "glass" else "appliance"), Part(guard, "appliance")]
+        out = [Part(plinth, "plastic"), Part(top, "glass" if hob_style == "glass" else "appliance"),
+               Part(guard, "appliance")]
         out += hob_parts(hob_style, g["region"], H, g["n"], p["grates"] == "continuous", detail, False)
         if not detail:
             z_front1 = g["z_door"][1] if p["controls"] == "backguard" else H - self.TOP_T
             return out + [Part(body, "appliance"),
-                          Part(box_between((D / 2 - 0.01, -W / 2, zf), (D / 2 + proud, W / 2, z_front1)), "appliance"),
-                          *([Part(box_between((-D / 2 + self.BG_D - 0.01, -W / 2 + 0.04, H), (-D / 2 + self.BG_D + 0.03, W / 2 - 0.04, H + bgh)),
+                          Part(box_between((D / 2 - 0.01, -W / 2, zf), (D / 2 + proud, W / 2, z_front1)),
+                               "appliance"),
+                          *([Part(box_between((-D / 2 + self.BG_D - 0.01, -W / 2 + 0.04, H),
+                                              (-D / 2 + self.BG_D + 0.03, W / 2 - 0.04, H + bgh)),
                                   "metal")] if p["controls"] == "backguard" else [])]
         lo, hi = self._cavity(p)
         cutters, inner = _oven_cavity(lo, hi, self._racks(p), True)
         if p["drawer"]:
             a, b = g["z_drawer"]
-            cutters.append(box_between((-D / 2 + 0.1, -W / 2 + 0.04, a + 0.005), (D / 2 + 0.01, W / 2 - 0.04, b)))
+            cutters.append(box_between((-D / 2 + 0.1, -W / 2 + 0.04, a + 0.005),
+                                       (D / 2 + 0.01, W / 2 - 0.04, b)))
         out.append(Part(m3d.Manifold.batch_boolean([body] + cutters, m3d.OpType.Subtract), "appliance"))
         out += inner
         n_knobs = g["n"] + 1
@@ -443,7 +479,8 @@ class Range(PartsFactory):
                 y = (i - (n_knobs - 1) / 2) * min(0.08, (W - 0.2) / n_knobs)
                 y += 0.06 * np.sign(y)
                 out.append(Part(knob((xg, y, zc), kr, 0.03), "metal"))
-            out.append(Part(box_between((xg - 0.001, -0.04, zc - 0.012), (xg + 0.002, 0.04, zc + 0.012)), "screen"))
+            out.append(Part(box_between((xg - 0.001, -0.04, zc - 0.012), (xg + 0.002, 0.04, zc + 0.012)),
+                            "screen"))
         else:
             out += _controls(D / 2, -W / 2, W / 2, H - self.TOP_T - 0.05, n_knobs, "knobs")
         for parts, _, _ in self._moving(p):
@@ -460,7 +497,8 @@ class Range(PartsFactory):
         out = [*hob_surfaces(p["hob"], g["region"], H, g["n"], p["grates"] == "continuous", False),
                bottom_rect((-0.02, 0, 0), D / 2 - 0.04, W / 2 - 0.02)]  # the plinth
         for i, z in enumerate([lo[2] + 0.003] + self._racks(p)):
-            out.append(interior_rect(f"interior_{i}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015, hi[1] - 0.015, z, 0.005))
+            out.append(interior_rect(f"interior_{i}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015,
+                                     hi[1] - 0.015, z, 0.005))
         return out
 
 
@@ -511,10 +549,12 @@ class RangeHood(PartsFactory):
             pts += [(x, y, top) for x in (-D / 2, -D / 2 + cd) for y in (-cw / 2, cw / 2)]
             out.append(Part(m3d.Manifold.hull_points(np.array(pts, float)), "appliance"))
         if p["style"] != "under_cabinet":
-            out.append(Part(box_between((-D / 2, -cw / 2, top - 0.001), (-D / 2 + cd, cw / 2, H)), "appliance"))
+            out.append(Part(box_between((-D / 2, -cw / 2, top - 0.001), (-D / 2 + cd, cw / 2, H)),
+                            "appliance"))
         if not detail:
             return out + [Part(rim, "appliance"),
-                          Part(box_between((D / 2 - 0.01, -W / 2 + 0.05, 0.0), (D / 2 + 0.004, W / 2 - 0.05, ch)), "plastic")]
+                          Part(box_between((D / 2 - 0.01, -W / 2 + 0.05, 0.0),
+                                           (D / 2 + 0.004, W / 2 - 0.05, ch)), "plastic")]
         # underside: filters in recesses, lights
         fw = (W - 0.12) / 2
         recesses, inserts = [], []
@@ -535,12 +575,15 @@ class RangeHood(PartsFactory):
         if p["controls"] == "buttons":
             for i in range(4):
                 y = 0.1 + i * 0.035
-                out.append(Part(box_between((D / 2 - 0.001, y - 0.012, ch / 2 - 0.008), (D / 2 + 0.004, y + 0.012, ch / 2 + 0.008)),
+                out.append(Part(box_between((D / 2 - 0.001, y - 0.012, ch / 2 - 0.008),
+                                            (D / 2 + 0.004, y + 0.012, ch / 2 + 0.008)),
                                 "plastic"))
         else:
-            out.append(Part(box_between((D / 2 - 0.001, 0.08, ch / 2 - 0.006), (D / 2 + 0.002, 0.24, ch / 2 + 0.006)),
+            out.append(Part(box_between((D / 2 - 0.001, 0.08, ch / 2 - 0.006),
+                                        (D / 2 + 0.002, 0.24, ch / 2 + 0.006)),
                             "plastic"))
-            out.append(Part(box_between((D / 2 + 0.001, 0.14, ch / 2 - 0.01), (D / 2 + 0.004, 0.155, ch / 2 + 0.01)),
+            out.append(Part(box_between((D / 2 + 0.001, 0.14, ch / 2 - 0.01),
+                                        (D / 2 + 0.004, 0.155, ch / 2 + 0.01)),
                             "metal"))
         return out
 
@@ -552,6 +595,7 @@ class RangeHood(PartsFactory):
         if p["style"] != "under_cabinet":
             region = region.union(sg.box(-cw / 2, top - 0.001, cw / 2, H))
         if p["style"] == "chimney_pyramid":
-            region = region.union(sg.Polygon([(-W / 2, ch - 0.001), (W / 2, ch - 0.001), (cw / 2, top), (-cw / 2, top)]))
+            region = region.union(sg.Polygon([(-W / 2, ch - 0.001), (W / 2, ch - 0.001), (cw / 2, top),
+                                              (-cw / 2, top)]))
         region = region.buffer(-0.002, join_style="mitre")
         return [back_surface(-D / 2, region)]

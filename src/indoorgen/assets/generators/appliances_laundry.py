@@ -64,14 +64,16 @@ class WashingMachine(PartsFactory):
         rg = R * {"chrome": 0.72, "white": 0.64, "dark": 0.8}[style]  # glass radius
         ring_slot = {"chrome": "metal", "white": "appliance", "dark": "plastic"}[style]
         if style == "chrome":  # a rounded bezel
-            prof = [(rg, 0.0), (R, 0.0), (R, dd * 0.55), (R - 0.015, dd * 0.85), (rg + 0.01, dd * 0.7), (rg, dd * 0.5)]
+            prof = [(rg, 0.0), (R, 0.0), (R, dd * 0.55), (R - 0.015, dd * 0.85), (rg + 0.01, dd * 0.7),
+                    (rg, dd * 0.5)]
         elif style == "white":  # a wide flat ring
             prof = [(rg, 0.0), (R, 0.0), (R, dd * 0.6), (R - 0.006, dd * 0.66), (rg, dd * 0.66)]
         else:  # a slim ring round a big smoked dome
             prof = [(rg, 0.0), (R, 0.0), (R, dd * 0.4), (R - 0.01, dd * 0.5), (rg, dd * 0.45)]
         ring = _x_lathe(prof, (x0, yc, zc), 64)
         a = prof[-1][1] - 0.002
-        glass = _x_lathe([(0.0, 0.004), (rg + 0.002, 0.004), (rg + 0.002, a), (rg * 0.6, (a + dd) / 2 + 0.004),
+        glass = _x_lathe([(0.0, 0.004), (rg + 0.002, 0.004), (rg + 0.002, a),
+                          (rg * 0.6, (a + dd) / 2 + 0.004),
                           (0.0, dd)], (x0, yc, zc), 64)
         hinge = "left" if p["knob_side"] == "right" else "right"
         sgn = 1.0 if hinge == "left" else -1.0  # the grip is on the free side
@@ -93,7 +95,8 @@ class WashingMachine(PartsFactory):
         depth = min(0.3, D - 0.15)
         tray = open_shell((fx - depth, y0 + 0.004, z0 + 0.004), (x0 + 0.001, y1 - 0.004, z1 - 0.01), 0.003,
                           open_top=True)
-        parts = [Part(front, "appliance", "drawer"), Part(lip, "plastic", "drawer"), Part(tray, "plastic", "drawer")]
+        parts = [Part(front, "appliance", "drawer"), Part(lip, "plastic", "drawer"),
+                 Part(tray, "plastic", "drawer")]
         cavity = box_between((fx - depth - 0.01, y0, z0), (fx + 0.01, y1, z1))
         return parts, slide_motion("drawer", (x1, (y0 + y1) / 2, z0)), (cavity, 0.8 * depth)
 
@@ -105,7 +108,8 @@ class WashingMachine(PartsFactory):
         zk = H - ph / 2
         if not detail:
             return [Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, H)), "appliance"),
-                    Part(box_between((D / 2 - 0.01, yc - R, zc - R), (D / 2 + MOVING_GAP + self.DOOR_DEPTH, yc + R, zc + R)),
+                    Part(box_between((D / 2 - 0.01, yc - R, zc - R),
+                                     (D / 2 + MOVING_GAP + self.DOOR_DEPTH, yc + R, zc + R)),
                          "appliance"),
                     Part(box_between((D / 2 - 0.01, min(yk - 0.035, -W / 2 + 0.03), H - ph),
                                      (D / 2 + 0.04, max(yk + 0.035, W / 2 - 0.03), H)), "plastic")]
@@ -116,9 +120,11 @@ class WashingMachine(PartsFactory):
         opening = _x_lathe([(0.0, -L), (ro, -L), (ro, 0.01), (0.0, 0.01)], (D / 2, yc, zc), 48)
         out = [Part(m3d.Manifold.batch_boolean([body, opening, dcav], m3d.OpType.Subtract), "appliance")]
         # gasket at the mouth, steel drum behind it with three lifters
-        out.append(Part(_x_lathe([(ro - 0.03, -0.06), (ro + 0.001, -0.06), (ro + 0.001, -0.002), (ro - 0.01, -0.002),
+        out.append(Part(_x_lathe([(ro - 0.03, -0.06), (ro + 0.001, -0.06), (ro + 0.001, -0.002),
+                                  (ro - 0.01, -0.002),
                                   (ro - 0.03, -0.02)], (D / 2, yc, zc), 48), "rubber"))
-        drum = _x_lathe([(0.0, -L - 0.001), (ro + 0.001, -L - 0.001), (ro + 0.001, -0.059), (ro - 0.004, -0.059),
+        drum = _x_lathe([(0.0, -L - 0.001), (ro + 0.001, -L - 0.001), (ro + 0.001, -0.059),
+                         (ro - 0.004, -0.059),
                          (ro - 0.004, -L + 0.004), (0.0, -L + 0.004)], (D / 2, yc, zc), 48)
         out.append(Part(drum, "metal"))
         for k in range(3):
@@ -129,11 +135,13 @@ class WashingMachine(PartsFactory):
         out.append(Part(rod((D / 2 + 0.011, yk, zk), (D / 2 + 0.04, yk, zk), 0.025, 32), "metal"))
         for y0, y1, slot in self._panel_items(p):
             h = 0.018 if slot == "screen" else 0.008
-            out.append(Part(box_between((D / 2 - 0.001, y0, zk - h), (D / 2 + (0.002 if slot == "screen" else 0.005), y1, zk + h)),
+            out.append(Part(box_between((D / 2 - 0.001, y0, zk - h),
+                                        (D / 2 + (0.002 if slot == "screen" else 0.005), y1, zk + h)),
                             slot))
         for sx in (-1, 1):  # feet
             for sy in (-1, 1):
-                out.append(Part(cylinder(0.022, fh + OVERLAP, (sx * (D / 2 - 0.05), sy * (W / 2 - 0.05), 0.0), 16),
+                out.append(Part(cylinder(0.022, fh + OVERLAP,
+                                         (sx * (D / 2 - 0.05), sy * (W / 2 - 0.05), 0.0), 16),
                                 "rubber"))
         out += self._door(p)[0] + drawer
         return out
@@ -156,7 +164,8 @@ class WashingMachine(PartsFactory):
                 break
             items.append((pos, pos + 0.02, "plastic"))
             pos += 0.03
-        return [(min(start - s * a, start - s * b), max(start - s * a, start - s * b), slot) for a, b, slot in items]
+        return [(min(start - s * a, start - s * b), max(start - s * a, start - s * b), slot)
+                for a, b, slot in items]
 
     def joints(self, p):
         _, m, (_, slide) = self._drawer(p)

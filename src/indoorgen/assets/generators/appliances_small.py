@@ -59,7 +59,8 @@ class Microwave(PartsFactory):
         parts = window_leaf(x0, x1, y0, y1, z0, z1, border, "door", "plastic")
         if p["handle"] == "bar":
             yh = y1 - 0.025
-            parts.append(Part(pull_bar(x1, (yh, z0 + 0.04), (yh, z1 - 0.04), 0.03, 0.008, 12), "metal", "door"))
+            parts.append(Part(pull_bar(x1, (yh, z0 + 0.04), (yh, z1 - 0.04), 0.03, 0.008, 12), "metal",
+                              "door"))
         return parts, hinge_motion("left", x1, y0, y1, z0, z1, "door")
 
     def _proud(self, p) -> float:
@@ -71,8 +72,10 @@ class Microwave(PartsFactory):
         D, W, H, fh = p["depth"], p["width"], p["height"], p["foot_height"]
         if not detail:
             return [Part(box_between((-D / 2, -W / 2, fh), (D / 2, W / 2, H)), "appliance"),
-                    Part(box_between((D / 2 - 0.01, -W / 2, fh), (D / 2 + self._proud(p), W / 2, H)), "appliance"),
-                    Part(box_between((-D / 2 + 0.03, -W / 2 + 0.03, 0.0), (D / 2 - 0.03, W / 2 - 0.03, fh + OVERLAP)),
+                    Part(box_between((D / 2 - 0.01, -W / 2, fh), (D / 2 + self._proud(p), W / 2, H)),
+                         "appliance"),
+                    Part(box_between((-D / 2 + 0.03, -W / 2 + 0.03, 0.0),
+                                     (D / 2 - 0.03, W / 2 - 0.03, fh + OVERLAP)),
                          "rubber")]
         cx0, cx1, cy0, cy1, cz0, cz1 = self._cavity(p)
         r = min(p["corner_radius"], 0.3 * (H - fh))
@@ -84,7 +87,8 @@ class Microwave(PartsFactory):
         out.append(Part(box_between((D / 2 - 0.001, yd, fh + 0.01), (xp, W / 2 - r, H - 0.01)), "plastic"))
         pw = W / 2 - r - yd
         yc = (yd + W / 2 - r) / 2
-        out.append(Part(box_between((xp - 0.001, yc - 0.35 * pw, H - 0.065), (xp + 0.002, yc + 0.35 * pw, H - 0.035)),
+        out.append(Part(box_between((xp - 0.001, yc - 0.35 * pw, H - 0.065),
+                                    (xp + 0.002, yc + 0.35 * pw, H - 0.035)),
                         "screen"))
         if p["controls"] == "keypad":
             ph = H - 0.1 - fh - 0.06
@@ -92,14 +96,16 @@ class Microwave(PartsFactory):
                 for j in range(4):
                     yb = yc + (i - 1) * 0.28 * pw
                     zb = H - 0.09 - (j + 0.5) * ph / 4
-                    out.append(Part(box_between((xp - 0.001, yb - 0.1 * pw, zb - 0.009), (xp + 0.003, yb + 0.1 * pw, zb + 0.009)),
+                    out.append(Part(box_between((xp - 0.001, yb - 0.1 * pw, zb - 0.009),
+                                                (xp + 0.003, yb + 0.1 * pw, zb + 0.009)),
                                     "metal"))
         else:
             for zk in (H - 0.11, H - 0.19):
                 if zk - 0.025 > fh + 0.05:
                     out.append(Part(knob((xp - 0.001, yc, zk), min(0.022, 0.3 * pw), 0.022), "metal"))
         if p["handle"] == "button":
-            out.append(Part(box_between((xp - 0.001, yc - 0.3 * pw, fh + 0.03), (xp + 0.005, yc + 0.3 * pw, fh + 0.06)),
+            out.append(Part(box_between((xp - 0.001, yc - 0.3 * pw, fh + 0.03),
+                                        (xp + 0.005, yc + 0.3 * pw, fh + 0.06)),
                             "metal"))
         # turntable on a hub
         rt = min(cx1 - cx0, cy1 - cy0) / 2 - 0.015
@@ -108,7 +114,8 @@ class Microwave(PartsFactory):
         out.append(Part(cylinder(rt, 0.006, (tc[0], tc[1], cz0 + 0.01), 48), "glass"))
         for sx in (-1, 1):
             for sy in (-1, 1):
-                out.append(Part(cylinder(0.012, fh + OVERLAP, (sx * (D / 2 - 0.04), sy * (W / 2 - 0.04), 0.0), 12),
+                out.append(Part(cylinder(0.012, fh + OVERLAP,
+                                         (sx * (D / 2 - 0.04), sy * (W / 2 - 0.04), 0.0), 12),
                                 "rubber"))
         out += self._door(p)[0]
         return out
@@ -170,22 +177,25 @@ class Monitor(PartsFactory):
         tilt, bg = p["tilt"], p["bulge"]
         panel = (bevel_box((th, W, Hs), (0, 0, zc), min(0.004, th / 3), 1) if detail
                  else box_between((-th / 2, -W / 2, zc - Hs / 2), (th / 2 + 0.001, W / 2, zc + Hs / 2)))
+        ends = ((-th / 2 + 0.001, 0.6 * W, 0.6 * Hs), (-th / 2 - bg, 0.3 * W, 0.35 * Hs))
         hump = m3d.Manifold.hull_points(np.array(
-            [(x, sy * w / 2, zc + sz * h / 2) for x, w, h in ((-th / 2 + 0.001, 0.6 * W, 0.6 * Hs),
-                                                              (-th / 2 - bg, 0.3 * W, 0.35 * Hs))
-             for sy in (-1, 1) for sz in (-1, 1)]))
-        out = [Part(self._tilted(panel, pivot, tilt), "plastic"), Part(self._tilted(hump, pivot, tilt), "plastic")]
-        glass = box_between((th / 2 - 0.002, -W / 2 + bz, zc - Hs / 2 + bz), (th / 2 + 0.001, W / 2 - bz, zc + Hs / 2 - bz))
+            [(x, sy * w / 2, zc + sz * h / 2) for x, w, h in ends for sy in (-1, 1) for sz in (-1, 1)]))
+        out = [Part(self._tilted(panel, pivot, tilt), "plastic"),
+               Part(self._tilted(hump, pivot, tilt), "plastic")]
+        glass = box_between((th / 2 - 0.002, -W / 2 + bz, zc - Hs / 2 + bz),
+                            (th / 2 + 0.001, W / 2 - bz, zc + Hs / 2 - bz))
         if detail:
             out.append(Part(self._tilted(glass, pivot, tilt), "screen"))
         # neck from the base up into the hump
         nw = 0.05
-        out.append(Part(box_between((xn - 0.012, -nw / 2, self.BASE_T - 0.001), (xn + 0.012, nw / 2, zc + 0.03)), "metal"))
+        out.append(Part(box_between((xn - 0.012, -nw / 2, self.BASE_T - 0.001),
+                                    (xn + 0.012, nw / 2, zc + 0.03)), "metal"))
         xb0, xb1 = xn - 0.3 * bd, xn + 0.7 * bd
         style = p["base_style"]
         if style == "rect":
             bw = min(0.3, 0.45 * W)
-            base = (bevel_box((bd, bw, self.BASE_T), ((xb0 + xb1) / 2, 0, self.BASE_T / 2), 0.005, 2) if detail
+            base = (bevel_box((bd, bw, self.BASE_T), ((xb0 + xb1) / 2, 0, self.BASE_T / 2), 0.005,
+                              2) if detail
                     else box((bd, bw, self.BASE_T), ((xb0 + xb1) / 2, 0, self.BASE_T / 2)))
             out.append(Part(base, "metal"))
         elif style == "round":

@@ -69,7 +69,8 @@ def _run_parts(p: dict[str, Any], units: list[Unit], detail: bool, prefix_units:
         joints += js
         surfs += ss
     y0, y1 = units[0].y0, units[-1].y1
-    out.append(Part(box_between((-D / 2, y0 + 0.01, 0.0), (D / 2 - p["toe_kick_depth"], y1 - 0.01, zk + OVERLAP)),
+    out.append(Part(box_between((-D / 2, y0 + 0.01, 0.0),
+                                (D / 2 - p["toe_kick_depth"], y1 - 0.01, zk + OVERLAP)),
                     "wood"))
     return out, joints, surfs
 
@@ -123,7 +124,8 @@ def run_units(p: dict[str, Any]) -> list[Unit]:
     """The units of a run: `n_units` of `unit_width` varied by `width_variation`, centred on
     y = 0, their layouts cycling through the `front_pattern`."""
     n = int(p["n_units"])
-    ws = [p["unit_width"] * (1.0 + p["width_variation"] * WIDTH_WAVE[i % len(WIDTH_WAVE)]) for i in range(n)]
+    wave = [WIDTH_WAVE[i % len(WIDTH_WAVE)] for i in range(n)]
+    ws = [p["unit_width"] * (1.0 + p["width_variation"] * k) for k in wave]
     pattern = PATTERNS[p["front_pattern"]]
     if p["front_pattern"] == "drawers_ends":
         layouts = ["drawers" if i in (0, n - 1) else "doors" for i in range(n)]
@@ -174,7 +176,8 @@ class CountertopRun(PartsFactory):
         out.append(_countertop(p, -D / 2, D / 2 + p["overhang"], y0, y1, detail))
         bh = p["backsplash_height"]
         if bh >= 0.02:
-            out.append(Part(box_between((-D / 2, y0, H - OVERLAP), (-D / 2 + 0.015, y1, H + bh)), "countertop"))
+            out.append(Part(box_between((-D / 2, y0, H - OVERLAP), (-D / 2 + 0.015, y1, H + bh)),
+                            "countertop"))
         return out
 
     def joints(self, p):
@@ -230,7 +233,8 @@ class KitchenIsland(PartsFactory):
         out, _, _ = _run_parts(p, units, detail, True)
         out.append(_countertop(p, x0, x1, y0, y1, detail))
         # the finished back panel on the seating side, floor to countertop
-        out.append(Part(box_between((-D / 2 - 0.018, units[0].y0, 0.0), (-D / 2 + 0.001, units[-1].y1, zc + 0.001)),
+        out.append(Part(box_between((-D / 2 - 0.018, units[0].y0, 0.0),
+                                    (-D / 2 + 0.001, units[-1].y1, zc + 0.001)),
                         "front"))
         if p["end_style"] == "waterfall":
             for ya, yb in ((y0, units[0].y0 + 0.001), (units[-1].y1 - 0.001, y1)):
@@ -253,7 +257,8 @@ class KitchenIsland(PartsFactory):
     def extra_surfaces(self, p):
         units, x0, x1, y0, y1 = self._geometry(p)
         H = p["height"]
-        return [support_rect("top", ((x0 + x1) / 2, (y0 + y1) / 2, H), (x1 - x0) / 2 - 0.02, (y1 - y0) / 2 - 0.02),
+        return [support_rect("top", ((x0 + x1) / 2, (y0 + y1) / 2, H), (x1 - x0) / 2 - 0.02,
+                             (y1 - y0) / 2 - 0.02),
                 *_run_parts(dict(p, toe_kick_depth=0.06), units, False, True)[2]]
 
 
@@ -352,45 +357,51 @@ class KitchenSink(PartsFactory):
         xf = (-D / 2 + bx0) / 2
         return dict(zb=zb, zt=zt, bw=bw, bx0=bx0, bx1=bx1, cav=cav, xf=xf, yf=0.0)
 
-    def _faucet(self, p, L) -> tuple[list[m3d.Manifold], tuple[tuple, tuple]]:
-        """The faucet solids and their bounding box ((x0, y0, z0), (x1, y1, z1))."""
+    def _faucet(self, p, L, solids: bool = True) -> tuple[list[m3d.Manifold], tuple[tuple, tuple]]:
+        """The faucet solids (none unless `solids`: placeholders only need the box) and their
+        bounding box ((x0, y0, z0), (x1, y1, z1))."""
         xf, yf, zt = L["xf"], L["yf"], L["zt"] - 0.001
         fh = p["faucet_height"]
         r = 0.014
         reach = min(max((L["bx0"] + L["bx1"]) / 2 - xf, 0.12), 0.3) * 0.75
-        out = [cylinder(0.03, 0.014, (xf, yf, zt), 24)]
+        out: list[m3d.Manifold] = []
+
+        def add(make) -> None:
+            if solids:
+                out.append(make())
+
+        add(lambda: cylinder(0.03, 0.014, (xf, yf, zt), 24))
         lo, hi = [xf - 0.03, yf - 0.03, zt], [xf + 0.03, yf + 0.03, zt + fh]
         if p["faucet"] == "gooseneck":
             R = reach / 2
             zc = zt + fh - R - r
-            out.append(rod((xf, yf, zt), (xf, yf, zc + 0.001), r, 16))
-            arc = torus(R, r, sections=24, tube_sections=12).rotate((90.0, 0.0, 0.0))
-            arc = arc.trim_by_plane((0.0, 0.0, 1.0), 0.0).translate((xf + R, yf, zc))
-            out.append(arc)
+            add(lambda: rod((xf, yf, zt), (xf, yf, zc + 0.001), r, 16))
+            add(lambda: torus(R, r, sections=24, tube_sections=12).rotate((90.0, 0.0, 0.0))
+                .trim_by_plane((0.0, 0.0, 1.0), 0.0).translate((xf + R, yf, zc)))
             xs = xf + 2 * R
-            out.append(rod((xs, yf, zc - 0.05), (xs, yf, zc + 0.001), r, 16))
-            out.append(cylinder(r * 1.15, 0.02, (xs, yf, zc - 0.06), 16))
+            add(lambda: rod((xs, yf, zc - 0.05), (xs, yf, zc + 0.001), r, 16))
+            add(lambda: cylinder(r * 1.15, 0.02, (xs, yf, zc - 0.06), 16))
             lo[2], hi[0] = zt, xs + r * 1.15
         else:
             zc = zt + fh - r
-            out.append(rod((xf, yf, zt), (xf, yf, zc + r), r, 16))
+            add(lambda: rod((xf, yf, zt), (xf, yf, zc + r), r, 16))
             xs = xf + reach
-            out.append(rod((xf, yf, zc), (xs + r, yf, zc), r, 16))
-            out.append(rod((xs, yf, zc - 0.06), (xs, yf, zc), r, 16))
-            out.append(cylinder(r * 1.15, 0.015, (xs, yf, zc - 0.07), 16))
+            add(lambda: rod((xf, yf, zc), (xs + r, yf, zc), r, 16))
+            add(lambda: rod((xs, yf, zc - 0.06), (xs, yf, zc), r, 16))
+            add(lambda: cylinder(r * 1.15, 0.015, (xs, yf, zc - 0.07), 16))
             hi[0] = xs + r * 1.15
         if p["faucet_handles"] == "lever":
             zl = zt + min(0.08, 0.3 * fh)
-            out.append(rod((xf, yf, zl), (xf, yf + 0.045, zl), 0.013, 16))
-            out.append(rod((xf, yf + 0.04, zl), (xf - 0.035, yf + 0.04, zl + 0.06), 0.005, 8))
+            add(lambda: rod((xf, yf, zl), (xf, yf + 0.045, zl), 0.013, 16))
+            add(lambda: rod((xf, yf + 0.04, zl), (xf - 0.035, yf + 0.04, zl + 0.06), 0.005, 8))
             lo[0] = min(lo[0], xf - 0.04)
             hi[1] = max(hi[1], yf + 0.053)
         else:
             for s in (-1, 1):
                 yh = yf + s * 0.09
-                out.append(cylinder(0.02, 0.045, (xf, yh, zt), 16))
-                out.append(rod((xf - 0.025, yh, zt + 0.04), (xf + 0.025, yh, zt + 0.04), 0.005, 8))
-                out.append(rod((xf, yh - 0.025, zt + 0.04), (xf, yh + 0.025, zt + 0.04), 0.005, 8))
+                add(lambda: cylinder(0.02, 0.045, (xf, yh, zt), 16))
+                add(lambda: rod((xf - 0.025, yh, zt + 0.04), (xf + 0.025, yh, zt + 0.04), 0.005, 8))
+                add(lambda: rod((xf, yh - 0.025, zt + 0.04), (xf, yh + 0.025, zt + 0.04), 0.005, 8))
             lo[1], hi[1] = yf - 0.115, yf + 0.115
         return out, (tuple(lo), tuple(hi))
 
@@ -403,11 +414,12 @@ class KitchenSink(PartsFactory):
         # outer block of the basin, its rim (drop-in) and the countertop's cut-out
         oy0, oy1 = L["cav"][0][0] - w, L["cav"][-1][1] + w
         ox0, ox1 = bx0 - w, bx1 + w
-        faucet, (flo, fhi) = self._faucet(p, L)
+        faucet, (flo, fhi) = self._faucet(p, L, detail)
         if not detail:
             out = [Part(box_between((-D / 2, -W / 2, zb), (D / 2, W / 2, zt)), "countertop"),
                    Part(box_between((ox0 - (0 if drop else self.RIM), oy0 - (0 if drop else self.RIM), 0.0),
-                                    (ox1 + (0 if drop else self.RIM), oy1 + (0 if drop else self.RIM), zb + 0.001)),
+                                    (ox1 + (0 if drop else self.RIM), oy1 + (0 if drop else self.RIM),
+                                     zb + 0.001)),
                         "metal"),
                    Part(box_between(flo, fhi), "metal")]
             if drop:
@@ -419,7 +431,8 @@ class KitchenSink(PartsFactory):
             block = rounded_rect_prism(ox0, ox1, oy0, oy1, 0.0, zt - 0.001, rc + w)
             rim = rounded_rect_prism(ox0 - self.RIM, ox1 + self.RIM, oy0 - self.RIM, oy1 + self.RIM,
                                      zt - 0.001, zt + 0.006, rc + w + self.RIM)
-            hole = rounded_rect_prism(ox0 + 0.001, ox1 - 0.001, oy0 + 0.001, oy1 - 0.001, zb - 0.01, zt + 0.01, rc + w)
+            hole = rounded_rect_prism(ox0 + 0.001, ox1 - 0.001, oy0 + 0.001, oy1 - 0.001, zb - 0.01,
+                                      zt + 0.01, rc + w)
             basin = m3d.Manifold.batch_boolean([block, rim], m3d.OpType.Add)
         else:
             R = self.RIM
@@ -447,6 +460,6 @@ class KitchenSink(PartsFactory):
         R = self.RIM + 0.005 if p["mount"] == "drop_in" else 0.005
         top = sg.box(-D / 2 + 0.01, -W / 2 + 0.01, D / 2 - 0.01, W / 2 - 0.01)
         top = top.difference(sg.box(ox0 - R, oy0 - R, ox1 + R, oy1 + R))
-        _, (flo, fhi) = self._faucet(p, L)
+        _, (flo, fhi) = self._faucet(p, L, False)
         top = top.difference(sg.box(flo[0] - 0.005, flo[1] - 0.005, fhi[0] + 0.005, fhi[1] + 0.005))
         return [support_polygon("top", (0, 0, L["zt"]), top)]
