@@ -193,11 +193,11 @@ def thick_polyline(center: Sequence[Sequence[float]], thickness: float) -> np.nd
 def profile_slab(outline_xz: np.ndarray, y0: float, y1: float) -> m3d.Manifold:
     """A 2D outline in the XZ plane (side view) extruded across Y from y0 to y1."""
     pts = np.asarray(outline_xz, float)
-    area = 0.5 * float(np.dot(pts[:, 0], np.roll(pts[:, 1], -1)) - np.dot(pts[:, 1],
-                                                                          np.roll(pts[:, 0], -1)))
+    x, z = pts[:, 0], pts[:, 1]
+    area = 0.5 * float(np.dot(x, np.roll(z, -1)) - np.dot(z, np.roll(x, -1)))
     cs = m3d.CrossSection([pts], m3d.FillRule.Positive if area > 0 else m3d.FillRule.Negative)
-    return m3d.Manifold.extrude(cs,
-                                float(y1 - y0)).rotate((90.0, 0.0, 0.0)).translate((0.0, float(y1), 0.0))
+    slab = m3d.Manifold.extrude(cs, float(y1 - y0))  # along +Z; turn it to run along -Y
+    return slab.rotate((90.0, 0.0, 0.0)).translate((0.0, float(y1), 0.0))
 
 
 def shear_points(points: np.ndarray, z0: float, tilt_deg: float) -> np.ndarray:
@@ -207,13 +207,32 @@ def shear_points(points: np.ndarray, z0: float, tilt_deg: float) -> np.ndarray:
     return pts
 
 
+def bevel_points(extents: Sequence[float], center: Sequence[float], radius: float,
+                 segments: int = 2) -> np.ndarray:
+    """The points whose convex hull `parts.bevel_box` is (the same formula), so that the
+    bounding box of a transformed bevelled box is found without building it."""
+    ext = np.asarray(extents, float)
+    r = float(min(radius, 0.49 * ext.min()))
+    signs = np.array([(sx, sy, sz) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+    if r <= 1e-5:
+        return np.asarray(center, float) + signs * ext / 2
+    seg = max(1, segments)
+    phi, th = np.meshgrid(np.arange(seg + 1) * (math.pi / 2) / seg, np.arange(seg + 1) * (math.pi / 2) / seg,
+                          indexing="ij")
+    dirs = np.unique(np.round(np.c_[(np.sin(phi) * np.cos(th)).ravel(), (np.sin(phi) * np.sin(th)).ravel(),
+                                    np.cos(phi).ravel()], 12), axis=0)
+    pts = signs[:, None, :] * ((ext / 2 - r)[None, None, :] + r * dirs[None, :, :])
+    return pts.reshape(-1, 3) + np.asarray(center, float)
+
+
 def soft_sheared(extents: Sequence[float], center: Sequence[float], radius: float, z0: float,
-                 tilt_deg: float, detail: bool) -> m3d.Manifold:
+                 tilt_deg: float, detail: bool, segments: int = 2) -> m3d.Manifold:
     """A bevelled box leaning back by `tilt_deg` about z0 (an upholstered back), or for a
     placeholder the box around it (a sheared plain box would reach further than its rounded
     corners do, so its bounding box would not match)."""
-    solid = shear_back(bevel_box(extents, center, radius, 2), z0, tilt_deg)
-    return solid if detail else aabb_box([solid])
+    if detail:
+        return shear_back(bevel_box(extents, center, radius, segments), z0, tilt_deg)
+    return points_box(shear_points(bevel_points(extents, center, radius, segments), z0, tilt_deg), 0.0)
 
 
 def shear_back(solid: m3d.Manifold, z0: float, tilt_deg: float) -> m3d.Manifold:
@@ -559,7 +578,7 @@ class UpholsteredChair(PartsFactory):
         out = [Part(soft((sd, sw, st), (0, 0, sh - st / 2), min(cr, st / 3)), "upholstery")]
         ztop = sh + bh
         back_ctr = (-sd / 2 + bt / 2, 0, (z0 + ztop) / 2)
-        back = []
+        back = []  # (extents, centre, radius, segments) of the back's pieces
         if p["back_style"] == "channel":
             n = int(p["n_channels"])
             cw = sw / n
@@ -567,23 +586,20 @@ class UpholsteredChair(PartsFactory):
                 yc = -sw / 2 + (i + 0.5) * cw
                 w = cw + (0.008 if 0 < i < n - 1 else 0.004)
                 yc += 0.002 if i == 0 else -0.002 if i == n - 1 else 0.0
-                back.append(bevel_box((bt, w, ztop - z0), (back_ctr[0], yc, back_ctr[2]),
-                                      0.45 * min(bt, cw), 3))
+                back.append(((bt, w, ztop - z0), (back_ctr[0], yc, back_ctr[2]), 0.45 * min(bt, cw), 3))
         else:
-            back.append(bevel_box((bt, sw, ztop - z0), back_ctr, min(cr * 1.5, bt / 2.5), 2))
+            back.append(((bt, sw, ztop - z0), back_ctr, min(cr * 1.5, bt / 2.5), 2))
+        wings = []
         if p["back_style"] == "wing":
             zw0 = sh + 0.3 * bh
-            for s in (-1, 1):
-                back.append(bevel_box((0.24, 0.07, ztop - zw0), (-sd / 2 + 0.12, s * (sw / 2 - 0.035),
-                                                                 (zw0 + ztop) / 2), min(cr, 0.03), 2))
-        back = [shear_back(b, z0, tilt) for b in back]
+            wings = [((0.24, 0.07, ztop - zw0), (-sd / 2 + 0.12, s * (sw / 2 - 0.035), (zw0 + ztop) / 2),
+                      min(cr, 0.03), 2) for s in (-1, 1)]
         if detail:
-            out += [Part(b, "upholstery") for b in back]
-        else:  # boxes around the leaning back (and wings): see `soft_sheared`
-            out.append(Part(aabb_box(back[:len(back) - 2] if p["back_style"] == "wing" else back),
-                            "upholstery"))
-            out += [Part(aabb_box([b]), "upholstery") for b in back[len(back) - 2:]
-                    if p["back_style"] == "wing"]
+            out += [Part(soft_sheared(*b[:3], z0, tilt, True, b[3]), "upholstery") for b in back + wings]
+        else:  # boxes around the leaning back and each wing: see `soft_sheared`
+            pts = np.vstack([bevel_points(*b) for b in back])
+            out.append(Part(points_box(shear_points(pts, z0, tilt), 0.0), "upholstery"))
+            out += [Part(soft_sheared(*b[:3], z0, tilt, False, b[3]), "upholstery") for b in wings]
         arms = p["arms"]
         za = sh + self.ARM_H
         if arms == "padded":
@@ -654,6 +670,8 @@ class OfficeChair(PartsFactory):
         return dict(tip=z_tip, hub0=z_hub0, hub1=z_hub1, seat0=z_seat0, mech0=z_mech0, gas=z_gas)
 
     def _base(self, p, detail) -> list[Part]:
+        """Hub, five arms with their casters, gas spring and its shroud (placeholder: a box per
+        arm with its caster, one cylinder for spring and shroud)."""
         L = self._levels(p)
         cr, R = p["caster_radius"], p["base_radius"]
         n = 16 if detail else 8
@@ -661,59 +679,58 @@ class OfficeChair(PartsFactory):
                              n * 2, circumscribed=not detail), "plastic")]
         for i in range(5):
             th = math.pi + 2 * math.pi * i / 5
-            d, t = np.array([math.cos(th), math.sin(th), 0.0]), np.array([-math.sin(th), math.cos(th),
-                                                                          0.0])
-            arm_pts = []
-            for dist, hw, za, zb in ((0.03, 0.026, L["hub0"], L["hub1"]),
-                                     (R + 0.02, 0.018, L["tip"], L["tip"] + 0.03)):
-                for sy in (-1, 1):
-                    for z in (za, zb):
-                        arm_pts.append(d * dist + t * sy * hw + (0, 0, z))
-            arm_pts = np.array(arm_pts)
-            out.append(Part(m3d.Manifold.hull_points(arm_pts) if detail else points_box(arm_pts, 0.0),
-                            "plastic"))
-            # caster: a twin wheel on a radial axle, its hood and a swivel stem
-            c, sc = d * (R + 0.02), d * R
-            if detail:
-                wheel = cylinder(cr, 0.045, (0, 0, -0.0225), 16).rotate((90.0, 0.0, 0.0)).rotate(
-                    (0.0, 0.0, math.degrees(th) + 90.0)).translate((float(c[0]), float(c[1]), cr))
-                hood = box((0.05, 1.76 * cr, cr + 0.012), (0, 0, 0)).rotate(
-                    (0.0, 0.0, math.degrees(th))).translate((float(c[0]), float(c[1]), 1.5 * cr + 0.006))
-                stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr),
-                                16)
-                out += [Part(wheel, "plastic"), Part(hood, "metal"), Part(stem, "metal")]
-            else:  # the box around them, from their corners
-                pts = []
+            d = np.array([math.cos(th), math.sin(th), 0.0])
+            t = np.array([-math.sin(th), math.cos(th), 0.0])
+            arm = np.array([d * dist + t * sy * hw + (0, 0, z)
+                            for dist, hw, zs in ((0.03, 0.026, (L["hub0"], L["hub1"])),
+                                                 (R + 0.02, 0.018, (L["tip"], L["tip"] + 0.03)))
+                            for sy in (-1, 1) for z in zs])
+            c, sc = d * (R + 0.02), d * R  # wheel centre, swivel stem
+            if not detail:  # the box around arm, wheel, hood and stem, from their corners
+                pts = [arm]
                 for ht, hd, zs in ((cr, 0.0225, (0.0, 2 * cr)), (0.88 * cr, 0.025, (cr, 2 * cr + 0.012))):
-                    pts += [c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd,
-                                                                                       hd) for z in zs]
-                pts += [sc + (a, b, z) for a in (-0.008, 0.008) for b in (-0.008, 0.008)
-                        for z in (2 * cr, L["tip"] + OVERLAP)]
-                out.append(Part(points_box(np.array(pts), 0.0), "plastic"))
+                    pts.append([c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd, hd)
+                                for z in zs])
+                pts.append([sc + (a, b, z) for a in (-0.008, 0.008) for b in (-0.008, 0.008)
+                            for z in (2 * cr, L["tip"] + OVERLAP)])
+                out.append(Part(points_box(np.vstack(pts), 0.0), "plastic"))
+                continue
+            # a twin wheel on a radial axle, its hood and a swivel stem
+            deg = math.degrees(th)
+            wheel = cylinder(cr, 0.045, (0, 0, -0.0225), 16).rotate((90.0, 0.0, 0.0)).rotate(
+                (0.0, 0.0, deg + 90.0)).translate((float(c[0]), float(c[1]), cr))
+            hood = box((0.05, 1.76 * cr, cr + 0.012), (0, 0, 0)).rotate((0.0, 0.0, deg)).translate(
+                (float(c[0]), float(c[1]), 1.5 * cr + 0.006))
+            stem = cylinder(0.008, L["tip"] + OVERLAP - 2 * cr, (float(sc[0]), float(sc[1]), 2 * cr), 16)
+            out += [Part(m3d.Manifold.hull_points(arm), "plastic"), Part(wheel, "plastic"),
+                    Part(hood, "metal"), Part(stem, "metal")]
         zc0 = L["hub1"]
-        out.append(Part(cylinder(0.028, L["gas"] - zc0 + OVERLAP, (0, 0, zc0 - OVERLAP), n * 2,
-                                 circumscribed=not detail), "metal"))
         hs = 0.6 * (L["gas"] - zc0)
-        out.append(Part(cylinder(0.042, hs, (0, 0, zc0 - OVERLAP), n * 2,
-                                 radius_top=0.034 if detail else None, circumscribed=not detail),
-                        "plastic"))
+        if detail:
+            out.append(Part(cylinder(0.028, L["gas"] - zc0 + OVERLAP, (0, 0, zc0 - OVERLAP), 32), "metal"))
+            out.append(Part(cylinder(0.042, hs, (0, 0, zc0 - OVERLAP), 32, radius_top=0.034), "plastic"))
+        else:
+            out.append(Part(cylinder(0.042, L["gas"] - zc0 + OVERLAP, (0, 0, zc0 - OVERLAP), 16,
+                                     circumscribed=True), "plastic"))
         return out
 
     def _seat(self, p, detail) -> list[Part]:
+        """Everything on the swivel: piston, mechanism, seat, spine, back, headrest, armrests
+        (placeholder: one box for piston and mechanism, one per armrest, one for the headrest)."""
         L = self._levels(p)
         sd, sw, sh, st = p["seat_depth"], p["seat_width"], p["seat_height"], p["seat_thickness"]
         bh, tilt = p["back_height"], p["back_tilt"]
         x0 = self.SEAT_X
-        n = 16 if detail else 8
         link = "seat"
-
-        def soft(ext, ctr, r):
-            return bevel_box(ext, ctr, r, 2) if detail else box(ext, ctr)
-
-        out = [Part(cylinder(0.016, L["mech0"] - L["gas"] - 0.002 + OVERLAP, (0, 0, L["gas"] + 0.002), n,
-                             circumscribed=not detail), "metal", link),
-               _board((-0.11, -0.1, L["mech0"]), (0.12, 0.1, L["seat0"] + OVERLAP), "metal", link),
-               Part(soft((sd, sw, st), (x0, 0, sh - st / 2), min(0.03, st / 3)), "fabric", link)]
+        seat = ((sd, sw, st), (x0, 0, sh - st / 2), min(0.03, st / 3))
+        mech = ((-0.11, -0.1, L["mech0"]), (0.12, 0.1, L["seat0"] + OVERLAP))
+        if detail:
+            piston = cylinder(0.016, L["mech0"] - L["gas"] - 0.002 + OVERLAP, (0, 0, L["gas"] + 0.002), 16)
+            out = [Part(piston, "metal", link),
+                   _board(*mech, "metal", link), Part(bevel_box(*seat, 2), "fabric", link)]
+        else:
+            out = [_board((-0.11, -0.1, L["gas"] + 0.002), mech[1], "metal", link),
+                   Part(box(*seat[:2]), "fabric", link)]
         # spine: under the seat to the back, then up behind the back panel
         xb = x0 - sd / 2  # seat rear
         zs0 = L["seat0"] - 0.04
@@ -721,35 +738,44 @@ class OfficeChair(PartsFactory):
         zb0, zb1 = sh + 0.05, sh + 0.05 + bh
         spine = box_between((xb - 0.065, -0.03, zs0), (xb - 0.022, 0.03, zb0 + 0.5 * bh))
         out.append(Part(shear_back(spine, sh, tilt), "metal", link))
-        bw = 0.95 * sw
-        soft_back = []
+        bw, zm = 0.95 * sw, (zb0 + zb1) / 2
         if p["back_style"] == "padded":
-            back = []
-            soft_back.append(((0.06, bw, bh), (xb, 0, (zb0 + zb1) / 2)))
+            back = soft_sheared((0.06, bw, bh), (xb, 0, zm), 0.025, sh, tilt, detail)
+            out.append(Part(back, "fabric", link))
+        elif detail:
+            ring = frame(bw, bh, 0.03, 0.035, (xb - 0.0125, 0, zm))
+            mesh = box((0.008, bw - 0.06 + 2 * OVERLAP, bh - 0.06 + 2 * OVERLAP), (xb - 0.0125, 0, zm))
+            out += [Part(shear_back(ring, sh, tilt), "plastic", link),
+                    Part(shear_back(mesh, sh, tilt), "fabric", link)]
         else:
-            ring = frame(bw, bh, 0.03, 0.035, (xb - 0.0125, 0, (zb0 + zb1) / 2))
-            mesh = box((0.008, bw - 0.06 + 2 * OVERLAP, bh - 0.06 + 2 * OVERLAP),
-                       (xb - 0.0125, 0, (zb0 + zb1) / 2))
-            back = ([Part(ring, "plastic", link), Part(mesh, "fabric", link)] if detail else
-                    [Part(box((0.035, bw, bh), (xb - 0.0125, 0, (zb0 + zb1) / 2)), "plastic", link)])
+            back = shear_back(box((0.035, bw, bh), (xb - 0.0125, 0, zm)), sh, tilt)
+            out.append(Part(back, "plastic", link))
         if p["headrest"]:
-            back.append(_board((xb - 0.03, -0.02, zb1 - 0.05), (xb - 0.002, 0.02, zb1 + 0.1), "metal",
-                               link))
-            soft_back.append(((0.06, 0.28, 0.13), (xb - 0.01, 0, zb1 + 0.08 + 0.065 - OVERLAP)))
-        out += [Part(shear_back(b.solid, sh, tilt), b.slot, link) for b in back]
-        out += [Part(soft_sheared(ext, ctr, 0.025, sh, tilt, detail), "fabric", link)
-                for ext, ctr in soft_back]
+            post = ((xb - 0.03, -0.02, zb1 - 0.05), (xb - 0.002, 0.02, zb1 + 0.1))
+            pad = ((0.06, 0.28, 0.13), (xb - 0.01, 0, zb1 + 0.08 + 0.065 - OVERLAP), 0.025)
+            if detail:
+                out += [Part(shear_back(box_between(*post), sh, tilt), "metal", link),
+                        Part(soft_sheared(*pad, sh, tilt, True), "fabric", link)]
+            else:
+                corners = np.array([(x, y, z) for x in (post[0][0], post[1][0]) for y in (-0.02, 0.02)
+                                    for z in (post[0][2], post[1][2])])
+                pts = np.vstack([corners, bevel_points(*pad)])
+                out.append(Part(points_box(shear_points(pts, sh, tilt), 0.0), "fabric", link))
         if p["armrests"]:
             za = sh + 0.2
             for s in (-1, 1):
                 ya = s * (sw / 2 + 0.02)
-                out.append(_board((-0.07, min(s * 0.06, s * (sw / 2 + 0.035)), zs0 + 0.005),
-                                  (0.01, max(s * 0.06, s * (sw / 2 + 0.035)),
-                                   L["seat0"] - 0.01), "metal", link))
-                out.append(_board((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP),
-                                  "plastic", link))
-                out.append(Part(soft((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012), "plastic",
-                                link))
+                y0, y1 = sorted((s * 0.06, s * (sw / 2 + 0.035)))
+                arm = [((-0.07, y0, zs0 + 0.005), (0.01, y1, L["seat0"] - 0.01)),   # bracket
+                       ((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP)),  # post
+                       ((-0.145, ya - 0.0375, za), (0.105, ya + 0.0375, za + 0.03))]  # pad
+                if detail:
+                    out += [_board(*arm[0], "metal", link), _board(*arm[1], "plastic", link),
+                            Part(bevel_box((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012, 2), "plastic",
+                                 link)]
+                else:
+                    lo, hi = np.min([c[0] for c in arm], axis=0), np.max([c[1] for c in arm], axis=0)
+                    out.append(_board(lo, hi, "plastic", link))
         return out
 
     def parts(self, p, detail):

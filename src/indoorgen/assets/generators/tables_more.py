@@ -178,8 +178,8 @@ class DiningTableOval(PartsFactory):
         else:
             lt = p["leg_thickness"]
             ka, kb = 0.75 * a, b - 0.25 * a
-            spots = [(sx * ka * math.sqrt(0.5), sy * kb * math.sqrt(0.5)) for sx in (-1,
-                                                                                     1) for sy in (-1, 1)]
+            c = math.sqrt(0.5)
+            spots = [(sx * ka * c, sy * kb * c) for sx in (-1, 1) for sy in (-1, 1)]
             for x, y in spots:
                 out.append(Part(cylinder(lt / 2 * (p["taper"] if detail else 1.0), zu, (x, y, 0.0),
                                          16 if detail else 8, radius_top=lt / 2, circumscribed=not detail),
