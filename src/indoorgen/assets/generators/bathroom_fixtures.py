@@ -80,12 +80,6 @@ def _offset_levels(levels: Sequence[tuple[float, m3d.CrossSection]], d: float, d
     return [(z - dz, cs.offset(d, m3d.JoinType.Round, 2.0, 24)) for z, cs in levels]
 
 
-def _box_around(solids: Sequence[m3d.Manifold]) -> m3d.Manifold:
-    """The axis-aligned box around solids (a placeholder piece that encloses them exactly)."""
-    bbs = np.array([s.bounding_box() for s in solids if not s.is_empty()], float)
-    return box_between(bbs[:, :3].min(axis=0), bbs[:, 3:].max(axis=0))
-
-
 def _ring(outer: m3d.CrossSection, inner: m3d.CrossSection) -> sg.Polygon:
     """The polygon between two nested outlines (a rim)."""
     return _polygon(outer).difference(_polygon(inner))
@@ -117,15 +111,23 @@ def _circle(n: int, offset: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     return np.cos(a), np.sin(a)
 
 
+_AXES = np.eye(3)
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Cross product of two 3-vectors (np.cross is slow on single vectors)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
 def _rod_points(p0, p1, r: float) -> np.ndarray:
     """The vertices of a rod: two polygons turned half a step, so that an axis-aligned rod has
     flat faces (not edges) facing the other two axes and rests on a facet."""
     p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
-    d = (p1 - p0) / np.linalg.norm(p1 - p0)
-    e = np.eye(3)[int(np.argmin(np.abs(d)))]
-    u = np.cross(d, e)
-    u /= np.linalg.norm(u)
-    v = np.cross(d, u)
+    d = (p1 - p0) / math.sqrt(float(np.dot(p1 - p0, p1 - p0)))
+    k = int(np.argmin(np.abs(d)))
+    u = _cross(d, _AXES[k])
+    u /= math.sqrt(float(np.dot(u, u)))
+    v = _cross(d, u)
     n = _rod_sections(r)
     c, s = _circle(n, np.pi / n)
     ring = r * (c[:, None] * u + s[:, None] * v)
@@ -647,8 +649,9 @@ class Vanity(PartsFactory):
         g = self._g(p)
         W, D, H, tt, zb = g["W"], g["D"], g["H"], g["tt"], g["zb"]
         dividers = [y1 + BOARD / 2 for (_, y1, _), _n in zip(g["bays"][:-1], g["bays"][1:])]
+        # (the placeholder's block of carcass and fronts stands for the boards)
         out = [Part(s.solid, "wood") for s in carcass(D, W, zb, H - tt + OV, BOARD, back=0.006,
-                                                      dividers=dividers, top=False)]
+                                                      dividers=dividers, top=False)] if detail else []
         top = box_between((-D / 2, -W / 2, H - tt), (D / 2 + g["oh"], W / 2, H))
         cuts = []
         for b in self._basins(p, g):
@@ -671,7 +674,7 @@ class Vanity(PartsFactory):
             out.append(Part(box_between((-D / 2, -W / 2, H - OV), (-D / 2 + g["bs"], W / 2, H + 0.1)),
                             "countertop"))
         _, fixed = self._cells(p, g)
-        for y0, y1, z0, z1 in fixed:
+        for y0, y1, z0, z1 in (fixed if detail else ()):
             out.append(Part(box_between((D / 2 - OV, y0 - OV, z0 + 0.002),
                                         (D / 2 + GAP + 0.018, y1 + OV, z1 - 0.002)), "front"))
         if detail:
@@ -1207,10 +1210,13 @@ class Toilet(PartsFactory):
                                        (0.06, block)])
         if p["foot"] == "skirted":
             return _hull_stack(bowl + [(0.0, self._foot(p, g))])
-        z_b = H - 0.2
+        # exposed: the bowl narrows to a waist, which flares out again to the foot
+        z_b, z_w = H - 0.2, 0.1
         foot = self._foot(p, g)
-        return (_hull_stack(bowl + [(z_b, _ellipse(0.7 * a, 0.75 * b, (x_e - 0.1 * a, 0.0)))])
-                + _hull_stack([(0.0, foot), (z_b + 0.03, foot.offset(-0.02, m3d.JoinType.Round, 2.0, 24))]))
+        fx0, fy0, fx1, fy1 = _polygon(foot).bounds
+        waist = _rrect(0.8 * (fx1 - fx0), 0.16, 0.05, ((fx0 + fx1) / 2 + 0.05 * (fx1 - fx0), 0.0))
+        return (_hull_stack(bowl + [(z_b, _ellipse(0.7 * a, 0.75 * b, (x_e - 0.1 * a, 0.0))), (z_w, waist)])
+                + _hull_stack([(0.0, foot), (0.015, foot), (z_w + 0.01, waist)]))
 
     def _cavity(self, g) -> list[tuple[float, m3d.CrossSection]]:
         H, a, b, rw, x_e = g["H"], g["a"], g["b"], g["rw"], g["x_e"]
@@ -1257,8 +1263,13 @@ class Toilet(PartsFactory):
         x0 = 0.0 if g["style"] != "one_piece" else g["cd"] - 0.01
         x0 = min(x0, g["x_foot"]) if not g["wall"] else 0.0
         out.append(Part(box_between((x0, -b, 0.0), (x_e + a, b, H)), "porcelain"))
-        if not g["wall"]:
-            out.append(Part(_box_around([c.solid for c in self._cistern(p, g)]), "porcelain"))
+        if g["style"] == "two_piece":  # the cistern and its overhanging lid
+            e = 0.008
+            out.append(Part(box_between((0.0, -g["cw"] / 2 - e, H - 0.01),
+                                        (g["cd"] + e, g["cw"] / 2 + e, H + g["ch"] + 0.025)), "porcelain"))
+        elif g["style"] == "one_piece":  # the cistern tapers up from its widest foot
+            out.append(Part(box_between((0.0, -g["cw"] / 2, H - 0.12), (g["cd"] + 0.05, g["cw"] / 2, H + g["ch"])),
+                            "porcelain"))
         out.append(Part(box_between((g["x_hl"], -b - 0.005, H), (g["front"], b + 0.005, g["z_l"] + g["tl"])),
                         "plastic"))
         if self._flush(p, g):
