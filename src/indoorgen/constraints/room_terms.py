@@ -169,8 +169,7 @@ class RoomView:
         return self.cached(o, "lines", f)
 
     def exterior_length(self, o: str) -> float:
-        ring = self.contour(self.level(o)).exterior.buffer(1e-6)
-        return self.polygon(o).exterior.intersection(ring).length
+        return self.polygon(o).exterior.intersection(self.contour(self.level(o)).exterior).length
 
     def longest_exterior_wall(self, o: str) -> float:
         ring = self.contour(self.level(o)).exterior.buffer(1e-6)
@@ -178,12 +177,11 @@ class RoomView:
                     if ring.contains(sg.LineString(s))), default=0.0)
 
     def exterior_corners(self, o: str) -> float:
-        c = self.contour(self.level(o))
-        pts = _corners(c)
-        if not len(pts):
-            return 0.0
-        ring = self.polygon(o).exterior
-        return float(sum(1 for p in pts if ring.distance(sg.Point(p)) < 1e-6))
+        """Corners of the storey outline that belong to o: each corner belongs to the room
+        holding the point just inside it (so every corner counts for exactly one room)."""
+        probes = _corner_probes(self.contour(self.level(o)))
+        poly = self.polygon(o)
+        return float(sum(1 for p in probes if poly.contains(sg.Point(p))))
 
     def narrow_area(self, o: str, width: float) -> float:
         """Area lost by opening the room with a `width` square (erode, then buffer back): the
@@ -195,8 +193,11 @@ class RoomView:
 
     def shared_wall(self, a: str, b: str) -> tuple[float, np.ndarray | None]:
         """The longest straight wall a and b share: (length, midpoint)."""
-        common = self.polygon(a).exterior.intersection(self.polygon(b).exterior.buffer(1e-6))
+        common = self.polygon(a).exterior.intersection(self.polygon(b).exterior)
         lines = [g for g in getattr(common, "geoms", [common]) if g.length > 0]
+        if lines:
+            lines = list(getattr(shapely.line_merge(shapely.union_all(lines)), "geoms",
+                                 [shapely.line_merge(shapely.union_all(lines))]))
         best, mid = 0.0, None
         for ln in lines:
             for s in _segments_of_line(ln):
@@ -246,6 +247,15 @@ class RoomView:
         direct = float(np.abs(pts[-1] - pts[0]).sum())
         return direct / walk if walk > 1e-9 else 1.0
 
+    def storey_area(self, s: str) -> float:
+        return self.contour(self.storey_level(s)).area
+
+    def outline_length(self, s: str) -> float:
+        return self.contour(self.storey_level(s)).exterior.length
+
+    def outline_corners(self, s: str) -> float:
+        return float(len(_corners(self.contour(self.storey_level(s)))))
+
     def stair_coverage(self, o: str) -> float:
         sp = self.stair_polygon()
         if sp is None or sp.area <= 0:
@@ -276,6 +286,24 @@ def _segments_of_line(line) -> list[np.ndarray]:
             out.append(np.array([start, pts[i]]))
             start = pts[i]
     out.append(np.array([start, pts[-1]]))
+    return out
+
+
+def _corner_probes(poly: sg.Polygon) -> list[np.ndarray]:
+    """For each corner of the outline, a point 1 mm inside it along the corner's bisector."""
+    pts = np.asarray(poly.exterior.coords)[:-1]
+    out = []
+    for i, p in enumerate(pts):
+        a, b = pts[i] - pts[i - 1], pts[(i + 1) % len(pts)] - pts[i]
+        turn = abs(math.atan2(a[0] * b[1] - a[1] * b[0], float(np.dot(a, b))))
+        if turn <= math.radians(CORNER_TURN_DEG):
+            continue
+        bis = -a / np.linalg.norm(a) + b / np.linalg.norm(b)
+        bis = bis / max(np.linalg.norm(bis), 1e-12)
+        probe = p + 1e-3 * bis
+        if not poly.contains(sg.Point(probe)):
+            probe = p - 1e-3 * bis
+        out.append(probe)
     return out
 
 
@@ -332,12 +360,19 @@ class RoomTerm(GeometricTerm):
         "stair_iou": lambda v, o: [STAIR_PLACEHOLDER],
     }
 
+    #: measures that never change while a plan is solved (nothing to watch)
+    _CONSTANT = frozenset({"ideal_area", "min_area", "storey_area", "outline_length",
+                           "outline_corners"})
+
     def __init__(self, objs: ObjSet, measure: str, *args):
         super().__init__(objs)
         self.measure, self.args = measure, args
 
     def compute(self, ev, env):
-        (s,) = self.members(ev, env)
+        if self.measure in self._CONSTANT:
+            s = ev.get(self.children[0], env)
+        else:
+            (s,) = self.members(ev, env)
         view = ev.view
         fn = getattr(view, self.measure)
         dep = self._DEPENDS.get(self.measure)
@@ -378,6 +413,11 @@ path_directness = _term("path_directness",
 stair_coverage = _term("stair_coverage", "Share of the staircase placeholder inside the room.")
 stair_iou = _term("stair_iou", "Intersection over union of the room and the staircase "
                                "placeholder.")
+
+
+storey_area = _term("storey_area", "Floor area of a storey (m^2): its outline's area.")
+outline_length = _term("outline_length", "Length of a storey's outline (m): all its exterior walls.")
+outline_corners = _term("outline_corners", "Corners of a storey's outline.")
 
 
 def narrow_area(room: ObjSet, width: float) -> Scalar:
@@ -430,4 +470,5 @@ __all__ = ["RoomView", "STOREY", "STAIR_PLACEHOLDER", "MIN_DOOR_WALL", "rooms_of
            "room_area", "min_area", "ideal_area", "aspect_ratio", "convexity", "wall_count",
            "exterior_length", "longest_exterior_wall", "exterior_corners", "missing_doors",
            "path_directness", "stair_coverage", "stair_iou", "narrow_area", "wall_lines",
+           "storey_area", "outline_length", "outline_corners",
            "ratio_mismatch", "RoomTerm", "WallLines", "OnStorey", "RatioMismatch"]

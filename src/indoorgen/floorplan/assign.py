@@ -49,7 +49,7 @@ def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
 
 def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
            labels: np.ndarray, stair: np.ndarray | None, ideal: dict[str, float],
-           needs_exterior: set[str], budget: int = 3000) -> dict[str, int] | None:
+           needs_exterior: set[str], budget: int = 400) -> dict[str, int] | None:
     """Map every room of `graph` to a distinct space of `labels`, or None if the search finds
     no assignment within `budget` expansions. `needs_exterior` names rooms beyond the exterior
     types that need an outside wall (the entrance)."""
@@ -59,32 +59,38 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         return None
     area, in_stair, cells, ext, door = space_stats(grid, labels, stair)
     k_door = int(math.ceil(MIN_DOOR_WALL / grid.size - 1e-9))
+    door_ok = [set() for _ in range(n_spaces)]
+    for (a, b), n in door.items():
+        if n >= k_door:
+            door_ok[a].add(b)
+            door_ok[b].add(a)
     order = [r for r in rooms if room_type_of(r) == STAIRCASE]
     order += [r for r in nx.bfs_tree(graph, entry) if r not in order]
     order += [r for r in rooms if r not in order]
-
-    def candidates(r: str, used: set[int], placed: dict[str, int]) -> list[int]:
+    # the spaces each room could take at all (type, exterior, staircase, area), best first
+    fits: dict[str, list[int]] = {}
+    for r in rooms:
         t = room_type_of(r)
         out = []
         for s in range(n_spaces):
-            if s in used:
-                continue
             if t == STAIRCASE:
                 if in_stair[s] == 0:
                     continue
-            elif in_stair[s] > 0.3 * cells[s]:
+            elif in_stair[s] > 0.3 * cells[s] or area[s] < MIN_AREA[t]:
                 continue
             if (t in EXTERIOR_TYPES or r in needs_exterior) and ext[s] < k_door:
                 continue
-            if t != STAIRCASE and area[s] < MIN_AREA[t]:
-                continue
-            if any(door.get((min(s, placed[nb]), max(s, placed[nb])), 0) < k_door
-                   for nb in graph.neighbors(r) if nb in placed):
-                continue
+            if len(door_ok[s]) < graph.degree(r):
+                continue  # too few door-wide neighbours for the room's graph neighbours
             out.append(s)
         noise = rng.normal(0.0, 0.25, len(out))
         cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise)]
-        return [s for _, s in sorted(zip(cost, out))]
+        fits[r] = [s for _, s in sorted(zip(cost, out))]
+    nbrs = {r: list(graph.neighbors(r)) for r in rooms}
+
+    def candidates(r: str, used: set[int], placed: dict[str, int]) -> list[int]:
+        placed_nb = [placed[nb] for nb in nbrs[r] if nb in placed]
+        return [s for s in fits[r] if s not in used and all(p in door_ok[s] for p in placed_nb)]
 
     expansions = 0
     placed: dict[str, int] = {}
@@ -100,7 +106,9 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
             if expansions > budget:
                 return False
             placed[r], _ = s, used.add(s)
-            if dfs(i + 1):
+            # forward check: every unplaced neighbour must keep some space next to this one
+            if all(any(x not in used and x in door_ok[s] for x in fits[nb])
+                   for nb in nbrs[r] if nb not in placed) and dfs(i + 1):
                 return True
             del placed[r]
             used.discard(s)

@@ -1,16 +1,15 @@
 """`indoorgen floorplan`: generate (or read) a home's floorplan and write `plan.png`,
-`floorplan.json` and `architecture.usda` into a directory, atomically."""
+`floorplan.json` and `architecture.usda` into a directory, atomically (a temporary sibling
+directory renamed into place when complete)."""
 from __future__ import annotations
 
 import json
-import os
-import shutil
 import sys
-import tempfile
 import time
 from pathlib import Path
 
-from ..errors import ConfigError, OutputError
+from ..errors import ConfigError
+from ..outputs import atomic_dir, check_writable
 
 
 def add_floorplan_parser(subparsers) -> None:
@@ -48,16 +47,6 @@ def _read_contour(path: str) -> list:
     return data
 
 
-def _check_out(out: Path) -> None:
-    if out.exists() and not out.is_dir():
-        raise OutputError(f"--out {out} exists and is not a directory")
-    probe = out.resolve().parent
-    while not probe.exists():
-        probe = probe.parent
-    if not os.access(probe, os.W_OK | os.X_OK):
-        raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
-
-
 def run_floorplan(args) -> int:
     """The command: validate arguments, generate or read, solidify, write, report one line."""
     from .draw import draw_floorplan
@@ -78,7 +67,7 @@ def run_floorplan(args) -> int:
     if args.area is not None and not args.area > 0:
         raise ConfigError(f"--area must be a positive number of m^2, got {args.area}")
     out = Path(args.out or f"floorplan_{args.seed}")
-    _check_out(out)
+    check_writable(out)
     cfg = FloorplanConfig(floors=args.floors, rooms=args.rooms, area=args.area,
                           contour=_read_contour(args.contour) if args.contour else None)
     if args.steps is not None:
@@ -91,27 +80,11 @@ def run_floorplan(args) -> int:
         pitch = storey_pitch(cfg)
     walls = WallThickness(cfg.interior_wall, cfg.exterior_wall)
     arch = solidify(fp, walls, pitch)
-    parent = out.resolve().parent
-    parent.mkdir(parents=True, exist_ok=True)
-    try:
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=parent))
-    except OSError as e:
-        raise OutputError(f"cannot write to {out}: {e.strerror}") from None
-    try:
+    with atomic_dir(out) as tmp:
         write_floorplan(fp, tmp / "floorplan.json")
         draw_floorplan(fp, tmp / "plan.png", walls,
                        title=f"floorplan  seed {args.seed}" if not args.plan else args.plan)
         write_architecture_usd(arch, tmp / "architecture.usda")
-        if out.exists():
-            old = out.with_name(f".{out.name}.old-{os.getpid()}")
-            out.rename(old)
-            tmp.rename(out)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            tmp.rename(out)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
     if not args.quiet:
         n_rooms = sum(len(s.rooms) for s in fp.storeys)
         msg = f"{out}: {len(fp.storeys)} storey(s), {n_rooms} rooms"

@@ -31,7 +31,7 @@ from .plan import Floorplan, RoomSpec, Storey
 from .rooms import MIN_AREA, TYPICAL_AREA, parse_room_counts, room_type_of
 from .rules import room_problems
 from .solve import AnnealConfig, AnnealStats, anneal
-from .subdivide import merge, mondrian
+from .subdivide import grow_hub, merge, mondrian
 from .view import GridPlan
 
 log = logging.getLogger(__name__)
@@ -89,26 +89,28 @@ def _typical(names: list[str]) -> float:
     return math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
 
 
-def _place_stair(rng: np.random.Generator, grid, storeys_needed: int
-                 ) -> tuple[int, int, int, int] | None:
-    """A random placeholder rectangle of full cells, one cell clear of the outline."""
-    h, w = STAIR_CELLS if rng.random() < 0.5 else STAIR_CELLS[::-1]
+def _place_stair(rng: np.random.Generator, grid) -> tuple[int, int, int, int] | None:
+    """A random placeholder rectangle of full cells, each side either on the outline's bounding
+    box or at least MIN_SIDE cells (a room's width) clear of it, with a cell of full cells
+    around it inside the outline."""
+    from .subdivide import MIN_SIDE
     full = grid.full
     ny, nx = full.shape
-    cands = []
-    for y in range(1, ny - h):
-        for x in range(1, nx - w):
-            if full[y - 1:y + h + 1, x - 1:x + w + 1].all():
-                cands.append((y, x, y + h, x + w))
-    if not cands:
-        h, w = w, h
-        for y in range(1, ny - h):
-            for x in range(1, nx - w):
-                if full[y - 1:y + h + 1, x - 1:x + w + 1].all():
+    shapes = [STAIR_CELLS, STAIR_CELLS[::-1]]
+    if rng.random() < 0.5:
+        shapes.reverse()
+    for h, w in shapes:
+        cands = []
+        for y in range(0, ny - h + 1):
+            for x in range(0, nx - w + 1):
+                gaps = (y, x, ny - y - h, nx - x - w)
+                if any(0 < g < MIN_SIDE for g in gaps):
+                    continue
+                if full[max(0, y - 1):y + h + 1, max(0, x - 1):x + w + 1].all():
                     cands.append((y, x, y + h, x + w))
-    if not cands:
-        return None
-    return cands[int(rng.integers(len(cands)))]
+        if cands:
+            return cands[int(rng.integers(len(cands)))]
+    return None
 
 
 class _Failed(Exception):
@@ -126,10 +128,15 @@ def _init_storey(seed: int, attempt: int, plan: GridPlan, k: int) -> bool:
     need_ext = {plan.graph.entrance} if k == 0 else set()
     for t in range(STOREY_ATTEMPTS):
         rng = stream(seed, "floorplan", "init", attempt, k, t)
-        spaces = mondrian(rng, grid, int(math.ceil(1.5 * len(names))))
+        spaces = mondrian(rng, grid, int(math.ceil(1.5 * len(names))), fixed=plan.stair_rect)
         if spaces.max() + 1 < len(names):
             continue
+        if rng.random() < 0.6:
+            spaces = grow_hub(rng, spaces, max(d for _, d in g.degree), len(names),
+                              keep_apart=stair)
         spaces = merge(rng, spaces, len(names))
+        if spaces.max() + 1 < len(names):
+            continue
         mapping = assign(rng, g, entry, grid, spaces, stair, ideal, need_ext)
         if mapping is None:
             continue
@@ -166,7 +173,7 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
     grid0 = make_grid(ground)
     rect, stair_poly = None, None
     if hg.n_storeys > 1:
-        rect = _place_stair(rng, grid0, hg.n_storeys)
+        rect = _place_stair(rng, grid0)
         if rect is None:
             raise InvalidGeometryError(
                 "the outline has no room for a 2 x 5 m staircase; give a larger area or contour")
@@ -240,6 +247,7 @@ def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floo
     t2 = time.perf_counter()
     fp = to_floorplan(plan, cfg, stream(seed, "floorplan", "openings"))
     fp.info.update({"seed": seed, "config": cfg.to_json(), "graph": plan.graph.to_json(),
+                    "contours": [g.contour for g in plan.grids],
                     "anneal": stats.to_json(), "stats": stats,
                     "timings_s": {"init": round(t1 - t0, 4), "anneal": round(t2 - t1, 4),
                                   "openings": round(time.perf_counter() - t2, 4)}})

@@ -51,8 +51,10 @@ UPPER_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
 }
 #: Probability that a sibling of a hallway is moved from the common parent onto a hallway.
 HALLWAY_SHARE = 0.6
-#: Graphs with more rooms than this on one storey are resampled (unless counts are fixed).
-MAX_ROOMS_PER_STOREY = 13
+#: Graphs with more rooms than this on one storey (staircase included), or a room with more
+#: neighbours than MAX_DEGREE, are resampled unless counts are fixed: they rarely fit a plan.
+MAX_ROOMS_PER_STOREY = 12
+MAX_DEGREE = 6
 #: Where a room of each type may be attached when a count has to be raised, best first.
 PARENTS: dict[str, tuple[str, ...]] = {
     LIVING: (LIVING,), DINING: (LIVING,), KITCHEN: (DINING, LIVING), BEDROOM: (HALLWAY, LIVING),
@@ -238,7 +240,8 @@ def privacy_problems(home: nx.Graph) -> list[str]:
 
 def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[str]:
     """Why `hg` is not an acceptable home graph (empty if it is): planarity, connectivity,
-    a living room and a bathroom per storey (unless counts are fixed), privacy, counts."""
+    a living room on every storey, a bathroom on every storey (unless counts are fixed), a
+    bathroom and a kitchen in the home (unless counts set them to 0), privacy, counts."""
     out = []
     home = hg.home()
     if not nx.is_connected(home):
@@ -250,8 +253,9 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
             out.append(f"storey {k} has no living room")
         if counts is None and not any(room_type_of(n) == BATHROOM for n in g.nodes):
             out.append(f"storey {k} has no bathroom")
-    if not any(room_type_of(n) == BATHROOM for n in home.nodes) and (counts or {}).get(BATHROOM, 1):
-        out.append("the home has no bathroom")
+    for t in (BATHROOM, KITCHEN):
+        if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
+            out.append(f"the home has no {t}")
     out += privacy_problems(home)
     if counts:
         have = hg.type_counts()
@@ -315,7 +319,8 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
         if counts and not _repair_counts(rng, trees, counts):
             last = ["cannot attach the requested rooms"]
             continue
-        if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY for g, _ in trees):
+        if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY - (n_storeys > 1)
+                              or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
             continue
         hg = _finish(rng, trees)
         last = graph_problems(hg, counts or None)
@@ -362,7 +367,7 @@ def graph_from_spec(spec: dict) -> HomeGraph:
     if entrance not in storeys[0]:
         raise ConfigError(f"entrance {entrance!r} is not a room on the ground floor")
     hg = HomeGraph(storeys, entrance, stairs if len(storeys) > 1 else [])
-    problems = [p for p in graph_problems(hg, {}) if "no bathroom" not in p]
+    problems = [p for p in graph_problems(hg, {}) if not p.startswith("the home has no")]
     if problems:
         raise ConfigError(f"the given room graph is not usable: {'; '.join(problems[:3])}")
     return hg

@@ -135,25 +135,25 @@ def trace(mask: np.ndarray) -> np.ndarray | None:
     Corners are the lattice points whose 2x2 cell neighbourhood holds 1 or 3 inside cells. On a
     simple rectilinear outline, the corners on each grid line, sorted along it, pair up into
     edges; walking the alternating horizontal and vertical edges visits every corner once."""
-    m = pad(mask)
+    m = pad(mask).view(np.int8)
     a, b, c, d = m[:-1, :-1], m[:-1, 1:], m[1:, :-1], m[1:, 1:]
-    if ((a & d & ~b & ~c) | (b & c & ~a & ~d)).any():
-        return None
-    s = a.view(np.int8) + b.view(np.int8) + c.view(np.int8) + d.view(np.int8)
-    cy, cx = np.nonzero((s == 1) | (s == 3))
+    s = a + b + c + d
+    if ((s == 2) & (a == d)).any():
+        return None  # two cells touching only at a corner
+    cy, cx = np.nonzero(s & 1)
     n = len(cx)
     if n < 4:
         return None
-    # horizontal partners: sort by (y, x) and pair consecutive corners
-    oh = np.lexsort((cx, cy))
+    # horizontal partners: sort by (y, x) and pair consecutive corners; vertical likewise
     h = np.empty(n, np.int64)
-    h[oh[0::2]], h[oh[1::2]] = oh[1::2], oh[0::2]
+    h[0::2], h[1::2] = np.arange(1, n, 2), np.arange(0, n, 2)  # nonzero is already (y, x) order
     ov = np.lexsort((cy, cx))
     v = np.empty(n, np.int64)
     v[ov[0::2]], v[ov[1::2]] = ov[1::2], ov[0::2]
-    order = [0]
     hl, vl = h.tolist(), v.tolist()
-    i, horiz = hl[0], False
+    # corner 0 is the lowest-leftmost, a convex corner; going up first walks clockwise
+    order = [0]
+    i, horiz = vl[0], True
     while i != 0:
         order.append(i)
         i = hl[i] if horiz else vl[i]
@@ -162,11 +162,8 @@ def trace(mask: np.ndarray) -> np.ndarray | None:
             return None
     if len(order) != n:
         return None
-    xy = np.stack([cx[order], cy[order]], axis=1).astype(float)
-    x, y = xy[:, 0], xy[:, 1]
-    if np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y) < 0:
-        xy = xy[::-1]
-    return xy
+    order.reverse()
+    return np.stack([cx[order], cy[order]], axis=1).astype(float)
 
 
 def room_polygon(grid: Grid, mask: np.ndarray) -> sg.Polygon | None:

@@ -143,7 +143,7 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
 
 def _cut(segs, p, u, c, half):
     """Remove the interval around point c (projected on the line p + t u) from segments."""
-    if abs(np.cross(u, c - p)) > 1e-6:
+    if abs(_cross(u, c - p)) > 1e-6:
         return segs
     t = float(np.dot(c - p, u))
     out = []
@@ -190,3 +190,8 @@ def place_stairs(plan: GridPlan) -> list[StairSpec]:
 
 def _pt(p) -> tuple[float, float]:
     return (round(float(p[0]), 6), round(float(p[1]), 6))
+
+
+def _cross(a, b) -> float:
+    """z of the cross product of two 2D vectors."""
+    return float(a[0] * b[1] - a[1] * b[0])

@@ -202,11 +202,11 @@ def stair_profile(rise: float, run: float, max_riser: float = 0.19,
     """Side profile (s along the flight, z up) of a straight flight climbing `rise` over `run`:
     a sawtooth of risers and treads over a sloped underside; returns (points, risers)."""
     n = max(2, int(math.ceil(rise / max_riser - 1e-9)))
-    hr, td = rise / n, run / (n - 1)
+    hr, td = rise / n, run / n  # the top tread lies flush with the upper floor
     pts = [(0.0, 0.0)]
-    for i in range(n - 1):
+    for i in range(n):
         pts += [(i * td, (i + 1) * hr), ((i + 1) * td, (i + 1) * hr)]
-    pts += [(run, rise), (run, rise - thickness), (min(0.5, run / 4), 0.0)]
+    pts += [(run, rise - thickness), (min(0.5, run / 4), 0.0)]
     return np.asarray(pts[::-1]), n  # counter-clockwise
 
 
@@ -264,10 +264,10 @@ def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, wid
     length = np.linalg.norm(d, axis=1)
     best = None
     for i in range(len(pts)):
-        if length[i] < 1e-9 or abs(np.cross(d[i] / length[i], frame.u)) > 1e-3:
+        if length[i] < 1e-9 or abs(_cross(d[i] / length[i], frame.u)) > 1e-3:
             continue
         s = float(np.dot(face - pts[i], d[i]) / length[i])
-        dist = abs(float(np.cross(d[i] / length[i], face - pts[i])))
+        dist = abs(float(_cross(d[i] / length[i], face - pts[i])))
         if -width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05:
             if best is None or dist < best[2]:
                 off = float(np.clip(s, min(width / 2, length[i] / 2),
@@ -419,3 +419,8 @@ def room_geometries(arch: Architecture) -> dict[str, RoomGeometry]:
     """Per-room `RoomGeometry` objects of a home, keyed by room name (what `solver.State` and
     the validator take)."""
     return dict(arch.rooms)
+
+
+def _cross(a, b) -> float:
+    """z of the cross product of two 2D vectors."""
+    return float(a[0] * b[1] - a[1] * b[0])

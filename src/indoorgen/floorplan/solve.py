@@ -195,8 +195,10 @@ def propose_stair(plan: GridPlan, rng: np.random.Generator
 
 
 def apply(plan: GridPlan, changes: list[Change]) -> tuple[list[Change], set[str]]:
-    """Write `changes` into the plan; returns the undo changes and the rooms touched."""
+    """Write `changes` into the plan; returns the undo changes and the rooms touched. The undo
+    list ends with a snapshot of the view's caches, so a revert needs no recomputation."""
     undo, touched = [], set()
+    snapshot = plan.snapshot()
     for k, rows, cols, new in changes:
         old = plan.labels[k][rows, cols].copy()
         undo.append((k, rows, cols, old))
@@ -204,6 +206,7 @@ def apply(plan: GridPlan, changes: list[Change]) -> tuple[list[Change], set[str]
         touched |= {names[v] for v in np.unique(np.concatenate([old, new])).tolist() if v >= 0}
         plan.labels[k][rows, cols] = new
     plan.invalidate(touched)
+    undo.append(snapshot)
     return undo, touched
 
 
@@ -258,7 +261,7 @@ def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
             plan.stair_rect = rect
         undo, touched = apply(plan, changes or [])
         if rect is not None:
-            touched |= {n for n in plan.graph.stairs}
+            touched |= set(plan.graph.stairs)
             plan.invalidate(touched)
         if not valid(plan, touched):
             stats.invalid += 1
@@ -291,11 +294,12 @@ def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
     return stats
 
 
-def _revert(plan: GridPlan, undo: list[Change], rect, touched: set[str], ev: Evaluator | None,
+def _revert(plan: GridPlan, undo: list, rect, touched: set[str], ev: Evaluator | None,
             changed: list[str] | None = None) -> None:
-    for k, rows, cols, old in reversed(undo):
+    *cells, snapshot = undo
+    for k, rows, cols, old in reversed(cells):
         plan.labels[k][rows, cols] = old
     plan.stair_rect = rect
-    plan.invalidate(touched)
+    plan.restore(snapshot)
     if ev is not None:
         ev.notify(changed or sorted(touched))

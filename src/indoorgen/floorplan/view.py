@@ -95,6 +95,7 @@ class GridPlan(RoomView):
         self.index: dict[str, tuple[int, int]] = {
             n: (k, i) for k, names in enumerate(self.names) for i, n in enumerate(names)}
         self.stair_rect = stair_rect  # (iy0, ix0, iy1, ix1) in cells, end exclusive
+        self._stair_mask = None
         self._paths = {}
         for k, g in enumerate(graph.storeys):
             entry = graph.storey_entry(k)
@@ -151,12 +152,22 @@ class GridPlan(RoomView):
         return sg.box(x0, y0, x1, y1)
 
     def stair_mask(self) -> np.ndarray | None:
+        """Cells of the staircase placeholder (read only; shared while it does not move)."""
         if self.stair_rect is None:
             return None
-        iy0, ix0, iy1, ix1 = self.stair_rect
-        m = np.zeros(self.grids[0].shape, bool)
-        m[iy0:iy1, ix0:ix1] = True
-        return m
+        if self._stair_mask is None or self._stair_mask[0] != self.stair_rect:
+            iy0, ix0, iy1, ix1 = self.stair_rect
+            m = np.zeros(self.grids[0].shape, bool)
+            m[iy0:iy1, ix0:ix1] = True
+            self._stair_mask = (self.stair_rect, m)
+        return self._stair_mask[1]
+
+    def snapshot(self) -> dict:
+        """The measure caches, to `restore` after undoing a move."""
+        return {r: dict(d) for r, d in self._cache.items()}
+
+    def restore(self, snapshot: dict) -> None:
+        self._cache = snapshot
 
     def entry_point(self, level: int) -> np.ndarray:
         if level > 0 or not self.graph.storeys:
@@ -346,6 +357,8 @@ class GridPlan(RoomView):
         return self.cached(o, "ext_runs", f)
 
     def longest_exterior_wall(self, o: str) -> float:
+        """Longest straight exterior wall along the grid (a bevel's diagonal or arc does not
+        count: doors and windows go on grid walls)."""
         runs = self.exterior_runs(o)
         return runs[0][0] if runs else 0.0
 

@@ -1,0 +1,151 @@
+"""Independent checks of a `Floorplan` (generated or predefined), from its polygons alone.
+
+`floorplan_problems` lists every rule a plan breaks (an empty list means it is sound): rooms of
+a storey overlap or leave gaps in the outline; a room is unreachable from the front door
+through doors, open connections and stairs; a door is narrower than 0.8 m or not in a wall its
+two rooms share; a room other than a closet is narrower than 1.2 m; bathroom privacy is broken;
+required rooms are missing; a flight is not held by staircase rooms on both its storeys.
+"""
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+import shapely
+import shapely.geometry as sg
+
+from .graph import privacy_problems
+from .plan import Floorplan
+from .rooms import BATHROOM, KITCHEN, LIVING, MIN_WIDTH, NARROW_OK_TYPES, STAIRCASE
+from .solidify import stair_rooms
+
+MIN_DOOR_WIDTH = 0.8
+
+
+def narrow_area(poly: sg.Polygon, width: float) -> float:
+    """Area of the parts of `poly` narrower than `width` (erode by width/2, buffer back)."""
+    r = width / 2 - 1e-4
+    opened = poly.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
+    return max(0.0, poly.area - opened.intersection(poly).area)
+
+
+def connection_graph(fp: Floorplan) -> nx.Graph:
+    """Rooms joined by doors, open connections and stairs."""
+    g = nx.Graph()
+    for s in fp.storeys:
+        g.add_nodes_from(r.name for r in s.rooms)
+        g.add_edges_from(tuple(d.rooms) for d in s.doors + s.openings)
+    for st in fp.stairs:
+        a, b = stair_rooms(fp, st)
+        if a and b:
+            g.add_edge(a, b)
+    return g
+
+
+def _door_problems(fp: Floorplan) -> list[str]:
+    out = []
+    for s in fp.storeys:
+        for d in s.doors + s.openings:
+            if d.width < MIN_DOOR_WIDTH - 1e-9:
+                out.append(f"{d.name} is {d.width:.2f} m wide (< {MIN_DOOR_WIDTH} m)")
+            try:
+                a, b = s.room(d.rooms[0]).shape(), s.room(d.rooms[1]).shape()
+            except KeyError:
+                out.append(f"{d.name} names a room not on storey {s.level}")
+                continue
+            shared = a.exterior.intersection(b.exterior.buffer(1e-6))
+            c = sg.Point(d.center)
+            if shared.is_empty or shared.distance(c) > 1e-3:
+                out.append(f"{d.name} is not on a wall shared by {d.rooms[0]} and {d.rooms[1]}")
+                continue
+            # the door's whole width must lie on the shared wall
+            seg = _segment_through(shared, np.asarray(d.center, float))
+            if seg is None or seg < d.width - 1e-6:
+                out.append(f"{d.name} ({d.width:.2f} m) does not fit on the wall shared by "
+                           f"{d.rooms[0]} and {d.rooms[1]}")
+    return out
+
+
+def _segment_through(lines, c: np.ndarray) -> float | None:
+    """Length of the portion of `lines` straddling point c symmetrically (twice the distance
+    from c to the nearer end of the straight piece containing it)."""
+    for ln in getattr(lines, "geoms", [lines]):
+        pts = np.asarray(getattr(ln, "coords", []))
+        for a, b in zip(pts[:-1], pts[1:]):
+            d = b - a
+            L = float(np.hypot(*d))
+            if L < 1e-9:
+                continue
+            s = float(np.dot(c - a, d) / L)
+            if -1e-6 <= s <= L + 1e-6 and abs(float(_cross(d / L, c - a))) < 1e-3:
+                return 2 * min(s, L - s)
+    return None
+
+
+def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
+                       counts: dict[str, int] | None = None) -> list[str]:
+    """Everything wrong with `fp` (see module docstring). `contours` are the storeys' intended
+    outlines (checked to equal the union of their rooms); `counts` the required room counts."""
+    out = []
+    for s in fp.storeys:
+        shapes = [r.shape() for r in s.rooms]
+        for r, p in zip(s.rooms, shapes):
+            if not p.is_valid or p.area <= 0:
+                out.append(f"{r.name} is not a valid polygon")
+        total = sum(p.area for p in shapes)
+        union = shapely.union_all(shapes)
+        if total - union.area > 1e-4:
+            out.append(f"rooms on storey {s.level} overlap by {total - union.area:.4f} m^2")
+        if contours is not None:
+            c = contours[s.level]
+            gap = c.symmetric_difference(union).area
+            if gap > 1e-4:
+                out.append(f"rooms on storey {s.level} differ from its outline by {gap:.4f} m^2")
+        for r, p in zip(s.rooms, shapes):
+            if r.type not in NARROW_OK_TYPES and narrow_area(p, MIN_WIDTH) > 0.01:
+                out.append(f"{r.name} is narrower than {MIN_WIDTH} m somewhere "
+                           f"({narrow_area(p, MIN_WIDTH):.2f} m^2)")
+    out += _door_problems(fp)
+    g = connection_graph(fp)
+    if fp.entrance is None:
+        out.append("the plan has no entrance")
+    else:
+        reach = nx.node_connected_component(g, fp.entrance.room)
+        for n in g.nodes:
+            if n not in reach:
+                out.append(f"{n} cannot be reached from the entrance")
+    out += privacy_problems(g)
+    types = [r.type for _, r in fp.rooms()]
+    if counts:
+        for t, n in counts.items():
+            if types.count(t) != n:
+                out.append(f"{types.count(t)} {t} rooms, required {n}")
+    for s in fp.storeys:
+        if not any(r.type == LIVING for r in s.rooms):
+            out.append(f"storey {s.level} has no living room")
+    for t in (BATHROOM, KITCHEN):
+        if t not in types and (counts or {}).get(t, 1):
+            out.append(f"the home has no {t}")
+    out += _stair_problems(fp)
+    return out
+
+
+def _stair_problems(fp: Floorplan) -> list[str]:
+    out = []
+    n = len(fp.storeys)
+    if n > 1 and len(fp.stairs) != n - 1:
+        out.append(f"{n} storeys but {len(fp.stairs)} flights")
+    for st in fp.stairs:
+        poly = st.shape()
+        for lv in (st.from_level, st.to_level):
+            s = fp.storeys[lv]
+            holders = [r for r in s.rooms if r.shape().intersection(poly).area > 1e-6]
+            if len(holders) != 1 or holders[0].type != STAIRCASE or \
+                    poly.difference(holders[0].shape()).area > 1e-4:
+                out.append(f"flight {st.from_level}->{st.to_level} is not inside one staircase "
+                           f"room on storey {lv}")
+    return out
+
+
+def _cross(a, b) -> float:
+    """z of the cross product of two 2D vectors."""
+    return float(a[0] * b[1] - a[1] * b[0])

@@ -1,0 +1,98 @@
+"""The room-graph grammar: valid graphs, fixed counts, privacy, planarity, user graphs."""
+from __future__ import annotations
+
+import networkx as nx
+import pytest
+
+from indoorgen.errors import ConfigError, UnknownRoomTypeError
+from indoorgen.floorplan.graph import (HomeGraph, graph_from_spec, graph_problems,
+                                       privacy_problems, sample_home_graph)
+from indoorgen.floorplan.rooms import parse_room_counts, room_type_of
+from indoorgen.rng import stream
+
+
+def _sample(seed, floors=1, counts=None):
+    return sample_home_graph(lambda a: stream(seed, "test", a), floors, counts)
+
+
+@pytest.mark.parametrize("floors", [1, 2, 3])
+def test_sampled_graphs_are_valid(floors):
+    for seed in range(25):
+        hg = _sample(seed, floors)
+        assert hg.n_storeys == floors
+        assert graph_problems(hg) == []
+        home = hg.home()
+        assert nx.is_connected(home)
+        assert all(nx.check_planarity(g)[0] for g in hg.storeys)
+        assert hg.entrance in hg.storeys[0]
+        assert room_type_of(hg.entrance) in ("living_room", "hallway")
+        if floors > 1:
+            assert [room_type_of(s) for s in hg.stairs] == ["staircase_room"] * floors
+            assert all(s in g for s, g in zip(hg.stairs, hg.storeys))
+        names = hg.rooms()
+        assert len(names) == len(set(names))
+
+
+def test_same_stream_same_graph():
+    assert _sample(7, 2).to_json() == _sample(7, 2).to_json()
+
+
+@pytest.mark.parametrize("counts, floors", [({"bedroom": 2, "bathroom": 1}, 1),
+                                            ({"bedroom": 4, "bathroom": 2}, 2),
+                                            ({"bedroom": 1, "kitchen": 1, "garage": 1}, 1),
+                                            ({"bedroom": 5, "bathroom": 3, "closet": 2}, 3)])
+def test_fixed_counts_are_met(counts, floors):
+    for seed in range(6):
+        hg = _sample(seed, floors, counts)
+        have = hg.type_counts()
+        for t, n in counts.items():
+            assert have.get(t, 0) == n
+        assert graph_problems(hg, counts) == []
+
+
+def test_privacy_rules():
+    g = nx.Graph([("living_room_0", "bedroom_0"), ("bedroom_0", "bathroom_0"),
+                  ("living_room_0", "bedroom_1")])
+    problems = privacy_problems(g)
+    assert any("bedroom_1 reaches no bathroom" in p for p in problems)
+    g.add_edge("bathroom_0", "living_room_0")  # en-suite opening onto the living room too
+    assert any("bathroom_0 is shared" in p for p in privacy_problems(g))
+    ok = nx.Graph([("living_room_0", "hallway_0"), ("hallway_0", "bedroom_0"),
+                   ("hallway_0", "bedroom_1"), ("hallway_0", "bathroom_0"),
+                   ("bedroom_0", "bathroom_1"), ("bathroom_1", "closet_0")])
+    assert privacy_problems(ok) == []
+
+
+def test_room_counts_parsing_and_errors():
+    assert parse_room_counts("bedroom=2, bathroom=1") == {"bedroom": 2, "bathroom": 1}
+    assert parse_room_counts("living=1,staircase=0") == {"living_room": 1, "staircase_room": 0}
+    with pytest.raises(UnknownRoomTypeError, match="kitchn"):
+        parse_room_counts("kitchn=1")
+    with pytest.raises(ConfigError, match="TYPE=COUNT"):
+        parse_room_counts("bedroom")
+    with pytest.raises(ConfigError, match="whole number"):
+        parse_room_counts("bedroom=two")
+
+
+def test_floors_out_of_range():
+    for n in (0, 4):
+        with pytest.raises(ConfigError, match="--floors"):
+            _sample(0, n)
+
+
+def test_user_graph_round_trips_and_is_checked():
+    hg = _sample(3, 2)
+    again = graph_from_spec(hg.to_json())
+    assert again.to_json() == hg.to_json()
+    with pytest.raises(ConfigError, match="not on storey"):
+        graph_from_spec({"storeys": [{"rooms": ["living_room_0"],
+                                      "edges": [["living_room_0", "bedroom_0"]]}]})
+    k5 = {"storeys": [{"rooms": [f"hallway_{i}" for i in range(5)] + ["living_room_0"],
+                       "edges": [[f"hallway_{i}", f"hallway_{j}"] for i in range(5)
+                                 for j in range(i + 1, 5)] + [["living_room_0", "hallway_0"]]}],
+          "entrance": "living_room_0"}
+    with pytest.raises(ConfigError, match="not planar"):
+        graph_from_spec(k5)
+    assert isinstance(graph_from_spec({"storeys": [{"rooms": ["living_room_0", "bathroom_0"],
+                                                    "edges": [["living_room_0", "bathroom_0"]]}]}),
+                      HomeGraph)
