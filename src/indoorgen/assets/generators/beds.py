@@ -17,7 +17,7 @@ from ...tags import Semantics as S
 from ..base import Param, register
 from ..parts import FRONT_PROUD, DoorJoint, Part, bevel_box, box_between, drawer, solid_union
 from ._common import PartsFactory, make_joint, support_rect
-from .seating_more import aabb_box, rod_between
+from .seating_more import rod_between
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 
@@ -490,14 +490,13 @@ class BunkBed(PartsFactory):
         d = X - x_in
         for y in (ya, yb - sw):
             out.append(Part(_stile(x_in, X, y, sw, run, top), "wood"))
-        rungs = []
-        for z in rung_zs:
-            x = x_in + d / 2 + run * (1 - z / top)
-            rungs.append(rod_between((x, ya + sw / 2, z), (x, yb - sw / 2, z), 0.014, True, 12))
+        xs = x_in + d / 2 + run * (1 - rung_zs / top)  # the rungs' axes, along Y
         if detail:
-            out += [Part(r, "wood") for r in rungs]
+            out += [Part(rod_between((x, ya + sw / 2, z), (x, yb - sw / 2, z), 0.014, True, 12), "wood")
+                    for x, z in zip(xs, rung_zs)]
         else:
-            out.append(Part(aabb_box(rungs), "wood"))
+            out.append(_board((xs.min() - 0.014, ya + sw / 2, rung_zs.min() - 0.014),
+                              (xs.max() + 0.014, yb - sw / 2, rung_zs.max() + 0.014), "wood"))
         return out
 
     def parts(self, p, detail):
