@@ -2,7 +2,7 @@
 mirror cabinets. Each hangs from the wall at its back (-X): its back plate(s) are flat at the
 bounding box's back, and its "back" surface lies on (the first) plate's back face.
 
-Hardware is listed as primitives (see `bathroom_fixtures.Prim`), so the placeholder boxes
+Hardware is listed as primitives (see `bathroom.Prim`), so the placeholder boxes
 come from exact bounds without building any solid.
 """
 from __future__ import annotations
@@ -18,7 +18,7 @@ from ...tags import Subpart
 from ..base import Param, Surface, register
 from ..parts import Front, Part, box_between, cabinet_fronts, carcass
 from ._common import PartsFactory, make_joint, support_rect
-from .bathroom_fixtures import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
+from .bathroom import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
 
 PLATE = 0.012  # thickness of a wall plate or rosette (m)
 TOWEL = 0.01  # thickness of a folded towel's layer (m)
