@@ -35,9 +35,11 @@ def _load_program(spec: str):
 
 def _cmd_generate(args) -> int:
     from .outputs import check_writable
+    from .export import parse_formats
     from .pipeline import GenerateConfig, generate, write_scene_dir
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out)
+    formats = parse_formats(args.formats)
     if args.seed < 0:
         raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
     cfg = GenerateConfig(room_type=args.room, size=tuple(args.size) if args.size else None,
@@ -50,7 +52,7 @@ def _cmd_generate(args) -> int:
             raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
                               f"{args.polygon!r}") from None
     gen = generate(args.seed, cfg, progress=not args.quiet and sys.stderr.isatty())
-    write_scene_dir(gen, out, usd_ext=args.usd_format)
+    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats)
     if not args.quiet:
         rep = gen.report
         viol = sum(r["n_violated"] for r in rep["rooms"].values())
@@ -129,6 +131,8 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")
     g.add_argument("--out", help="output directory (default ./scene_SEED)")
     g.add_argument("--usd-format", choices=["usda", "usdc"], default="usda")
+    g.add_argument("--formats", default="usd,urdf,mjcf",
+                   help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
     g.add_argument("--check", action="store_true",
                    help="verify incremental constraint evaluation against full (slow)")
     g.add_argument("-q", "--quiet", action="store_true")
@@ -149,6 +153,7 @@ def build_parser() -> argparse.ArgumentParser:
     sh.add_argument("--cols", type=int, default=10)
     sh.add_argument("--only", nargs="+", metavar="NAME", help="draw only these generators")
     sh.set_defaults(func=_cmd_assets_sheet)
+    importlib.import_module("indoorgen.export.command").add_export_parsers(sub)
     return p
 
 

@@ -182,18 +182,20 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     return Generated(sc, geometry, state, cache, results, report)
 
 
-def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usda") -> Path:
-    """Write scene.json, scene.usda, plan.png and report.json to `out`, atomically: everything
-    goes to a temporary sibling directory that is renamed into place when complete."""
-    from .export.usd import write_usd
+def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
+                    formats=None) -> Path:
+    """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
+    mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
+    directory that is renamed into place when complete."""
+    from .export import write_formats
+    from .export.bundle import bundle_from_generated
     from .render.plan import draw_plan
 
     out = Path(out)
     with atomic_dir(out) as tmp:
         t0 = time.perf_counter()
         (tmp / "scene.json").write_text(gen.scene.dumps())
-        write_usd(gen.scene, tmp / f"scene.{usd_ext}", object_assets=gen.full_assets(),
-                  rooms=gen.rooms)
+        write_formats(bundle_from_generated(gen), tmp, formats, usd_ext=usd_ext)
         zones = {r: g.door_zones for r, g in gen.rooms.items()}
         draw_plan(gen.scene, gen.footprints(), tmp / "plan.png", door_zones=zones,
                   title=f"{next(iter(gen.scene.rooms.values())).room_type}  seed {gen.scene.seed}")

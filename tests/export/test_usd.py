@@ -128,3 +128,196 @@ def test_sanitize_name():
     assert sanitize_name("table_0") == "table_0"
     assert sanitize_name("cup-0") == "cup_0"
     assert sanitize_name("3 chairs") == "_3_chairs"
+
+
+# --------------------------------------------------------------------------------------------
+# the full exporter on generated rooms
+
+from pathlib import Path  # noqa: E402
+
+from pxr import Sdf, UsdPhysics, UsdSemantics, UsdShade, UsdValidation  # noqa: E402
+
+from indoorgen.export.bundle import make_bundle  # noqa: E402
+from indoorgen.export.textures import TextureStore  # noqa: E402
+from indoorgen.export.usd import write_usd_bundle  # noqa: E402
+
+
+def _validate(stage):
+    """Run every validator of the UsdValidation registry; (validator names, errors)."""
+    reg = UsdValidation.ValidationRegistry()
+    validators = reg.GetOrLoadAllValidators()
+    issues = UsdValidation.ValidationContext(validators).Validate(stage)
+    errors = [e for e in issues if e.GetType() == UsdValidation.ValidationErrorType.Error]
+    return sorted(v.GetMetadata().name for v in validators), errors
+
+
+@pytest.mark.parametrize("room", ["living_room", "dining_room"])
+def test_validators_report_no_errors(exported, room, record_property):
+    bundle, d, _ = exported[room]
+    stage = Usd.Stage.Open(str(d / "scene.usdc"))
+    names, errors = _validate(stage)
+    record_property("validators", names)
+    # the registry's core, geometry, shading, physics, lux and utils validators all ran
+    for v in ("usdValidation:CompositionErrorTest", "usdGeomValidators:StageMetadataChecker",
+              "usdShadeValidators:ShaderSdrCompliance", "usdShadeValidators:NormalMapTextureValidator",
+              "usdPhysicsValidators:RigidBodyChecker", "usdPhysicsValidators:ColliderChecker",
+              "usdLuxValidators:EncapsulationRulesValidator",
+              "usdUtilsValidators:MissingReferenceValidator"):
+        assert v in names
+    assert len(names) >= 25
+    assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
+
+
+@pytest.mark.parametrize("room", ["living_room", "dining_room"])
+def test_every_object_has_attributes_labels_and_physics(exported, room):
+    bundle, d, _ = exported[room]
+    stage = Usd.Stage.Open(str(d / "scene.usdc"))
+    assert stage.GetPrimAtPath("/World/PhysicsScene").IsA(UsdPhysics.Scene)
+    for obj in bundle.objects:
+        prim = stage.GetPrimAtPath(f"/World/Objects/{obj.name}")
+        assert prim.IsValid(), obj.name
+        assert prim.GetAttribute("indoorgen:generator").Get() == obj.generator
+        assert prim.GetAttribute("indoorgen:room").Get() == obj.room
+        assert prim.GetAttribute("indoorgen:parent").Get() == obj.parent
+        assert list(prim.GetAttribute("indoorgen:semantics").Get()) == sorted(obj.tags)
+        labels = UsdSemantics.LabelsAPI(prim, "class").GetLabelsAttr().Get()
+        assert sorted(labels) == sorted(obj.tags)
+        if bundle.assets[obj.name].joints:
+            assert prim.HasAPI(UsdPhysics.ArticulationRootAPI)
+            base = stage.GetPrimAtPath(f"/World/Objects/{obj.name}/base")
+            assert base.HasAPI(UsdPhysics.RigidBodyAPI) and base.HasAPI(UsdPhysics.MassAPI)
+        elif bundle.is_fixed(obj):
+            assert not prim.HasAPI(UsdPhysics.RigidBodyAPI)
+        else:
+            assert prim.HasAPI(UsdPhysics.RigidBodyAPI) and prim.HasAPI(UsdPhysics.MassAPI)
+            assert UsdPhysics.MassAPI(prim).GetMassAttr().Get() > 0
+        # collision on convex pieces (guide purpose), never on the render mesh
+        cols = [p for p in Usd.PrimRange(prim, Usd.TraverseInstanceProxies())
+                if p.HasAPI(UsdPhysics.CollisionAPI)]
+        assert cols, obj.name
+        for c in cols:
+            assert UsdGeom.Imageable(c).GetPurposeAttr().Get() == UsdGeom.Tokens.guide
+            assert UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == "convexHull"
+    for prim in stage.GetPrimAtPath("/World/Architecture").GetChildren():
+        assert prim.GetAttribute("indoorgen:semantics").Get()
+        assert UsdSemantics.LabelsAPI(prim, "class").GetLabelsAttr().Get()
+
+
+@pytest.mark.parametrize("room", ["living_room", "dining_room"])
+def test_every_material_texture_resolves(exported, room):
+    _, d, _ = exported[room]
+    stage = Usd.Stage.Open(str(d / "scene.usdc"))
+    materials = [p for p in stage.Traverse() if p.IsA(UsdShade.Material)]
+    assert materials
+    n_tex = 0
+    for mat in materials:
+        for shader in mat.GetChildren():
+            f = shader.GetAttribute("inputs:file")
+            if not f:
+                continue
+            asset = f.Get()
+            assert not Path(asset.path).is_absolute()
+            assert asset.resolvedPath and Path(asset.resolvedPath).is_file(), asset.path
+            n_tex += 1
+        surf = UsdShade.Material(mat).ComputeSurfaceSource()[0]
+        assert surf and surf.GetIdAttr().Get() == "UsdPreviewSurface"
+    assert n_tex >= 3 * len(materials) - 2
+    # meshes carry faceVarying UVs and normals
+    mesh = next(UsdGeom.Mesh(p) for p in stage.Traverse() if p.IsA(UsdGeom.Mesh)
+                and p.GetPath().pathString.startswith("/World/Objects"))
+    st = UsdGeom.PrimvarsAPI(mesh).GetPrimvar("st")
+    assert st.GetInterpolation() == UsdGeom.Tokens.faceVarying
+    assert len(st.Get()) == 3 * len(mesh.GetFaceVertexCountsAttr().Get())
+    assert mesh.GetNormalsInterpolation() == UsdGeom.Tokens.faceVarying
+
+
+def test_articulations_and_lights(articulated):
+    bundle, d = articulated
+    stage = Usd.Stage.Open(str(d / "scene.usdc"))
+    _, errors = _validate(stage)
+    assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
+    n_joints = 0
+    for obj in bundle.objects:
+        asset = bundle.assets[obj.name]
+        prim = stage.GetPrimAtPath(f"/World/Objects/{obj.name}")
+        assert prim.HasAPI(UsdPhysics.ArticulationRootAPI), obj.name
+        for j in asset.joints:
+            jp = stage.GetPrimAtPath(f"/World/Objects/{obj.name}/joints/{j.name}")
+            kind = UsdPhysics.PrismaticJoint if j.kind == "prismatic" else UsdPhysics.RevoluteJoint
+            assert jp.IsA(kind), (obj.name, j.name)
+            joint = kind(jp)
+            lo, hi = joint.GetLowerLimitAttr().Get(), joint.GetUpperLimitAttr().Get()
+            if j.kind == "revolute":
+                lo, hi = math.radians(lo), math.radians(hi)
+            assert lo == pytest.approx(j.lower, abs=1e-5) and hi == pytest.approx(j.upper, abs=1e-5)
+            body1 = joint.GetBody1Rel().GetTargets()[0]
+            assert stage.GetPrimAtPath(body1).HasAPI(UsdPhysics.RigidBodyAPI)
+            n_joints += 1
+    assert n_joints >= len(bundle.objects)
+
+
+def test_light_fixtures_get_lights(tmp_path):
+    from indoorgen.assets import get_factory
+    scene = Scene(seed=3)
+    for g in ("floor_lamp", "desk_lamp"):
+        f = get_factory(g)
+        p = f.sample_params(np.random.default_rng(0))
+        scene.add_object(SceneObject(f"{g}_0", g, p, 5, Pose((0, 0, 0)), ["lighting"], ""))
+    assets = {n: get_factory(o.generator).create(o.params) for n, o in scene.objects.items()}
+    write_usd_bundle(make_bundle(scene, assets, []), tmp_path / "l.usda",
+                     TextureStore(tmp_path, 0))
+    stage = Usd.Stage.Open(str(tmp_path / "l.usda"))
+    from pxr import UsdLux
+    lights = [p for p in stage.Traverse() if p.HasAPI(UsdLux.LightAPI)]
+    assert len(lights) >= 2
+    emissive = [p for p in stage.Traverse() if p.IsA(UsdShade.Shader) and
+                p.GetAttribute("inputs:emissiveColor")]
+    assert emissive
+
+
+def _books_scene(n: int) -> tuple[Scene, dict]:
+    from indoorgen.assets import get_factory
+    f = get_factory("book")
+    p = f.sample_params(np.random.default_rng(1))
+    scene = Scene(seed=0)
+    for i in range(n):
+        scene.add_object(SceneObject(f"book_{i}", "book", p, 42, Pose((0.05 * i, 0, 0)),
+                                     ["book"], ""))
+    asset = f.create(p)
+    return scene, {n: asset for n in scene.objects}
+
+
+def test_instancing_makes_identical_books_smaller(tmp_path):
+    scene, assets = _books_scene(60)
+    bundle = make_bundle(scene, assets, [])
+    tex = TextureStore(tmp_path, 0)
+    size = {}
+    for ext in ("usdc", "usda"):
+        for mode in (True, False):
+            p = tmp_path / f"{mode}.{ext}"
+            write_usd_bundle(bundle, p, tex, instancing=mode)
+            size[ext, mode] = p.stat().st_size
+    # usdc already shares identical arrays; prototypes still save the per-object prims
+    assert size["usdc", True] < 0.9 * size["usdc", False], size
+    assert size["usda", True] < 0.2 * size["usda", False], size
+    stage = Usd.Stage.Open(str(tmp_path / "True.usdc"))
+    prims = [stage.GetPrimAtPath(f"/World/Objects/book_{i}") for i in range(60)]
+    assert all(p.IsInstance() for p in prims)
+    assert len(stage.GetPrototypes()) == 1
+    _, errors = _validate(stage)
+    assert errors == []
+
+
+def test_usdz_package(tmp_path, tiny):
+    scene, assets, rooms = tiny
+    write_usd(scene, tmp_path / "scene.usdz", object_assets=assets, rooms=rooms,
+              texture_resolution=32)
+    assert (tmp_path / "scene.usdz").read_bytes()[:2] == b"PK"
+    stage = Usd.Stage.Open(str(tmp_path / "scene.usdz"))
+    assert stage.GetPrimAtPath("/World/Objects/table_0").IsValid()
+    files = [a for a in stage.GetRootLayer().GetExternalAssetDependencies()]
+    del files
+    names, errors = _validate(stage)
+    assert errors == []
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+    assert Sdf  # noqa: B018

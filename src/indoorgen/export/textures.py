@@ -127,6 +127,7 @@ class TextureStore:
         paths: dict[str, Path] = {}
         if self.enabled:
             from PIL import Image
+            self.dir.mkdir(parents=True, exist_ok=True)
             for kind, suffix in MAP_SUFFIX.items():
                 arr = getattr(maps, kind)
                 if arr is None:
@@ -141,6 +142,7 @@ class TextureStore:
     def _from_cache(self, ref: MatRef):
         meta = self._cache / f"{ref.key}.json"
         try:
+            self.dir.mkdir(parents=True, exist_ok=True)
             d = json.loads(meta.read_text())
             info = MaterialInfo(**{**d, "mean_color": tuple(d["mean_color"])})
             paths = {}
@@ -149,10 +151,7 @@ class TextureStore:
                 if kind == "metallic" and not info.has_metallic:
                     continue
                 dst = self.dir / src.name
-                try:
-                    os.link(src, dst)
-                except OSError:
-                    shutil.copyfile(src, dst)
+                shutil.copyfile(src, dst)
                 paths[kind] = dst
             return paths, info
         except (OSError, ValueError, TypeError, KeyError):

@@ -1,0 +1,72 @@
+"""Shared fixtures of the export tests: generated rooms and their exports (built once per
+session: a generation takes several seconds) and a hand-built scene of articulated objects."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from indoorgen import generate
+from indoorgen.assets import get_factory
+from indoorgen.export import write_formats
+from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
+from indoorgen.floorplan.room import rectangle
+from indoorgen.pipeline import GenerateConfig
+from indoorgen.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
+
+#: texture size used by the tests (small: baking is not what they check)
+TEX = 128
+ALL = "usd,urdf,mjcf,glb,obj"
+ROOMS = {"living_room": 0, "dining_room": 0}
+
+#: articulated generators laid out on the floor of a test room (wall cabinet on a wall)
+ARTICULATED = ["cabinet", "dresser", "nightstand", "tv_stand", "wardrobe", "desk", "oven",
+               "dishwasher", "microwave", "laptop", "storage_box", "toilet",
+               "kitchen_wall_cabinet", "fridge", "washing_machine", "cooking_pot"]
+
+
+@pytest.fixture(scope="session")
+def generated():
+    """room type -> Generated (default config, seed from ROOMS)."""
+    return {rt: generate(seed, GenerateConfig(room_type=rt)) for rt, seed in ROOMS.items()}
+
+
+@pytest.fixture(scope="session")
+def exported(generated, tmp_path_factory):
+    """room type -> (bundle, directory with every format, timings)."""
+    out = {}
+    for rt, gen in generated.items():
+        d = tmp_path_factory.mktemp(rt)
+        bundle = bundle_from_generated(gen)
+        timings: dict = {}
+        write_formats(bundle, d, ALL, texture_resolution=TEX, timings=timings)
+        out[rt] = (bundle, d, timings)
+    return out
+
+
+def articulated_scene() -> Scene:
+    """A 12 x 10 m room with one object of each articulated generator, spaced out."""
+    room = Room("test_room_0", "living_room", rectangle(12.0, 10.0),
+                doors=[Door("door_0", 0, 1.0)])
+    sc = Scene(seed=1, rooms={room.name: room})
+    for i, g in enumerate(ARTICULATED):
+        f = get_factory(g)
+        p = next(p for p in (f.sample_params(np.random.default_rng(s)) for s in range(30))
+                 if f.joints(f.resolve(p)))
+        x, y = 1.5 + 2.5 * (i % 4), 1.5 + 2.2 * (i // 4)
+        on_wall = g == "kitchen_wall_cabinet"
+        rel = (RelationInstance("StableAgainst(back,wall,0)", room.name, "back", "wall_0")
+               if on_wall else
+               RelationInstance("StableAgainst(bottom,floor,0)", room.name, "bottom", "floor"))
+        sc.add_object(SceneObject(f"{g}_0", g, p, 100 + i,
+                                  Pose((x, y, 1.4 if on_wall else 0.001), 0.3 * i),
+                                  sorted(t.value for t in f.tags), room.name, [rel]))
+    return sc
+
+
+@pytest.fixture(scope="session")
+def articulated(tmp_path_factory):
+    """(bundle, directory) of `articulated_scene()` exported as usd, urdf and mjcf."""
+    bundle = bundle_from_scene(articulated_scene())
+    d = tmp_path_factory.mktemp("articulated")
+    write_formats(bundle, d, "usd,urdf,mjcf", texture_resolution=TEX)
+    return bundle, d
