@@ -167,17 +167,18 @@ class CeilingLight(PartsFactory):
 
     CANOPY_H = 0.02
 
-    def _groups(self, p, k: _Kit = CHEAP) -> tuple[list[list[Part]], float, Surface]:
+    def _groups(self, p, k: _Kit | None) -> tuple[list[list[Part]], float, Surface]:
         return getattr(self, f"_{p['style']}")(p, k)
 
     def parts(self, p, detail):
         return _build(self._groups(p, FINE if detail else CHEAP)[0], detail)
 
     def extra_surfaces(self, p):
-        return [self._groups(p)[2]]
+        return [self._groups(p, None)[2]]
 
-    # ---- styles: each returns (groups of parts, overall height, top surface)
-    def _dome(self, p, k: _Kit):
+    # ---- styles: each returns (groups of parts, overall height, top surface); with k=None
+    # ---- only the height and the top (no parts)
+    def _dome(self, p, k: _Kit | None):
         R = p["diameter"] / 2
         h = min(max(p["body_height"], 0.06), 0.4 * p["diameter"])  # a shallow flush dome
         Rd = R - 0.01
@@ -186,18 +187,22 @@ class CeilingLight(PartsFactory):
         prof = [(0.0, 0.0)] + [(rf + (Rd - rf) * math.sin(u * math.pi / 2), h * (1 - math.cos(u * math.pi / 2)))
                                for u in us] + [(Rd, h + OVERLAP), (0.0, h + OVERLAP)]
         H = h + self.CANOPY_H
+        if k is None:
+            return [], H, _top_disc(R, H)
         base = [Part(k.disc(R, h, self.CANOPY_H), "metal")]
         if p["trim"]:
             base.append(Part(k.lathe([(Rd - 0.003, h - 0.02), (R - 0.002, h - 0.02), (R - 0.002, h + OVERLAP),
                                     (Rd - 0.003, h + OVERLAP)], 48), "metal"))
         return [base, [Part(k.lathe(prof, 48), "emissive")]], H, _top_disc(R, H)
 
-    def _drum(self, p, k: _Kit):
+    def _drum(self, p, k: _Kit | None):
         R = p["diameter"] / 2
         bh = max(p["body_height"], 0.1)
         th, cr = 0.003, p["canopy_radius"]
         stem = max(p["drop"], 0.05)
         H = bh + stem + self.CANOPY_H
+        if k is None:
+            return [], H, _top_disc(cr, H)
         shade = [Part(k.shell([(R, 0.0), (R, bh)], th), "shade"),
                  Part(k.disc(R - th + OVERLAP, 0.004, 0.004), "emissive")]
         zh = bh - 0.015
@@ -214,11 +219,14 @@ class CeilingLight(PartsFactory):
                Part(k.rod((0.0, 0.0, bh - OVERLAP), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.008, 12), "metal")]
         return [shade, hub, top], H, _top_disc(cr, H)
 
-    def _panel(self, p, k: _Kit):
+    def _panel(self, p, k: _Kit | None):
         R = p["diameter"] / 2
         pt = min(max(0.4 * p["body_height"], 0.025), 0.06)
         lens, inset = 0.003, 0.012
         body_slot = "metal" if p["trim"] else "plastic"
+        if k is None:
+            top = _top_disc(R, lens + pt) if p["shape"] == "round" else _top_rect(R - 0.001, R - 0.001, lens + pt)
+            return [], lens + pt, top
         if p["shape"] == "round":
             body = k.disc(R, lens, pt)
             face = k.disc(R - inset, 0.0, lens + OVERLAP)
@@ -229,7 +237,7 @@ class CeilingLight(PartsFactory):
             top = _top_rect(R - 0.001, R - 0.001, lens + pt)
         return [[Part(body, body_slot), Part(face, "emissive")]], lens + pt, top
 
-    def _spots(self, p, k: _Kit):
+    def _spots(self, p, k: _Kit | None):
         R = p["diameter"] / 2
         n = int(p["n_lights"])
         can_l = min(max(0.6 * p["body_height"], 0.06), 0.12)
@@ -238,6 +246,10 @@ class CeilingLight(PartsFactory):
         z_plate = lens + can_l + stem
         H = z_plate + 0.025
         slot = "metal" if p["trim"] else "plastic"
+        if k is None:
+            top = (_top_disc(min(0.12, 0.4 * R), H) if p["shape"] == "round"
+                   else _top_rect(0.034, R - 0.001, H))
+            return [], H, top
         if p["shape"] == "round":  # a small plate, the spots splayed out on slanted stems
             rp = min(0.12, 0.4 * R)
             plate = k.disc(rp, z_plate, 0.025)
@@ -257,7 +269,7 @@ class CeilingLight(PartsFactory):
                            Part(k.rod((x, y, lens + can_l - 0.01), (xr, yr, z_plate + OVERLAP), 0.006, 8), slot)])
         return groups, H, top
 
-    def _chandelier(self, p, k: _Kit):
+    def _chandelier(self, p, k: _Kit | None):
         R = p["diameter"] / 2
         n = 2 * math.ceil(int(p["n_lights"]) / 2)
         ch = min(max(p["body_height"], 0.12), 0.3)
@@ -270,6 +282,8 @@ class CeilingLight(PartsFactory):
         col += [(0.012, fin + ch + 0.01), (0.0, fin + ch + 0.01)]
         z_col1 = fin + ch
         H = z_col1 + drop + self.CANOPY_H
+        if k is None:
+            return [], H, _top_disc(cr, H)
         groups = [[Part(k.lathe(col, 24), "metal"),
                    Part(k.rod((0.0, 0.0, z_col1), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.007, 12), "metal"),
                    Part(k.disc(cr, H - self.CANOPY_H, self.CANOPY_H), "metal")]]
@@ -280,10 +294,13 @@ class CeilingLight(PartsFactory):
         us = np.linspace(0.0, 1.0, 6)
         curve = [(1 - u) ** 2 * P0 + 2 * u * (1 - u) * P1 + u ** 2 * P2 for u in us]
         for i in range(n):
-            a = 2 * math.pi * i / n
-            c, s = math.cos(a), math.sin(a)
-            pts = [(q[0] * c, q[0] * s, q[1]) for q in curve]
-            arm = [Part(k.rod(a, b, 0.006, 8), "metal") for a, b in zip(pts, pts[1:])]
+            ang = 2 * math.pi * i / n
+            c, s = math.cos(ang), math.sin(ang)
+            pts = np.array([(q[0] * c, q[0] * s, q[1]) for q in curve])
+            if k.detail:
+                arm = [Part(k.rod(q0, q1, 0.006, 8), "metal") for q0, q1 in zip(pts, pts[1:])]
+            else:  # the curved arm's box (the rods' boxes stay within 6 mm of its points)
+                arm = [Part(box_between(pts.min(axis=0) - 0.006, pts.max(axis=0) + 0.006), "metal")]
             x, y, z = pts[-1]
             arm += [Part(k.sphere(0.006, 8).translate((x, y, z)), "metal"),
                     Part(k.disc(0.028, z - 0.004, 0.01, x, y, 24), "metal"),

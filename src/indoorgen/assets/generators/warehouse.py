@@ -64,12 +64,10 @@ class PalletRack(PartsFactory):
         W = nb * bw + (nb + 1) * uw
         return [-W / 2 + uw / 2 + k * (bw + uw) for k in range(nb + 1)]
 
-    def _post(self, p, x_c: float, y_c: float, inward: float, detail: bool) -> m3d.Manifold:
-        """A post centred on (x_c, y_c); in detail a C-section open towards the frame's inside
-        (`inward` = +1 or -1 along X)."""
+    def _post(self, p, x_c: float, y_c: float, inward: float) -> m3d.Manifold:
+        """A C-section post centred on (x_c, y_c), open towards the frame's inside (`inward` =
+        +1 or -1 along X)."""
         uw, H = p["upright_width"], self._height(p)
-        if not detail:
-            return box((uw, uw, H), (x_c, y_c, H / 2))
         z0 = 0.004  # stands in its foot plate
         post = box((uw, uw, H - z0), (x_c, y_c, (H + z0) / 2))
         w = self.WALL
@@ -78,12 +76,10 @@ class PalletRack(PartsFactory):
 
     def _frame(self, p, y: float, detail: bool) -> list[Part]:
         D, uw, H = p["depth"], p["upright_width"], self._height(p)
+        if not detail:  # posts and bracing lie within the frame's slab
+            return [Part(box_between((-D / 2, y - uw / 2, 0.0), (D / 2, y + uw / 2, H)), "frame")]
         xp = D / 2 - uw / 2
-        out = [Part(self._post(p, xp, y, -1.0, detail), "frame"),
-               Part(self._post(p, -xp, y, 1.0, detail), "frame")]
-        if not detail:  # the bracing lies within the frame's slab
-            out.append(Part(box_between((-D / 2, y - uw / 2, 0.0), (D / 2, y + uw / 2, H)), "frame"))
-            return out
+        out = [Part(self._post(p, xp, y, -1.0), "frame"), Part(self._post(p, -xp, y, 1.0), "frame")]
         xa = D / 2 - self.WALL + OVERLAP  # struts reach the posts' webs
         for s in (-1, 1):  # foot plates, just inside the posts' outer faces
             a, b = s * (D / 2 - 0.001), s * (D / 2 - uw - 0.04)
