@@ -665,6 +665,7 @@ class Vanity(PartsFactory):
                 out.append(Part(box_between((b["cx"] - hx, b["cy"] - hy, H - BOWL_DEPTH - 0.012),
                                             (b["cx"] + hx, b["cy"] + hy, H - tt + OV)), "porcelain"))
             fh = 0.3 if p["basin_type"] == "vessel" else 0.16
+            # a vessel's tap reaches over the bowl's middle, an undermount's 8 cm past its edge
             reach = b["cx"] - b["fx"] if p["basin_type"] == "vessel" else b["cx"] - b["lx"] / 2 - b["fx"] + 0.08
             out += faucet_parts(b["fx"], b["cy"], H, p["faucet_style"], fh, reach, detail)
         out.append(Part(top - solid_union(cuts) if detail and cuts else top, "countertop"))

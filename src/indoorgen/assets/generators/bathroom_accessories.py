@@ -164,7 +164,8 @@ class TowelRing(_WallHardware):
         elif p["ring"] == "square":
             top, bot = zc + R, zc - R
             hw += [("rod", (x, 0.0, 0.0), (x, 0.0, top), rv),
-                   ("rod", (x, -R - r, top), (x, R + r, top), r), ("rod", (x, -R - r, bot), (x, R + r, bot), r),
+                   ("rod", (x, -R - r, top), (x, R + r, top), r),
+                   ("rod", (x, -R - r, bot), (x, R + r, bot), r),
                    ("rod", (x, -R, top), (x, -R, bot), 0.85 * r), ("rod", (x, R, top), (x, R, bot), 0.85 * r)]
         else:  # a hoop hanging from a bar across the arm's end
             hw += [("rod", (x, -R - r, -0.012), (x, R + r, -0.012), r),
@@ -382,11 +383,11 @@ class BathroomMirrorCabinet(PartsFactory):
             x1 = D / 2 + 0.002 + 0.018 + (0.003 if p["door_style"] == "framed" else 0.0)
             out.append(Part(box_between((-D / 2, -W / 2, g["z_d0"]), (x1, W / 2, H)), "mirror"))
         if p["light"] == "top":
-            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, H - OV), (D / 2, W / 2 - 0.04, H + 0.025)),
-                            "emissive"))
+            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, H - OV),
+                                        (D / 2, W / 2 - 0.04, H + 0.025)), "emissive"))
         elif p["light"] == "bottom":
-            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, -0.015), (D / 2 - 0.01, W / 2 - 0.04, OV)),
-                            "emissive"))
+            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, -0.015),
+                                        (D / 2 - 0.01, W / 2 - 0.04, OV)), "emissive"))
         return out
 
     def joints(self, p):

@@ -99,7 +99,6 @@ class BathtubAlcove(PartsFactory):
         # overflow cover on the drain end wall, 10 cm under the rim
         zo = H - 0.1
         t = (H - zo) / (H - g["z_f"] - 0.05)
-        y_wall = g["s"] * (g["l_in"] / 2 - t * (g["l_in"] / 2 - (g["fl"] / 2 + 0.03 + g["s"] * g["fy"] * 0 + abs(g["fy"]) * 0)))
         y_wall = g["s"] * ((1 - t) * g["l_in"] / 2 + t * (abs(g["fy"]) + g["fl"] / 2 + 0.03))
         out.append(Part(rod((0.0, y_wall + g["s"] * 0.03, zo), (0.0, y_wall - g["s"] * 0.008, zo),
                             0.03, 24), "metal"))
@@ -111,7 +110,8 @@ class BathtubAlcove(PartsFactory):
         cav = self._cavity(p, g)
         rim = sg.box(-D / 2 + 0.005, -L / 2 + 0.005, D / 2 - 0.005, L / 2 - 0.005).difference(
             outline_polygon(cav[1][1]).buffer(0.005))
-        floor = outline_polygon(cav[-1][1], 0.005).difference(sg.Point(0.0, self._drain_y(g)).buffer(0.04, 16))
+        drain = sg.Point(0.0, self._drain_y(g)).buffer(0.04, 16)
+        floor = outline_polygon(cav[-1][1], 0.005).difference(drain)
         out = [support_polygon("rim", (0, 0, g["H"]), rim),
                support_polygon("basin", (0, 0, g["z_f"]), floor, subpart=Subpart.Interior)]
         if p["apron_style"] == "kick":
@@ -380,7 +380,8 @@ class BathtubCorner(PartsFactory):
             rim = rim.difference(sg.Point(tx, ty).buffer(0.1, 16))
         dx, dy = self._drain_xy(g)
         floor = outline_polygon(g["floor"], 0.005).difference(sg.Point(dx, dy).buffer(0.04, 16))
-        out = [support_polygon("rim", (0, 0, g["H"]), polygon_pieces(rim)[0] if not isinstance(rim, sg.Polygon) else rim),
+        rim = max(polygon_pieces(rim), key=lambda q: q.area)
+        out = [support_polygon("rim", (0, 0, g["H"]), rim),
                support_polygon("basin", (0, 0, g["z_f"]), floor, subpart=Subpart.Interior)]
         if p["kick"]:
             out.append(support_polygon("bottom", (0, 0, 0), outline_polygon(self._plinth(g), 0.0005),
@@ -557,8 +558,8 @@ class Toilet(PartsFactory):
             out.append(Part(box_between((0.0, -g["cw"] / 2 - e, H - 0.01),
                                         (g["cd"] + e, g["cw"] / 2 + e, H + g["ch"] + 0.025)), "porcelain"))
         elif g["style"] == "one_piece":  # the cistern tapers up from its widest foot
-            out.append(Part(box_between((0.0, -g["cw"] / 2, H - 0.12), (g["cd"] + 0.05, g["cw"] / 2, H + g["ch"])),
-                            "porcelain"))
+            out.append(Part(box_between((0.0, -g["cw"] / 2, H - 0.12),
+                                        (g["cd"] + 0.05, g["cw"] / 2, H + g["ch"])), "porcelain"))
         out.append(Part(box_between((g["x_hl"], -b - 0.005, H), (g["front"], b + 0.005, g["z_l"] + g["tl"])),
                         "plastic"))
         if self._flush(p, g):
@@ -729,7 +730,8 @@ class ShowerEnclosure(PartsFactory):
         leaf = box_between((s["x0"], s["y0"], z0), (s["x0"] + t, s["y1"], s["z1"]))
         handle = self._door_handle(s["x0"] + t, s["y0"] + 0.08, zc, (1,))
         parts = [Part(leaf, "glass", "door_0")] + [Part(prim_solid(q), "metal", "door_0") for q in handle]
-        motion = DoorJoint("prismatic", np.array([0.0, -1.0, 0.0]), np.array([s["x0"], s["y0"], z0]), "door_0")
+        motion = DoorJoint("prismatic", np.array([0.0, -1.0, 0.0]), np.array([s["x0"], s["y0"], z0]),
+                           "door_0")
         # it stops short of the corner clamp, which stands proud of the fixed glass
         travel = min(0.8 * (s["y1"] - s["y0"]), s["y0"] - (g["y_s"] + t / 2 + 0.006 + GAP))
         return [(parts, motion, travel)]
@@ -766,7 +768,8 @@ class ShowerEnclosure(PartsFactory):
                 h = self._hinged(g)
                 glass.append(box_between((x_f - t / 2, y_s - t / 2, z0), (x_f + t / 2, h["y0"] - GAP, z1)))
                 for zh in (th + 0.3, g["z1"] - 0.3):  # hinges on the wall
-                    metal.append(box_between((x_f - 0.02, h["y1"] + GAP, zh - 0.04), (x_f + 0.02, y_w + OV, zh + 0.04)))
+                    metal.append(box_between((x_f - 0.02, h["y1"] + GAP, zh - 0.04),
+                                             (x_f + 0.02, y_w + OV, zh + 0.04)))
             else:
                 s = self._sliding(g)
                 glass.append(box_between((x_f - t / 2, y_s - t / 2, z0), (x_f + t / 2, s["ym"] + 0.05, z1)))
@@ -777,7 +780,9 @@ class ShowerEnclosure(PartsFactory):
         if p["layout"] != "walk_in":  # wall profile of the side panel
             metal.append(box_between((x_w - OV, y_s - t / 2 - 0.006, z0), (x_w + pw, y_s + t / 2 + 0.006, z1)))
         if g["framed"] and p["layout"] != "walk_in":  # top rail along the side panel
-            metal.append(box_between((x_w - OV, y_s - t / 2 - 0.006, z1 - 0.03), (g["c"][0] + 0.011 if p["layout"] == "quadrant" else x_f + t / 2 + 0.006, y_s + t / 2 + 0.006, z1 + 0.01)))
+            x_end = g["c"][0] + 0.011 if p["layout"] == "quadrant" else x_f + t / 2 + 0.006
+            metal.append(box_between((x_w - OV, y_s - t / 2 - 0.006, z1 - 0.03),
+                                     (x_end, y_s + t / 2 + 0.006, z1 + 0.01)))
         return (out + [Part(s, "glass") for s in glass] + [Part(s, "metal") for s in metal]
                 + [Part(prim_solid(q), "metal") for q in self._head(p, g)])
 
