@@ -389,3 +389,13 @@ def test_table_lamp_bulb_under_shade(seed):
     z_shade0 = p["base_height"] + p["neck_height"]
     assert em[:, 2].min() > z_shade0 - 0.06 and em[:, 2].max() < z_shade0 + p["shade_height"]
     assert _on_mesh(a, a.surface("bottom")) < TOL
+
+
+@pytest.mark.parametrize("name", ["cabinet", "wardrobe", "dresser", "nightstand", "corner_shelf"])
+@pytest.mark.parametrize("seed", range(4))
+def test_case_backs_stand_against_the_wall(name, seed):
+    """The `back` of case furniture is its flat carcass back, at the bbox back."""
+    _, _, _, a = build(name, seed)
+    back = a.surface("back")
+    assert np.allclose(back.corners()[:, 0], -a.extents[0] / 2, atol=TOL)
+    assert _on_mesh(a, back) < TOL
