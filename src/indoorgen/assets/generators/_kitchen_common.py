@@ -205,27 +205,17 @@ def grip_handle(x_face: float, y: float, z: float, length: float, vertical: bool
 
 def cabinet_front(fx: float, cell: Front, opening: tuple[float, float, float, float],
                   depth: float, link: str, handle: str, style: str, high: bool = False,
-                  slot: str = "front") -> tuple[list[Part], DoorJoint]:
+                  slot: str = "front", build: bool = True) -> tuple[list[Part], DoorJoint]:
     """One overlay front of a carcass whose front face is at `fx`: a door leaf hinged on the
     cell's side ("left", "right", "flap_up", "flap_down") or a drawer (front panel plus an
     open box inside `opening` = the carcass's inner (y0, y1, z0, z1), `depth` deep). `style`
     "shaker" adds a raised frame, "glass" a window. `high` (wall cabinets) puts door handles
-    near the bottom edge instead of the top."""
+    near the bottom edge instead of the top. With build=False only the motion is computed."""
     y0, y1, z0, z1 = cell.y0 + REVEAL / 2, cell.y1 - REVEAL / 2, cell.z0 + REVEAL / 2, cell.z1 - REVEAL / 2
     x0, x1 = fx + MOVING_GAP, fx + MOVING_GAP + FRONT_T
     w, h = y1 - y0, z1 - z0
     drawer = cell.kind == "drawer"
-    if style == "glass" and not drawer:
-        bd = min(0.06, 0.25 * min(w, h))
-        parts = window_leaf(x0, x1, y0, y1, z0, z1, (bd, bd, bd, bd), link, slot)
-    else:
-        parts = [Part(box_between((x0, y0, z0), (x1, y1, z1)), slot, link)]
-    if style == "shaker":
-        parts.append(Part(shaker_frame(x1, y0, y1, z0, z1, 0.035 if drawer else 0.06), slot, link))
     if drawer:
-        oy0, oy1, oz0, oz1 = opening
-        op = (max(oy0, y0), min(oy1, y1), max(oz0, z0), min(oz1, z1))
-        parts.append(Part(drawer_basket(fx, op, depth, 0.012), "wood", link))
         zg = (z0 + z1) / 2 if h < 0.2 else z1 - 0.06
         grip, vertical, length = ((y0 + y1) / 2, zg), False, min(0.2, 0.5 * w)
         motion = slide_motion(link, (x1, grip[0], grip[1]))
@@ -241,8 +231,21 @@ def cabinet_front(fx: float, cell: Front, opening: tuple[float, float, float, fl
             zh = z0 + min(0.04, 0.2 * h) if hinge == "top" else z1 - min(0.04, 0.2 * h)
             grip, vertical, length = ((y0 + y1) / 2, zh), False, min(0.3, 0.5 * w)
         # the axis runs along the outermost front edge (a shaker frame stands proud of the leaf)
-        motion = hinge_motion(hinge, x1 + (SHAKER_DEPTH if style == "shaker" else 0.0), y0, y1, z0, z1,
-                              link)
+        x_axis = x1 + (SHAKER_DEPTH if style == "shaker" else 0.0)
+        motion = hinge_motion(hinge, x_axis, y0, y1, z0, z1, link)
+    if not build:
+        return [], motion
+    if style == "glass" and not drawer:
+        bd = min(0.06, 0.25 * min(w, h))
+        parts = window_leaf(x0, x1, y0, y1, z0, z1, (bd, bd, bd, bd), link, slot)
+    else:
+        parts = [Part(box_between((x0, y0, z0), (x1, y1, z1)), slot, link)]
+    if style == "shaker":
+        parts.append(Part(shaker_frame(x1, y0, y1, z0, z1, 0.035 if drawer else 0.06), slot, link))
+    if drawer:
+        oy0, oy1, oz0, oz1 = opening
+        op = (max(oy0, y0), min(oy1, y1), max(oz0, z0), min(oz1, z1))
+        parts.append(Part(drawer_basket(fx, op, depth, 0.012), "wood", link))
     g = grip_handle(x1, grip[0], grip[1], length, vertical, handle)
     if g is not None:
         parts.append(Part(g, "metal", link))
@@ -313,19 +316,18 @@ def unit_parts(u: Unit, depth: float, z0: float, z1: float, t: float, detail: bo
         for i, zs in enumerate([z0 + t] + shelves):
             surfaces.append(interior_rect(f"{prefix}interior_{i}", ix0, ix1, u.y0 + t, u.y1 - t, zs))
     fx = depth / 2
-    if not detail:  # the closed block: carcass, contents, fronts and handles
-        return ([Part(box_between((-depth / 2, u.y0, z0), (fx + front_proud(handle, style), u.y1, z1)),
-                      "wood")],
-                [], surfaces)
-    out = [Part(s.solid.translate((0.0, yc, 0.0)), s.slot)
-           for s in carcass(depth, w, z0, z1, t, back=t, shelves=shelves, top=top)]
     opening = (u.y0 + t, u.y1 - t, z0 + t, z_in1)
-    joints = []
+    joints, out = [], []
     for i, c in enumerate(cells):
         link = f"{prefix}{'drawer' if c.kind == 'drawer' else 'door'}_{i}"
-        parts, m = cabinet_front(fx, c, opening, depth - t - 0.02, link, handle, style, high)
+        parts, m = cabinet_front(fx, c, opening, depth - t - 0.02, link, handle, style, high, build=detail)
         out += parts
         joints.append(joint_for(m, slide=0.75 * (depth - t - 0.02), open_angle=open_angle))
+    if not detail:  # the closed block: carcass, contents, fronts and handles
+        block = box_between((-depth / 2, u.y0, z0), (fx + front_proud(handle, style), u.y1, z1))
+        return [Part(block, "wood")], joints, surfaces
+    out += [Part(s.solid.translate((0.0, yc, 0.0)), s.slot)
+            for s in carcass(depth, w, z0, z1, t, back=t, shelves=shelves, top=top)]
     return out, joints, surfaces
 
 

@@ -120,10 +120,13 @@ def hob_parts(style: str, region: tuple[float, float, float, float], z_top: floa
     if knobs:
         xk = x1 - KNOB_BAND / 2
         pitch = min(0.06, (y1 - y0 - 0.06) / n)
-        for i in range(n):
-            y = (y0 + y1) / 2 + (i - (n - 1) / 2) * pitch
-            out.append(Part(cylinder(0.017, 0.022, (xk, y, z_top - 0.001), 24 if detail else 8,
-                                     circumscribed=not detail), "plastic"))
+        ys = [(y0 + y1) / 2 + (i - (n - 1) / 2) * pitch for i in range(n)]
+        if detail:
+            out += [Part(cylinder(0.017, 0.022, (xk, y, z_top - 0.001), 24), "plastic") for y in ys]
+        else:  # the row of knobs as one block
+            out.append(Part(box_between((xk - 0.017, ys[0] - 0.017, z_top - 0.001),
+                                        (xk + 0.017, ys[-1] + 0.017, z_top + 0.021)),
+                            "plastic"))
     return out
 
 

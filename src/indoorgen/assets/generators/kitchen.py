@@ -57,7 +57,7 @@ def _countertop(p: dict[str, Any], x0: float, x1: float, y0: float, y1: float,
 def _run_parts(p: dict[str, Any], units: list[Unit], detail: bool, prefix_units: bool,
                open_angle: float = DOOR_OPEN) -> tuple[list[Part], list, list[Surface]]:
     """Carcasses and fronts of `units` (one run, fronts at x = depth/2) on a plinth: parts,
-    joints and interior surfaces."""
+    joints and interior surfaces. The placeholder's units are one block."""
     D, H, ct = p["depth"], p["height"], p["countertop_thickness"]
     zk, zc = p["toe_kick_height"], H - ct
     out, joints, surfs = [], [], []
@@ -69,6 +69,11 @@ def _run_parts(p: dict[str, Any], units: list[Unit], detail: bool, prefix_units:
         joints += js
         surfs += ss
     y0, y1 = units[0].y0, units[-1].y1
+    if not detail:  # every unit's block has the same depth and height: merge them
+        blocks = [q.solid.bounding_box() for q in out]
+        lo = [min(b[k] for b in blocks) for k in range(3)]
+        hi = [max(b[k + 3] for b in blocks) for k in range(3)]
+        out = [Part(box_between(lo, hi), "wood")]
     out.append(Part(box_between((-D / 2, y0 + 0.01, 0.0),
                                 (D / 2 - p["toe_kick_depth"], y1 - 0.01, zk + OVERLAP)),
                     "wood"))
@@ -110,7 +115,7 @@ class KitchenBaseCabinet(PartsFactory):
         return out
 
     def joints(self, p):
-        return _run_parts(p, self._units(p), True, False)[1]
+        return _run_parts(p, self._units(p), False, False)[1]
 
     def extra_surfaces(self, p):
         D, W, H, kd = p["depth"], p["width"], p["height"], p["toe_kick_depth"]
@@ -181,7 +186,7 @@ class CountertopRun(PartsFactory):
         return out
 
     def joints(self, p):
-        return _run_parts(p, run_units(p), True, True)[1]
+        return _run_parts(p, run_units(p), False, True)[1]
 
     def extra_surfaces(self, p):
         units = run_units(p)
@@ -252,7 +257,7 @@ class KitchenIsland(PartsFactory):
     def joints(self, p):
         # doors of the end units must stop at 90 degrees against a waterfall slab
         angle = math.radians(90) if p["end_style"] == "waterfall" else DOOR_OPEN
-        return _run_parts(dict(p, toe_kick_depth=0.06), run_units(p), True, True, angle)[1]
+        return _run_parts(dict(p, toe_kick_depth=0.06), run_units(p), False, True, angle)[1]
 
     def extra_surfaces(self, p):
         units, x0, x1, y0, y1 = self._geometry(p)
@@ -304,7 +309,7 @@ class KitchenWallCabinet(PartsFactory):
         return self._build(p, detail)[0]
 
     def joints(self, p):
-        return self._build(p, True)[1]
+        return self._build(p, False)[1]
 
     def extra_surfaces(self, p):
         D, W = p["depth"], p["width"]
