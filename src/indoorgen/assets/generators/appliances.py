@@ -274,7 +274,8 @@ class BeverageFridge(PartsFactory):
     are `interior_i` surfaces; `top` is a support surface."""
 
     name = "beverage_fridge"
-    tags = frozenset({S.Object, S.Appliance, S.KitchenAppliance, S.Fridge, S.BeverageFridge})
+    # not tagged Fridge: a kitchen's one fridge ("a fridge" in programs) must be a full one
+    tags = frozenset({S.Object, S.Appliance, S.KitchenAppliance, S.BeverageFridge})
     size_class = "large"
     slots = ["appliance", "plastic", "glass", "metal", "emissive"]
     solid_bottom = True
