@@ -1,0 +1,88 @@
+"""MJCF export loaded and simulated by MuJoCo: the stability test of issue 5.
+
+From the exported poses, 2 s under gravity: at least 99 % of the free bodies move less than
+2 cm and none more than 10 cm. A failure is a placement bug (solver or asset), reported, never
+fixed by pinning objects."""
+from __future__ import annotations
+
+import logging
+
+import mujoco
+import numpy as np
+import pytest
+
+log = logging.getLogger(__name__)
+
+#: living_room seed 0: the solver leaves tv_0 overhanging tv_stand_0 (one foot off the stand,
+#: reported); it tips and drops about 5 cm
+KNOWN_PLACEMENT_BUGS = {"living_room": "tv_0 overhangs tv_stand_0 (one foot off the top)"}
+
+
+def simulate(path, seconds: float = 2.0) -> dict[str, float]:
+    """Free body name -> distance its origin moved after `seconds` under gravity."""
+    m = mujoco.MjModel.from_xml_path(str(path))
+    d = mujoco.MjData(m)
+    mujoco.mj_forward(m, d)
+    free = [int(m.jnt_bodyid[j]) for j in range(m.njnt)
+            if m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+    p0 = d.xpos[free].copy()
+    for _ in range(int(round(seconds / m.opt.timestep))):
+        mujoco.mj_step(m, d)
+    moved = np.linalg.norm(d.xpos[free] - p0, axis=1)
+    return {m.body(b).name: float(x) for b, x in zip(free, moved)}
+
+
+def stability(moved: dict[str, float]) -> tuple[float, float, list]:
+    v = np.array(list(moved.values()))
+    worst = sorted(moved.items(), key=lambda kv: -kv[1])[:3]
+    return float((v < 0.02).mean()), float(v.max()), worst
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("room", ["living_room", "dining_room"])
+def test_stability_under_gravity(exported, room, record_property, request):
+    bundle, d, _ = exported[room]
+    moved = simulate(d / "scene.xml")
+    assert len(moved) == sum(1 for o in bundle.objects if not bundle.is_fixed(o))
+    frac, worst, top = stability(moved)
+    record_property("stability", {"free": len(moved), "under_2cm": frac, "max_m": worst,
+                                  "worst": top})
+    log.warning("%s: %d free bodies, %.1f%% moved < 2 cm, max %.3f m (%s)", room, len(moved),
+                100 * frac, worst, top)
+    if room in KNOWN_PLACEMENT_BUGS and (frac < 0.99 or worst > 0.10):
+        request.applymarker(pytest.mark.xfail(reason=KNOWN_PLACEMENT_BUGS[room]))
+    assert frac >= 0.99 and worst <= 0.10, (frac, worst, top)
+
+
+def test_articulated_objects_load_stay_put_and_shut(articulated):
+    bundle, d = articulated
+    m = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    moving = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+    hinges = [j for j in range(m.njnt) if int(m.jnt_type[j]) in moving]
+    assert len(hinges) == sum(len(bundle.assets[o.name].joints) for o in bundle.objects)
+    for j in hinges:
+        assert m.jnt_limited[j] and m.dof_damping[m.jnt_dofadr[j]] > 0
+    # visual geoms never collide; collision geoms are the convex pieces
+    vis = (m.geom_contype == 0) & (m.geom_conaffinity == 0)
+    assert vis.any() and (~vis).any()
+    d_ = mujoco.MjData(m)
+    mujoco.mj_forward(m, d_)
+    q0 = d_.qpos[[m.jnt_qposadr[j] for j in hinges]].copy()
+    moved = simulate(d / "scene.xml")
+    frac, worst, top = stability(moved)
+    assert frac >= 0.99 and worst <= 0.10, top
+    # doors, flaps and drawers stay (nearly) shut under gravity
+    for _ in range(1000):
+        mujoco.mj_step(m, d_)
+    q1 = d_.qpos[[m.jnt_qposadr[j] for j in hinges]]
+    assert np.abs(q1 - q0).max() < 0.05
+
+
+def test_fixed_objects_are_welded(exported):
+    bundle, d, _ = exported["living_room"]
+    m = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    for o in bundle.objects:
+        b = m.body(o.name)
+        has_free = any(m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
+                       for j in range(m.body_jntadr[b.id], m.body_jntadr[b.id] + m.body_jntnum[b.id]))
+        assert has_free != bundle.is_fixed(o), o.name
