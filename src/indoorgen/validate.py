@@ -17,6 +17,7 @@ from typing import Any
 
 import manifold3d
 import numpy as np
+import shapely
 import shapely.geometry as sg
 import trimesh
 
@@ -31,6 +32,8 @@ PENETRATION_TOL = 0.001
 SUPPORT_TOL = 0.005
 #: how far in front of a dining chair its table must begin (m)
 FACING_REACH = 1.0
+#: door clearance zones are kept free up to this height (m)
+DOOR_ZONE_TOP = 2.0
 
 
 def _manifold(mesh: trimesh.Trimesh) -> manifold3d.Manifold:
@@ -108,15 +111,14 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
                                     "gap_m": round(float(np.abs(gaps).max()), 4),
                                     "facing": round(facing, 4)})
 
-    # 3. door clearance zones
+    # 3. door clearance zones: nothing below 2 m may stand in them. Footprints are the union of
+    # the plan views of the object's convex pieces (an L-shaped sofa's notch is empty floor).
     blocked = []
+    footprints = {n: _footprint_below(scene.objects[n], assets[n], DOOR_ZONE_TOP) for n in meshes}
     for rn, g in rooms.items():
         for k, zone in enumerate(g.door_zones):
-            for n, m in meshes.items():
-                if m.bounds[0][2] > 2.0:
-                    continue
-                fp = sg.MultiPoint(m.vertices[:, :2]).convex_hull
-                if fp.intersection(zone).area > 1e-6:
+            for n, fp in footprints.items():
+                if fp is not None and fp.intersection(zone).area > 1e-6:
                     blocked.append({"room": rn, "door": k, "object": n})
 
     # 4. dining chairs face their table: a ray from the chair's seat along its front meets the
@@ -143,6 +145,17 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
             "unsupported": unsupported, "door_zone_blocked": blocked,
             "chairs_not_facing_table": misfacing, "hard_violations": violations,
             "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP}
+
+
+def _footprint_below(obj, asset, top: float):
+    """Plan-view footprint (world) of the parts of `asset` that reach below height `top`, as
+    the union of its convex pieces' outlines; None if nothing does."""
+    outlines = []
+    for _, piece in asset.collision:
+        pts = obj.pose.apply(piece.vertices)
+        if pts[:, 2].min() < top:
+            outlines.append(sg.MultiPoint(pts[:, :2]).convex_hull)
+    return shapely.union_all(outlines) if outlines else None
 
 
 def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:

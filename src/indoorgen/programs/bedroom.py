@@ -42,5 +42,6 @@ def bedroom(room) -> Problem:
             "furniture square to the walls": angle_alignment_cost(floor, room).minimize(1),
             "a lamp per nightstand": lamps.count().maximize(0.5),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
+            "pictures in view": accessibility_cost(art, floor).minimize(2),
         },
     )

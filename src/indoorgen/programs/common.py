@@ -16,3 +16,5 @@ at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.08, overhang=Fal
 on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 #: a side flush against a wall (the second wall of a corner: a bathtub, a kitchen run's end)
 side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
+#: standing wholly on a surface, nothing overhanging (a TV on its stand, a microwave)
+fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)

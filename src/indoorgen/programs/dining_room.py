@@ -1,5 +1,6 @@
 """A dining room: one table with chairs evenly around it and places laid, art on the walls."""
-from ..constraints import (Problem, angle_alignment_cost, center_of_support_distance, height,
+from ..constraints import (Problem, accessibility_cost, angle_alignment_cost,
+                           center_of_support_distance, height,
                            rotational_asymmetry, scene)
 from ..tags import Semantics as S
 from .common import against_wall, at_table, on_floor, on_top, on_wall
@@ -9,7 +10,10 @@ def dining_room(room) -> Problem:
     floor = scene().related_to(room, on_floor)
     tables = floor[S.DiningTable]
     chairs = floor[S.DiningChair]
-    storage = floor[S.Storage].related_to(room, against_wall)
+    sideboards = floor[S.Cabinet].excluding(
+        S.KitchenCabinet, S.BathroomFixture, S.WallMounted).related_to(room, against_wall)
+    shelves = floor[S.Bookcase].related_to(room, against_wall)
+    storage = sideboards | shelves
     art = scene()[S.WallArt].related_to(room, on_wall)
     plates, cups = scene()[S.Plate], scene()[S.Cup]
     vases = scene()[S.Vase].related_to(tables | storage, on_top)
@@ -20,7 +24,7 @@ def dining_room(room) -> Problem:
                 lambda t: chairs.related_to(t, at_table).count().in_range(4, 8)),
             "places laid": tables.all(lambda t: plates.related_to(t, on_top).count().in_range(2, 8)),
             "cups": tables.all(lambda t: cups.related_to(t, on_top).count().in_range(1, 8)),
-            "a sideboard or shelf at most": storage.count().in_range(0, 1),
+            "a sideboard or shelf at most": (sideboards.count() + shelves.count()).in_range(0, 1),
             "pictures": art.count().in_range(1, 2),
             "a vase": vases.count().in_range(0, 1),
         },
@@ -34,5 +38,6 @@ def dining_room(room) -> Problem:
             "as many chairs as fit": chairs.count().maximize(0.3),
             "vase in the middle": center_of_support_distance(vases).minimize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
+            "pictures in view": accessibility_cost(art, floor).minimize(2),
         },
     )

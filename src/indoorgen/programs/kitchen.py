@@ -2,7 +2,7 @@
 maybe an island with stools, and kitchenware on the counters."""
 from ..constraints import Problem, accessibility_cost, angle_alignment_cost, scene
 from ..tags import Semantics as S
-from .common import against_wall, at_table, on_ceiling, on_floor, on_top, on_wall
+from .common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
 
 
 def kitchen(room) -> Problem:
@@ -20,7 +20,7 @@ def kitchen(room) -> Problem:
     kitchenware = scene()[S.Kitchenware].related_to(counters, on_top)
     tableware = scene()[S.Tableware].related_to(counters, on_top)
     food = scene()[S.Food].related_to(counters, on_top)
-    appliances_on_counters = scene()[S.Microwave].related_to(cabinets, on_top)
+    appliances_on_counters = scene()[S.Microwave].related_to(cabinets, fully_on)
     return Problem(
         constraints={
             "cabinet runs": cabinets.count().in_range(1, 4),

@@ -7,6 +7,7 @@ all its planes at once (least squares, so the guess moves as little as possible)
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -68,13 +69,23 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
         return np.asarray(position, float), yaw, DoF(np.eye(3), True)
     n = np.array([row[0] for row in rows])
     b = np.array([row[1] - float(np.dot(r @ row[2], row[0])) for row in rows])
-    pinv = np.linalg.pinv(n)
+    pinv = _pinv(n)
     t = np.asarray(position, float) + pinv @ (b - n @ position)
     if np.abs(n @ t - b).max() > 1e-6:
         return None
     proj = np.eye(3) - pinv @ n
     proj[np.abs(proj) < 1e-12] = 0.0
     return t, yaw, DoF(proj, fixed_yaw is None)
+
+
+def _pinv(n: np.ndarray) -> np.ndarray:
+    """Pseudo-inverse of the (k, 3) plane-normal matrix: n^T (n n^T)^-1 when the normals are
+    independent (the usual case: a floor, or a floor and one or two walls), which is a small
+    solve instead of an SVD; the SVD only for dependent planes (two walls facing each other)."""
+    gram = n @ n.T
+    if len(n) <= 3 and abs(np.linalg.det(gram)) > 1e-9:
+        return n.T @ np.linalg.inv(gram)
+    return np.linalg.pinv(n)
 
 
 def dof_of(state: State, name: str) -> DoF:
@@ -118,17 +129,25 @@ def _inside(poly: sg.Polygon, xy: np.ndarray, tol: float) -> bool:
     return bool((shapely.distance(poly, shapely.points(out)) <= tol).all())
 
 
+@functools.lru_cache(maxsize=4096)
+def _shrunk(poly: sg.Polygon, margin: float) -> sg.Polygon:
+    """`poly` shrunk by `margin`, or `poly` itself if nothing would be left. Cached: the same
+    shelf or floor polygon is shrunk by the same object's margin over and over."""
+    shrunk = poly.buffer(-margin)
+    return shrunk if not shrunk.is_empty and shrunk.area > 1e-6 else poly
+
+
 def sample_point(surface: Surface, rng: np.random.Generator, margin: float = 0.0) -> np.ndarray:
     """A uniform random point of a surface polygon (optionally shrunk by `margin`), in world."""
     poly = surface.polygon
     if margin > 0:
-        shrunk = poly.buffer(-margin)
-        if not shrunk.is_empty and shrunk.area > 1e-6:
-            poly = shrunk
+        poly = _shrunk(poly, round(float(margin), 4))
     x0, y0, x1, y1 = poly.bounds
-    for _ in range(64):
-        q = rng.uniform([x0, y0], [x1, y1])
-        if poly.contains(sg.Point(q)):
+    for _ in range(4):  # rejection sampling, 16 candidates at a time
+        cand = rng.uniform([x0, y0], [x1, y1], size=(16, 2))
+        inside = shapely.contains_xy(poly, cand[:, 0], cand[:, 1])
+        if inside.any():
+            q = cand[int(np.argmax(inside))]
             break
     else:
         c = poly.representative_point()

@@ -35,7 +35,7 @@ class FloorLamp(PartsFactory):
     name = "floor_lamp"
     tags = frozenset({S.Object, S.Lighting, S.FloorLamp})
     size_class = "medium"
-    slots = ["metal", "shade", "bulb"]
+    slots = ["metal", "shade", "emissive"]
     solid_bottom = True
     params = {
         "height": Param(1.4, 1.8, doc="overall height = top of the shade (m)"),
@@ -78,7 +78,7 @@ class FloorLamp(PartsFactory):
                                 0.003, 8), "metal"))
         out.append(Part(cylinder(0.015, 0.05, (0, 0, z_spoke - 0.05), 16), "metal"))  # socket
         bulb = Manifold.sphere(0.035, 24).translate((0.0, 0.0, z_spoke - 0.075))
-        out.append(Part(bulb, "bulb"))
+        out.append(Part(bulb, "emissive"))
         return out
 
     def extra_surfaces(self, p):

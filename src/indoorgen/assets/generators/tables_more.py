@@ -107,6 +107,7 @@ class DiningTableOval(PartsFactory):
     name = "dining_table_oval"
     tags = frozenset({S.Object, S.Furniture, S.Table, S.DiningTable})
     size_class = "large"
+    drop_box = ("side_left", "side_right")  # chairs go on the tangent side_i facets only
     slots = ["wood", "metal"]
     CHAIR_SPACING = 0.6  # perimeter length per chair facet (m)
     params = {
@@ -215,6 +216,7 @@ class Desk(PartsFactory):
     name = "desk"
     tags = frozenset({S.Object, S.Furniture, S.Table, S.Desk})
     size_class = "large"
+    drop_box = ("side_left", "side_right")  # its chair goes at side_0, the front edge
     slots = ["wood", "front", "metal", "back"]
     params = {
         "width": Param(1.0, 1.8, doc="Y extent (m)"),
