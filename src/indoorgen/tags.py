@@ -158,6 +158,7 @@ class Semantics(str, Enum):
     InteriorDoor = "interior_door"
     ExteriorDoor = "exterior_door"
     # -- architecture: more tags here
+    Railing = "railing"
 
 
 class Subpart(str, Enum):
