@@ -125,16 +125,18 @@ class ExportBundle:
     def proto_key(self, name: str) -> tuple:
         """Identity of an object's look: objects with equal keys have identical meshes and
         materials and may share one prototype."""
-        o = self.scene.objects[name]
-        mats = tuple(sorted((s, r.key) for s, r in self.materials[name].items()))
-        return (o.generator, params_key(o.params), mats)
+        key = ("proto", name)
+        if key not in self._memo:
+            o = self.scene.objects[name]
+            mats = tuple(sorted((s, r.key) for s, r in self.materials[name].items()))
+            self._memo[key] = (o.generator, params_key(o.params), mats)
+        return self._memo[key]
 
     def mesh_key(self, name: str) -> str:
         """Short stable identifier of an object's geometry (generator + params), used to share
         mesh files between identical objects."""
-        o = self.scene.objects[name]
-        h = zlib.crc32(params_key(o.params).encode()) & 0xFFFFFFFF
-        return f"{o.generator}_{h:08x}"
+        gen, params, _ = self.proto_key(name)
+        return f"{gen}_{zlib.crc32(params.encode()) & 0xFFFFFFFF:08x}"
 
 
 def params_key(params: dict[str, Any]) -> str:

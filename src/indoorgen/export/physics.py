@@ -31,10 +31,13 @@ class Inertial:
 
     def diagonalised(self) -> tuple[np.ndarray, np.ndarray]:
         """Principal moments (3,) and the rotation (3, 3) whose columns are the axes."""
-        w, v = np.linalg.eigh(self.inertia)
-        if np.linalg.det(v) < 0:
-            v[:, 0] = -v[:, 0]
-        return np.maximum(w, MIN_INERTIA), v
+        cached = self.__dict__.get("_diag")
+        if cached is None:
+            w, v = np.linalg.eigh(self.inertia)
+            if np.linalg.det(v) < 0:
+                v[:, 0] = -v[:, 0]
+            cached = self.__dict__["_diag"] = (np.maximum(w, MIN_INERTIA), v)
+        return cached
 
 
 def density_of(material: str) -> float:

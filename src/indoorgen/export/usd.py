@@ -443,14 +443,17 @@ def _write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: _Looks, instan
                 if pkey not in protos:
                     protos[pkey] = _define_prototype(stage, len(protos), asset, mats, looks,
                                                      cache, physics)
+                    _write_lights(stage, protos[pkey], asset)
                 prim.GetReferences().AddInternalReference(protos[pkey])
                 prim.SetInstanceable(True)
             else:
                 _write_link(stage, prim.GetPath(), asset, "base", mats, looks, cache, physics,
                             whole=True)
+                _write_lights(stage, prim.GetPath(), asset)
             if physics and not fixed:
                 _rigid_body(prim, inertial["base"])
-        _write_lights(stage, prim.GetPath(), asset)
+        if asset.joints:
+            _write_lights(stage, prim.GetPath(), asset)
 
 
 def _define_prototype(stage: Usd.Stage, k: int, asset: Asset, mats: dict[str, MatRef],

@@ -1,0 +1,125 @@
+"""Export benchmark: seconds per format and file sizes for a furnished room and a whole home.
+
+    python benchmarks/export.py [--seed 0] [--room living_room] [--floors 2] [--res 512]
+                                [--formats usd,urdf,mjcf,glb,obj] [--cold]
+
+Room: `indoorgen.generate` (default config), then every format. Home: the solidified
+architecture of a generated floorplan (`floorplan.generate_floorplan` + `solidify`) with the
+furnished room's objects copied into every room (translated to the room's centre) until whole
+homes are furnished by the pipeline; the figure is what exporting a home of that size costs.
+`--cold` bakes textures from scratch (an empty texture cache); otherwise the texture cache is
+warm after the first run. Targets (issue 5): home USD+URDF+MJCF <= 10 s, scene.usdc <= 100 MB
+with 512 px textures.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+
+def _size(p: Path) -> int:
+    if p.is_file():
+        return p.stat().st_size
+    return sum(f.stat().st_size for f in p.rglob("*") if f.is_file())
+
+
+def _mb(n: int) -> str:
+    return f"{n / 1e6:8.2f} MB"
+
+
+def run_formats(label: str, bundle, formats: str, res: int) -> None:
+    from indoorgen.export import parse_formats, write_formats
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp)
+        timings: dict[str, float] = {}
+        t = time.perf_counter()
+        write_formats(bundle, out, formats, texture_resolution=res, timings=timings)
+        total = time.perf_counter() - t
+        print(f"\n== {label}: {len(bundle.objects)} objects, {len(bundle.elements)} elements, "
+              f"{len(bundle.all_matrefs())} materials, textures {res} px")
+        for k, v in timings.items():
+            print(f"  {k:10s} {v:7.2f} s")
+        core = sum(timings.get(k, 0.0) for k in ("textures", "usd", "urdf", "mjcf"))
+        print(f"  {'total':10s} {total:7.2f} s   (textures+usd+urdf+mjcf: {core:.2f} s)")
+        names = {"usd": "scene.usdc", "urdf": "scene.urdf", "mjcf": "scene.xml",
+                 "glb": "scene.glb", "obj": "scene.obj"}
+        for f in parse_formats(formats):
+            if f in names and (out / names[f]).exists():
+                print(f"  {names[f]:12s} {_mb(_size(out / names[f]))}")
+        for d in ("textures", "meshes", "urdf", "obj"):
+            if (out / d).exists():
+                print(f"  {d + '/':12s} {_mb(_size(out / d))}")
+        print(f"  {'directory':12s} {_mb(_size(out))}")
+
+
+def home_bundle(seed: int, floors: int, room_gen):
+    """A whole home's architecture with `room_gen`'s objects copied into every room."""
+    from indoorgen.export.bundle import elements_from_architecture, make_bundle
+    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+    from indoorgen.floorplan.solidify import solidify
+    from indoorgen.scene import Pose, Scene, SceneObject
+
+    t = time.perf_counter()
+    arch = solidify(generate_floorplan(seed, FloorplanConfig(floors=floors)))
+    print(f"home architecture: {len(arch.rooms)} rooms, {len(arch.elements)} elements "
+          f"({time.perf_counter() - t:.1f} s to generate, not counted)")
+    src = room_gen.scene
+    src_room = next(iter(src.rooms.values()))
+    c0 = np.asarray(src_room.polygon, float).mean(axis=0)
+    scene = Scene(seed=seed)
+    assets = {}
+    full = room_gen.full_assets()
+    for rname, geo in arch.rooms.items():
+        scene.rooms[rname] = geo.room
+        c = np.asarray(geo.room.polygon, float).mean(axis=0)
+        for o in src.objects.values():
+            x, y, z = o.pose.position
+            name = f"{rname}__{o.name}"
+            scene.add_object(SceneObject(
+                name, o.generator, o.params, o.seed,
+                Pose((x - c0[0] + c[0], y - c0[1] + c[1], z + geo.elevation), o.pose.yaw),
+                o.tags, rname, [], o.stage))
+            assets[name] = full[o.name]
+    return make_bundle(scene, assets, elements_from_architecture(scene, arch))
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--room", default="living_room")
+    ap.add_argument("--floors", type=int, default=2)
+    ap.add_argument("--res", type=int, default=512)
+    ap.add_argument("--formats", default="usd,urdf,mjcf,glb,obj")
+    ap.add_argument("--home-formats", default="usd,urdf,mjcf")
+    ap.add_argument("--cold", action="store_true", help="empty texture cache")
+    ap.add_argument("--no-home", action="store_true")
+    args = ap.parse_args()
+    if args.cold:
+        os.environ["INDOORGEN_TEXTURE_CACHE"] = tempfile.mkdtemp(prefix="texcache-")
+
+    from indoorgen import generate
+    from indoorgen.export.bundle import bundle_from_generated
+    from indoorgen.pipeline import GenerateConfig
+
+    t = time.perf_counter()
+    gen = generate(args.seed, GenerateConfig(room_type=args.room))
+    print(f"generated {args.room} seed {args.seed} in {time.perf_counter() - t:.1f} s "
+          "(not counted)")
+    t = time.perf_counter()
+    bundle = bundle_from_generated(gen)
+    print(f"bundle (full assets, materials): {time.perf_counter() - t:.2f} s")
+    run_formats(f"furnished {args.room}", bundle, args.formats, args.res)
+    if not args.no_home:
+        t = time.perf_counter()
+        home = home_bundle(args.seed, args.floors, gen)
+        print(f"home bundle: {time.perf_counter() - t:.2f} s")
+        run_formats(f"whole home ({args.floors} storeys)", home, args.home_formats, args.res)
+
+
+if __name__ == "__main__":
+    main()
