@@ -8,6 +8,7 @@ inside), with their shelves and racks as `Subpart.Interior` surfaces.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import manifold3d as m3d
@@ -15,11 +16,11 @@ import numpy as np
 
 from ...tags import Semantics as S
 from ..base import Param, register
-from ..parts import MOVING_GAP, Part, bevel_box, box_between, cylinder
+from ..parts import MOVING_GAP, DoorJoint, Part, bevel_box, box_between, cylinder
 from ._common import PartsFactory, bottom_rect, support_rect
 from ._kitchen_common import (HANDLE_PROUD, OVERLAP, hinge_motion, interior_rect, joint_for,
-                              open_shell, pull_bar, slide_motion, slotted_plate, window_leaf,
-                              wire_rack)
+                              open_shell, pull_bar, rack_surface, slide_motion, slotted_plate,
+                              window_leaf, wire_rack)
 
 #: insulated wall thickness of cold appliances (m)
 COLD_WALL = 0.04
@@ -36,18 +37,39 @@ def _vent_slots(x_face: float, y0: float, y1: float, z0: float, z1: float, pitch
     return [box_between((x_face - 0.012, y0, z - h / 2), (x_face + 0.01, y1, z + h / 2)) for z in zs]
 
 
+BASKET_T, BASKET_PITCH = 0.005, 0.03  # dishwasher basket bar thickness and pitch (m)
+BASKET_GAP = 0.011  # clearance between a basket and the tub's side walls (m)
+
+
+def _basket_floor(x0: float, x1: float, y0: float, y1: float) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the floor of a basket running on rails that span y0..y1 (sunk into
+    the tub's side walls)."""
+    return x0, x1, y0 + BASKET_GAP, y1 - BASKET_GAP
+
+
+def _basket_inside(x0: float, x1: float, y0: float, y1: float) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) inside the walls of the basket on rails spanning y0..y1."""
+    fx0, fx1, fy0, fy1 = _basket_floor(x0, x1, y0, y1)
+    return fx0 + BASKET_T, fx1 - BASKET_T, fy0 + BASKET_T, fy1 - BASKET_T
+
+
 def _basket(x0: float, x1: float, y0: float, y1: float, z_top: float, wall_h: float) -> m3d.Manifold:
-    """A dishwasher basket: a rack floor whose top is at z_top (its ends sink into the tub's
-    side walls) with grille walls `wall_h` high along its four sides, inset 1 cm."""
-    t = 0.005
-    floor = wire_rack(x0, x1, y0, y1, z_top, t / 2, 0.03)
-    xa, xb, ya, yb = x0 + 0.01, x1 - 0.01, y0 + 0.011, y1 - 0.011
+    """A dishwasher basket: a grille floor whose top is at z_top with grille walls `wall_h`
+    high round its edges, on two rails along X whose ends (y0, y1) sink into the tub's walls."""
+    t = BASKET_T
+    fx0, fx1, fy0, fy1 = _basket_floor(x0, x1, y0, y1)
+    floor = wire_rack(fx0, fx1, fy0, fy1, z_top, t / 2, BASKET_PITCH)
     z0 = z_top - 0.001
-    sides = [slotted_plate(xb - xa, wall_h, t, 0.025, 0.004).rotate((90.0, 0.0, 0.0)).translate((xa, y, z0))
-             for y in (ya + t, yb)]
-    ends = [slotted_plate(yb - ya, wall_h, t, 0.025, 0.004).rotate((90.0, 0.0, 90.0)).translate((x, ya, z0))
-            for x in (xa, xb - t)]
-    return m3d.Manifold.batch_boolean([floor] + sides + ends, m3d.OpType.Add)
+    sides = [slotted_plate(fx1 - fx0, wall_h, t, 0.025,
+                           0.004).rotate((90.0, 0.0, 0.0)).translate((fx0, y, z0))
+             for y in (fy0 + t, fy1)]
+    ends = [slotted_plate(fy1 - fy0, wall_h, t, 0.025,
+                          0.004).rotate((90.0, 0.0, 90.0)).translate((x, fy0, z0))
+            for x in (fx0, fx1 - t)]
+    zr = z_top - t
+    rails = [box_between((fx0 + 0.02, ya, zr - 0.006), (fx1 - 0.02, yb, zr + 0.001))
+             for ya, yb in ((y0, fy0 + t), (fy1 - t, y1))]
+    return m3d.Manifold.batch_boolean([floor] + sides + ends + rails, m3d.OpType.Add)
 
 
 def _shelf_levels(z0: float, z1: float, n: int) -> list[float]:
@@ -72,6 +94,33 @@ def _grip(x_face: float, y_edge: float, toward: float, z0: float, z1: float, sty
 
 # ------------------------------------------------------------------------------- fridge
 FRIDGE_STYLES = ("single", "top_freezer", "bottom_freezer", "french")
+
+
+@dataclass(frozen=True)
+class _Leaf:
+    """A fridge door ("left"/"right": its hinge side) or drawer ("drawer") covering y0..y1,
+    z0..z1 of the front; `fridge` when it closes the fridge (not the freezer) compartment."""
+
+    link: str
+    kind: str
+    y0: float
+    y1: float
+    z0: float
+    z1: float
+    fridge: bool
+
+
+def _dispenser(slab: m3d.Manifold, x1: float, leaf: _Leaf) -> tuple[m3d.Manifold, list[Part]]:
+    """A water/ice dispenser in a door leaf whose front is at x1: a recess cut into the slab
+    (at most 1.2 m up), its dark back plate and a small display above it."""
+    dw, dh = 0.17, 0.26
+    yc, zc = (leaf.y0 + leaf.y1) / 2, min(leaf.z1 - 0.25 - dh / 2, 1.2)
+    slab = slab - box_between((x1 - 0.025, yc - dw / 2, zc - dh / 2), (x1 + 0.01, yc + dw / 2, zc + dh / 2))
+    plate = box_between((x1 - 0.026, yc - dw / 2 - 0.001, zc - dh / 2 - 0.001),
+                        (x1 - 0.024, yc + dw / 2 + 0.001, zc + dh / 2 + 0.001))
+    display = box_between((x1 - 0.001, yc - 0.04, zc + dh / 2 + 0.02),
+                          (x1 + 0.001, yc + 0.04, zc + dh / 2 + 0.06))
+    return slab, [Part(plate, "plastic", leaf.link), Part(display, "screen", leaf.link)]
 
 
 @register
@@ -118,65 +167,47 @@ class Fridge(PartsFactory):
         zd = zb + zf
         return {"fridge": (zd + w / 2, z1), "freezer": (z0, zd - w / 2)}
 
-    def _leaves(self, p) -> list[dict[str, Any]]:
-        """The doors and drawers: link, kind (hinge side or "drawer"), y0, y1, z0, z1, and
-        whether it closes the fridge compartment."""
+    def _leaves(self, p) -> list[_Leaf]:
+        """The doors and the freezer drawer, by style."""
         W, H, zb = p["width"], p["height"], p["base_height"]
         comp = self._compartments(p)
-        r = 0.002
-        hs = p["hinge_side"]
+        r, hs, full = 0.002, p["hinge_side"], (-W / 2, W / 2)
         if p["style"] == "single":
-            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=zb + r, z1=H, fridge=True)]
-        zd = (comp["fridge"][0] + comp["freezer"][1]) / 2 if p["style"] != "top_freezer" else \
-            (comp["fridge"][1] + comp["freezer"][0]) / 2
+            return [_Leaf("door_fridge", hs, *full, zb + r, H, True)]
+        if p["style"] == "top_freezer":
+            zd = (comp["fridge"][1] + comp["freezer"][0]) / 2
+        else:
+            zd = (comp["fridge"][0] + comp["freezer"][1]) / 2
         lo, hi = (zb + r, zd - r), (zd + r, H)
         if p["style"] == "top_freezer":
-            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1], fridge=True),
-                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1],
-                         fridge=False)]
+            return [_Leaf("door_fridge", hs, *full, *lo, True),
+                    _Leaf("door_freezer", hs, *full, *hi, False)]
         if p["style"] == "bottom_freezer":
-            return [dict(link="door_fridge", kind=hs, y0=-W / 2, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
-                    dict(link="door_freezer", kind=hs, y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1],
-                         fridge=False)]
-        return [dict(link="door_left", kind="left", y0=-W / 2, y1=-r, z0=hi[0], z1=hi[1], fridge=True),
-                dict(link="door_right", kind="right", y0=r, y1=W / 2, z0=hi[0], z1=hi[1], fridge=True),
-                dict(link="drawer_freezer", kind="drawer", y0=-W / 2, y1=W / 2, z0=lo[0], z1=lo[1],
-                     fridge=False)]
+            return [_Leaf("door_fridge", hs, *full, *hi, True),
+                    _Leaf("door_freezer", hs, *full, *lo, False)]
+        return [_Leaf("door_left", "left", -W / 2, -r, *hi, True),
+                _Leaf("door_right", "right", r, W / 2, *hi, True),
+                _Leaf("drawer_freezer", "drawer", *full, *lo, False)]
 
     def _handle_proud(self, p) -> float:
         return 0.05 if p["handle"] == "bar" else 0.03
 
-    def _leaf_parts(self, p, leaf) -> tuple[list[Part], Any]:
+    def _leaf_parts(self, p, leaf: _Leaf) -> tuple[list[Part], DoorJoint]:
+        """A leaf's parts (slab, gasket, handle, door bins or freezer basket) and its motion."""
         D, W, dt = p["depth"], p["width"], p["door_thickness"]
         fx = D / 2
         x0, x1 = fx + self.DOOR_GAP, fx + self.DOOR_GAP + dt
-        y0, y1, z0, z1, link = leaf["y0"], leaf["y1"], leaf["z0"], leaf["z1"], leaf["link"]
+        y0, y1, z0, z1, link = leaf.y0, leaf.y1, leaf.z0, leaf.z1, leaf.link
         er = min(p["edge_radius"], 0.4 * dt)
         slab = bevel_box((dt, y1 - y0, z1 - z0), ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2), er, 2)
         w = COLD_WALL
         cy0, cy1 = -W / 2 + w, W / 2 - w
+        extra: list[Part] = []
         if p["dispenser"] and link in ("door_fridge", "door_left") and y1 - y0 > 0.3 and z1 - z0 > 0.7:
-            dw, dh = 0.17, 0.26
-            yc, zc = (y0 + y1) / 2, min(z1 - 0.25 - dh / 2, 1.2)
-            slab = slab - box_between((x1 - 0.025, yc - dw / 2, zc - dh / 2),
-                                      (x1 + 0.01, yc + dw / 2, zc + dh / 2))
-            extra = [Part(box_between((x1 - 0.026, yc - dw / 2 - 0.001, zc - dh / 2 - 0.001),
-                                      (x1 - 0.024, yc + dw / 2 + 0.001,
-                                       zc + dh / 2 + 0.001)), "plastic", link),
-                     Part(box_between((x1 - 0.001, yc - 0.04, zc + dh / 2 + 0.02),
-                                      (x1 + 0.001, yc + 0.04, zc + dh / 2 + 0.06)), "screen", link)]
-        else:
-            extra = []
-        out = [Part(slab, "appliance", link), *extra]
-        # gasket: a rubber ring on the back of the leaf, standing in the door gap
-        g = 0.02
-        ring = box_between((x0 - self.DOOR_GAP + 0.0015, y0 + 0.01, z0 + 0.01),
-                           (x0 + 0.001, y1 - 0.01, z1 - 0.01)) - \
-            box_between((x0 - 0.02, y0 + 0.01 + g, z0 + 0.01 + g),
-                        (x0 + 0.01, y1 - 0.01 - g, z1 - 0.01 - g))
-        out.append(Part(ring, "rubber", link))
+            slab, extra = _dispenser(slab, x1, leaf)
+        out = [Part(slab, "appliance", link), *extra, Part(self._gasket(x0, leaf), "rubber", link)]
         hp = self._handle_proud(p)
-        if leaf["kind"] == "drawer":
+        if leaf.kind == "drawer":
             zc = z1 - 0.06
             out.append(Part(pull_bar(x1, (y0 + 0.12, zc), (y1 - 0.12, zc), hp, 0.011, 12), "metal", link))
             f0, f1 = self._compartments(p)["freezer"]
@@ -185,24 +216,32 @@ class Fridge(PartsFactory):
                                        (x0 + 0.001, cy1 - c, f1 - 0.03),
                                        0.005, open_top=True), "plastic", link))
             return out, slide_motion(link, (x1, 0.0, zc))
-        free_edge, toward = (y1, -1.0) if leaf["kind"] == "left" else (y0, 1.0)
+        free_edge, toward = (y1, -1.0) if leaf.kind == "left" else (y0, 1.0)
         L = self._handle_z(p, leaf)
         out.append(Part(_grip(x1, free_edge, toward, L[0], L[1], p["handle"], hp), "metal", link))
-        if leaf["fridge"]:  # door bins: open-topped trays on the inner face reaching into the cavity
+        if leaf.fridge:  # door bins: open-topped trays on the inner face reaching into the cavity
             by0 = max(y0, cy0) + 0.012
             by1 = min(y1, cy1) - 0.012
             for zt in _shelf_levels(z0 + 0.05, z1 - 0.1, 3):
                 out.append(Part(open_shell((fx - 0.05, by0, zt - 0.09), (x0 + 0.001, by1, zt), 0.004,
                                            open_top=True),
                                 "plastic", link))
-        return out, hinge_motion(leaf["kind"], x1, y0, y1, z0, z1, link)
+        return out, hinge_motion(leaf.kind, x1, y0, y1, z0, z1, link)
 
-    def _handle_z(self, p, leaf) -> tuple[float, float]:
+    def _gasket(self, x0: float, leaf: _Leaf) -> m3d.Manifold:
+        """A rubber ring on the back of a leaf (whose back is at x0), standing in the door gap."""
+        g, m = 0.02, 0.01
+        outer = box_between((x0 - self.DOOR_GAP + 0.0015, leaf.y0 + m, leaf.z0 + m),
+                            (x0 + 0.001, leaf.y1 - m, leaf.z1 - m))
+        return outer - box_between((x0 - 0.02, leaf.y0 + m + g, leaf.z0 + m + g),
+                                   (x0 + 0.01, leaf.y1 - m - g, leaf.z1 - m - g))
+
+    def _handle_z(self, p, leaf: _Leaf) -> tuple[float, float]:
         """(bottom, top) of a door's handle: fridge doors' around chest height (or next to the
         freezer door's), freezer doors' next to the split between the two doors."""
-        z0, z1 = leaf["z0"], leaf["z1"]
+        z0, z1 = leaf.z0, leaf.z1
         h = z1 - z0
-        if leaf["fridge"]:
+        if leaf.fridge:
             L = min(p["handle_length"], 0.7 * h)
             if p["style"] == "top_freezer":
                 za = z1 - 0.05 - L
@@ -293,6 +332,7 @@ class BeverageFridge(PartsFactory):
     }
 
     DOOR_T = 0.04
+    RACK = (0.0025, 0.028)  # wire shelf bar half-thickness and pitch (m)
 
     def _cavity(self, p) -> tuple[float, float, float, float, float, float]:
         D, W, H, zb, w = p["depth"], p["width"], p["height"], p["base_height"], COLD_WALL
@@ -342,8 +382,7 @@ class BeverageFridge(PartsFactory):
         sx1 = cx1 - 0.03
         for zs in self._shelves(p):
             if p["shelf_style"] == "wire":
-                out.append(Part(wire_rack(cx0 + 0.005, sx1, cy0 - 0.001, cy1 + 0.001, zs, 0.0025, 0.028),
-                                "metal"))
+                out.append(Part(wire_rack(*self._rack_extent(p), zs, *self.RACK), "metal"))
             else:
                 out.append(Part(box_between((cx0, cy0 - 0.001, zs - 0.006), (sx1, cy1 + 0.001, zs)),
                                 "glass"))
@@ -362,10 +401,22 @@ class BeverageFridge(PartsFactory):
         cx0, cx1, cy0, cy1, cz0, _ = self._cavity(p)
         out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),
                bottom_rect((-0.015, 0, 0), D / 2 - 0.015, W / 2)]
-        levels = [cz0 + LINER] + self._shelves(p)
-        for i, z in enumerate(levels):
-            out.append(interior_rect(f"interior_{i}", cx0 + LINER, cx1 - 0.03, cy0 + LINER, cy1 - LINER, z))
+        out.append(interior_rect("interior_0", cx0 + LINER, cx1 - 0.03, cy0 + LINER, cy1 - LINER,
+                                 cz0 + LINER))
+        x0, x1, y0, y1 = self._rack_extent(p)
+        for i, z in enumerate(self._shelves(p)):
+            if p["shelf_style"] == "wire":
+                out.append(rack_surface(f"interior_{i + 1}", x0, x1, y0, y1, z, *self.RACK,
+                                        (x0, x1, cy0 + LINER, cy1 - LINER)))
+            else:
+                out.append(interior_rect(f"interior_{i + 1}", cx0 + LINER, cx1 - 0.03, cy0 + LINER,
+                                         cy1 - LINER, z))
         return out
+
+    def _rack_extent(self, p) -> tuple[float, float, float, float]:
+        """(x0, x1, y0, y1) of the wire shelves (their ends sunk into the liner)."""
+        cx0, cx1, cy0, cy1, _, _ = self._cavity(p)
+        return cx0 + 0.005, cx1 - 0.03, cy0 - 0.001, cy1 + 0.001
 
 
 # ---------------------------------------------------------------------------- dishwasher
@@ -468,7 +519,7 @@ class Dishwasher(PartsFactory):
                     "plastic")]
         for i, zr in enumerate(self._racks(p)):
             wall_h = 0.1 if i == 0 else 0.07 if i == 1 else 0.03
-            out.append(Part(_basket(tx0 + 0.02, tx1 - 0.04, ty0 - 0.001, ty1 + 0.001, zr, wall_h), "metal"))
+            out.append(Part(_basket(*self._basket_extent(p), zr, wall_h), "metal"))
         # spray arm under the lower rack
         zs = self._racks(p)[0] - 0.025
         xc = (tx0 + tx1) / 2 - 0.01
@@ -482,10 +533,15 @@ class Dishwasher(PartsFactory):
         return [joint_for(self._door(p)[1])]
 
     def extra_surfaces(self, p):
-        D, W, zk = p["depth"], p["width"], p["kick_height"]
-        tx0, tx1, ty0, ty1, _, _ = self._tub(p)
+        D, W = p["depth"], p["width"]
         out = [bottom_rect((-0.03, 0, 0), D / 2 - 0.03, W / 2 - 0.02)]
+        extent = self._basket_extent(p)
         for i, z in enumerate(self._racks(p)):
-            out.append(interior_rect(f"interior_{i}", tx0 + 0.02, tx1 - 0.04, ty0 + 0.01, ty1 - 0.01, z,
-                                     0.005))
+            out.append(rack_surface(f"interior_{i}", *_basket_floor(*extent), z, BASKET_T / 2, BASKET_PITCH,
+                                    _basket_inside(*extent)))
         return out
+
+    def _basket_extent(self, p) -> tuple[float, float, float, float]:
+        """(x0, x1, y0, y1) of the baskets' floors (their ends sunk into the tub's walls)."""
+        tx0, tx1, ty0, ty1, _, _ = self._tub(p)
+        return tx0 + 0.02, tx1 - 0.04, ty0 - 0.001, ty1 + 0.001

@@ -16,8 +16,8 @@ from ..parts import (MOVING_GAP, Part, bevel_box, box, box_between, cylinder, kn
                      solid_union)
 from ._common import PartsFactory, bottom_rect, support_polygon, support_rect
 from ._kitchen_common import (OVERLAP, back_surface, hinge_motion, interior_rect, joint_for,
-                              open_shell, pull_bar, slide_motion, slotted_plate, window_leaf,
-                              wire_rack)
+                              open_shell, pull_bar, rack_surface, rects_polygon, slide_motion,
+                              slotted_plate, window_leaf, wire_rack)
 
 #: per burner count: burners (u, v, size class) and their grate cells (u0, u1, v0, v1), in
 #: fractions of the burner area's half extents (u along X, v along Y)
@@ -142,26 +142,8 @@ def hob_surfaces(style: str, region: tuple[float, float, float, float], z_top: f
     out = []
     for i, bars in enumerate(_grates(cells, burners, continuous)):
         out.append(support_polygon(f"grate_{i}", (0.0, 0.0, z_top + GRATE_HEIGHT),
-                                   _rects_union(bars, 0.0005)))
+                                   rects_polygon(bars, (), 0.0005)))
     return out
-
-
-def _rects_union(rects: list[tuple[float, float, float, float]], inset: float) -> sg.Polygon:
-    """The union of connected rectangles (x0, x1, y0, y1), shrunk by `inset`, as one polygon
-    with holes (2D booleans in manifold3d: much faster than shapely's)."""
-    squares = [m3d.CrossSection.square((b - a, d - c)).translate((a, c)) for a, b, c, d in rects]
-    union = m3d.CrossSection.batch_boolean(squares, m3d.OpType.Add).offset(-inset, m3d.JoinType.Miter)
-    rings = [np.asarray(r, float) for r in union.to_polygons()]
-    areas = [abs(_ring_area(r)) for r in rings]
-    k = int(np.argmax(areas))
-    outer = sg.Polygon(rings[k])
-    holes = [r for i, r in enumerate(rings) if i != k and outer.contains(sg.Point(r[0]))]
-    return sg.Polygon(rings[k], holes)
-
-
-def _ring_area(r: np.ndarray) -> float:
-    """Signed area of a closed 2D ring (N, 2) (shoelace)."""
-    return 0.5 * float(np.dot(r[:, 0], np.roll(r[:, 1], -1)) - np.dot(r[:, 1], np.roll(r[:, 0], -1)))
 
 
 # ------------------------------------------------------------------------------- cooktop
@@ -237,6 +219,26 @@ def _oven_door(x_face: float, y0: float, y1: float, z0: float, z1: float, t: flo
     return parts, hinge_motion("bottom", x1, y0, y1, z0, z1, link)
 
 
+RACK_R, RACK_PITCH = 0.0025, 0.03  # oven rack bar half-thickness and pitch (m)
+
+
+def _rack_extent(lo, hi) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the racks of an oven cavity lo..hi (ends sunk into the liner)."""
+    return lo[0] + 0.02, hi[0] - 0.03, lo[1] + 0.002, hi[1] - 0.002
+
+
+def _cavity_surfaces(lo, hi, racks: list[float], first: int = 0) -> list[Surface]:
+    """The `interior_i` surfaces of an oven cavity lo..hi: its enamel floor and each rack
+    (the tops of its bars, between the liner's side walls)."""
+    out = [interior_rect(f"interior_{first}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015, hi[1] - 0.015,
+                         lo[2] + 0.003, 0.005)]
+    x0, x1, y0, y1 = _rack_extent(lo, hi)
+    for i, zr in enumerate(racks):
+        out.append(rack_surface(f"interior_{first + i + 1}", x0, x1, y0, y1, zr, RACK_R, RACK_PITCH,
+                                (x0, x1, lo[1] + 0.003, hi[1] - 0.003)))
+    return out
+
+
 def _oven_cavity(lo, hi, racks: list[float], detail: bool) -> tuple[list[m3d.Manifold], list[Part]]:
     """(cutters, parts) of an oven cavity lo..hi open at +X: an enamel liner, side rails and
     wire racks whose tops are at the heights `racks`."""
@@ -248,8 +250,7 @@ def _oven_cavity(lo, hi, racks: list[float], detail: bool) -> tuple[list[m3d.Man
                              0.004),
                   "ceramic")]
     for zr in racks:
-        parts.append(Part(wire_rack(x0 + 0.02, x1 - 0.03, y0 + 0.002, y1 - 0.002, zr, 0.0025, 0.03),
-                          "metal"))
+        parts.append(Part(wire_rack(*_rack_extent(lo, hi), zr, RACK_R, RACK_PITCH), "metal"))
         for s in (-1, 1):  # runners the rack rests on
             ya, yb = (y0 - 0.001, y0 + 0.012) if s < 0 else (y1 - 0.012, y1 + 0.001)
             parts.append(Part(box_between((x0 + 0.01, ya, zr - 0.011), (x1 - 0.02, yb, zr - 0.004)),
@@ -360,13 +361,10 @@ class Oven(PartsFactory):
         return [joint_for(m) for _, m in self._door_parts(p)]
 
     def extra_surfaces(self, p):
-        out = []
+        out: list[Surface] = []
         for z0, z1 in self._doors(p):
             lo, hi = self._cavity_box(p, z0, z1)
-            for z in [lo[2] + 0.003] + self._racks(p, lo, hi):
-                out.append(interior_rect(f"interior_{len(out)}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015,
-                                         hi[1] - 0.015, z,
-                                         0.005))
+            out += _cavity_surfaces(lo, hi, self._racks(p, lo, hi), len(out))
         return out
 
 
@@ -499,10 +497,7 @@ class Range(PartsFactory):
         lo, hi = self._cavity(p)
         out = [*hob_surfaces(p["hob"], g["region"], H, g["n"], p["grates"] == "continuous", False),
                bottom_rect((-0.02, 0, 0), D / 2 - 0.04, W / 2 - 0.02)]  # the plinth
-        for i, z in enumerate([lo[2] + 0.003] + self._racks(p)):
-            out.append(interior_rect(f"interior_{i}", lo[0] + 0.02, hi[0] - 0.04, lo[1] + 0.015,
-                                     hi[1] - 0.015, z, 0.005))
-        return out
+        return out + _cavity_surfaces(lo, hi, self._racks(p))
 
 
 # ----------------------------------------------------------------------------- range hood
