@@ -13,10 +13,6 @@ import pytest
 
 log = logging.getLogger(__name__)
 
-#: living_room seed 0: the solver leaves tv_0 overhanging tv_stand_0 (one foot off the stand,
-#: reported); it tips and drops about 5 cm
-KNOWN_PLACEMENT_BUGS = {"living_room": "tv_0 overhangs tv_stand_0 (one foot off the top)"}
-
 
 def simulate(path, seconds: float = 2.0) -> dict[str, float]:
     """Free body name -> distance its origin moved after `seconds` under gravity."""
@@ -40,7 +36,7 @@ def stability(moved: dict[str, float]) -> tuple[float, float, list]:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("room", ["living_room", "dining_room"])
-def test_stability_under_gravity(exported, room, record_property, request):
+def test_stability_under_gravity(exported, room, record_property):
     bundle, d, _ = exported[room]
     moved = simulate(d / "scene.xml")
     assert len(moved) == sum(1 for o in bundle.objects if not bundle.is_fixed(o))
@@ -49,8 +45,6 @@ def test_stability_under_gravity(exported, room, record_property, request):
                                   "worst": top})
     log.warning("%s: %d free bodies, %.1f%% moved < 2 cm, max %.3f m (%s)", room, len(moved),
                 100 * frac, worst, top)
-    if room in KNOWN_PLACEMENT_BUGS and (frac < 0.99 or worst > 0.10):
-        request.applymarker(pytest.mark.xfail(reason=KNOWN_PLACEMENT_BUGS[room]))
     assert frac >= 0.99 and worst <= 0.10, (frac, worst, top)
 
 
