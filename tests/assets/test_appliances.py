@@ -258,6 +258,15 @@ def test_wall_mounted_back_lies_on_mesh(name, seed):
     assert back.polygon.area > 0.05
 
 
+@pytest.mark.parametrize("name,seed", [(n, s) for n in ("kitchen_base_cabinet", "countertop_run", "fridge",
+                                                        "beverage_fridge", "dishwasher", "range")
+                                       for s in SEEDS])
+def test_against_the_wall_back_is_flat(name, seed):
+    """Floor units that stand against a wall have a flat back on the bounding box's back."""
+    _, _, _, a = build(name, seed)
+    assert _on_mesh(a, a.surface("back")).max() < TOL
+
+
 def test_range_hood_lights_shine_down():
     for style in ("chimney_box", "chimney_pyramid", "under_cabinet"):
         _, p, a = _make("range_hood", style=style, n_lights=2)
