@@ -130,7 +130,8 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")
     g.add_argument("--out", help="output directory (default ./scene_SEED)")
-    g.add_argument("--usd-format", choices=["usda", "usdc"], default="usda")
+    g.add_argument("--usd-format", choices=["usda", "usdc"], default="usdc",
+                   help="binary .usdc (default) or text .usda")
     g.add_argument("--formats", default="usd,urdf,mjcf",
                    help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
     g.add_argument("--check", action="store_true",
@@ -154,6 +155,7 @@ def build_parser() -> argparse.ArgumentParser:
     sh.add_argument("--only", nargs="+", metavar="NAME", help="draw only these generators")
     sh.set_defaults(func=_cmd_assets_sheet)
     importlib.import_module("indoorgen.export.command").add_export_parsers(sub)
+    importlib.import_module("indoorgen.floorplan.command").add_floorplan_parser(sub)
     return p
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import matplotlib.image as mpimg
 import pytest
@@ -46,9 +47,7 @@ def test_same_seed_same_floorplan_json(tmp_path):
 
 
 def test_predefined_plan_and_contour(tmp_path):
-    from test_io_solidify import APARTMENT
-    src = tmp_path / "apartment.json"
-    src.write_text(json.dumps(APARTMENT))
+    src = Path(__file__).parent / "data" / "apartment.json"
     r = run("--plan", str(src), "--out", str(tmp_path / "apt"))
     assert r.returncode == 0, r.stderr
     assert json.loads((tmp_path / "apt" / "floorplan.json").read_text())["storeys"][0]["rooms"]

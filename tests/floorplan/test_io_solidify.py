@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import copy
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,37 +20,8 @@ from indoorgen.floorplan.usd import build_architecture_stage
 from indoorgen.scene import Room
 from indoorgen.tags import Subpart
 
-APARTMENT = {
-    "storeys": [{
-        "level": 0, "elevation": 0.0, "height": 2.7,
-        "rooms": [
-            {"name": "living_room_0", "type": "living_room",
-             "polygon": [[0, 0], [6, 0], [6, 5], [0, 5]]},
-            {"name": "kitchen_0", "type": "kitchen", "polygon": [[6, 0], [10, 0], [10, 5], [6, 5]]},
-            {"name": "bedroom_0", "type": "bedroom", "polygon": [[0, 5], [5, 5], [5, 8], [0, 8]]},
-            {"name": "bathroom_0", "type": "bathroom",
-             "polygon": [[5, 5], [7.5, 5], [7.5, 8], [5, 8]]},
-            {"name": "bedroom_1", "type": "bedroom",
-             "polygon": [[7.5, 5], [10, 5], [10, 8], [7.5, 8]]}],
-        "doors": [
-            {"name": "d0", "rooms": ["living_room_0", "bedroom_0"], "center": [2.5, 5],
-             "width": 0.9, "height": 2.05},
-            {"name": "d1", "rooms": ["living_room_0", "bathroom_0"], "center": [5.5, 5],
-             "width": 0.8, "height": 2.05},
-            {"name": "d2", "rooms": ["kitchen_0", "bedroom_1"], "center": [8.75, 5],
-             "width": 0.9, "height": 2.05}],
-        "windows": [
-            {"name": "w0", "room": "living_room_0", "center": [3, 0], "width": 1.5,
-             "height": 1.4, "sill": 0.9},
-            {"name": "w1", "room": "bedroom_0", "center": [0, 6.5], "width": 1.2, "height": 1.4,
-             "sill": 0.9},
-            {"name": "w2", "room": "kitchen_0", "center": [10, 2.5], "width": 1.0, "height": 1.2,
-             "sill": 1.05}],
-        "openings": [{"name": "o0", "rooms": ["living_room_0", "kitchen_0"], "center": [6, 2.5],
-                      "width": 2.0, "height": 2.7}]}],
-    "stairs": [],
-    "entrance": {"room": "living_room_0", "center": [0, 2.5]},
-}
+#: A hand-drawn five-room apartment with doors, an open kitchen, windows and a front door.
+APARTMENT = json.loads((Path(__file__).parent / "data" / "apartment.json").read_text())
 
 
 def test_predefined_plan_round_trips_and_solidifies(tmp_path):

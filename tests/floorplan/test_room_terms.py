@@ -43,12 +43,9 @@ def test_grid_measures_match_polygon_measures(seed, floors):
     plan = build_plan(seed, FloorplanConfig(floors=floors))
     ref = PolygonView(plan)
     for o in plan.room_ids():
-        measures = ["area", "aspect_ratio", "convexity", "wall_count", "exterior_length",
-                    "exterior_corners", "stair_coverage", "stair_iou", "path_directness",
-                    "ideal_area"]
-        if not plan.has_partial(o):  # the grid counts straight walls along the grid only
-            measures.append("longest_exterior_wall")
-        for m in measures:
+        for m in ("area", "aspect_ratio", "convexity", "wall_count", "exterior_length",
+                  "exterior_corners", "stair_coverage", "stair_iou", "path_directness",
+                  "ideal_area", "longest_exterior_wall"):
             assert getattr(plan, m)(o) == pytest.approx(getattr(ref, m)(o), abs=1e-6), (o, m)
         for w in (1.2, 2.0):
             assert plan.narrow_area(o, w) == pytest.approx(ref.narrow_area(o, w), abs=1e-6)

@@ -20,7 +20,8 @@ import networkx as nx
 import numpy as np
 
 from ..constraints.room_terms import MIN_DOOR_WALL
-from .grid import OUTSIDE, Grid, runs
+from .grid import OUTSIDE, Grid, room_polygon, runs
+from .view import polygon_exterior_runs
 from .rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
 
 
@@ -44,6 +45,13 @@ def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
         else:
             key = (min(r.left, r.right), max(r.left, r.right))
             door[key] = max(door.get(key, 0), r.length)
+    # spaces the outline cuts: their straight edges on the outline (any direction)
+    for s in np.unique(lab[grid.partial[labels >= 0]]).tolist():
+        poly = room_polygon(grid, labels == s)
+        if poly is not None:
+            walls = polygon_exterior_runs(np.asarray(poly.exterior.coords)[:-1], grid.contour)
+            if walls:
+                ext[s] = max(ext[s], int(walls[0][0] / grid.size + 1e-9))
     return area, in_stair, cells, ext, door
 
 

@@ -25,6 +25,9 @@ def add_floorplan_parser(subparsers) -> None:
                    help="ground-floor area in m^2 (default: from the rooms' typical areas)")
     p.add_argument("--contour", default=None,
                    help="JSON file with the ground-floor outline: [[x, y], ...]")
+    p.add_argument("--graph", default=None,
+                   help='JSON file fixing the room graph: {"storeys": [{"rooms": [...], '
+                        '"edges": [[a, b], ...]}], "entrance": ROOM}')
     p.add_argument("--plan", default=None,
                    help="a floorplan.json to solidify and draw instead of generating one")
     p.add_argument("--steps", type=int, default=None, help="annealing steps per storey")
@@ -33,13 +36,17 @@ def add_floorplan_parser(subparsers) -> None:
     p.set_defaults(func=run_floorplan)
 
 
-def _read_contour(path: str) -> list:
+def _read_json(path: str, option: str):
     try:
-        data = json.loads(Path(path).read_text())
+        return json.loads(Path(path).read_text())
     except FileNotFoundError:
-        raise ConfigError(f"--contour file {path!r} does not exist") from None
+        raise ConfigError(f"{option} file {path!r} does not exist") from None
     except (OSError, ValueError) as e:
-        raise ConfigError(f"--contour file {path!r} is not readable JSON: {e}") from None
+        raise ConfigError(f"{option} file {path!r} is not readable JSON: {e}") from None
+
+
+def _read_contour(path: str) -> list:
+    data = _read_json(path, "--contour")
     if isinstance(data, dict):
         data = data.get("contour", data.get("polygon"))
     if not isinstance(data, list):
@@ -69,7 +76,8 @@ def run_floorplan(args) -> int:
     out = Path(args.out or f"floorplan_{args.seed}")
     check_writable(out)
     cfg = FloorplanConfig(floors=args.floors, rooms=args.rooms, area=args.area,
-                          contour=_read_contour(args.contour) if args.contour else None)
+                          contour=_read_contour(args.contour) if args.contour else None,
+                          graph=_read_json(args.graph, "--graph") if args.graph else None)
     if args.steps is not None:
         cfg.anneal = AnnealConfig(steps_per_storey=args.steps)
     if args.plan:

@@ -193,8 +193,13 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
     if cfg.graph is not None:
         hg = cfg.graph if isinstance(cfg.graph, HomeGraph) else graph_from_spec(cfg.graph)
     else:
+        max_area = None
+        if cfg.contour is not None:
+            max_area = user_contour(cfg.contour).area
+        elif cfg.area is not None:
+            max_area = float(cfg.area)
         hg = sample_home_graph(lambda a: stream(seed, "floorplan", "graph", attempt, a),
-                               cfg.floors, counts)
+                               cfg.floors, counts, max_area=max_area)
     grids, rect = _contours(seed, attempt, cfg, hg)
     plan = GridPlan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect)
     for k in range(hg.n_storeys):

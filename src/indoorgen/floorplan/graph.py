@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import ConfigError
 from .rooms import (BALCONY, BATHROOM, BEDROOM, CLOSET, DINING, GARAGE, HALLWAY, KITCHEN, LIVING,
-                    STAIRCASE, UTILITY, check_room_type, room_type_of)
+                    STAIRCASE, TYPICAL_AREA, UTILITY, check_room_type, room_type_of)
 
 log = logging.getLogger(__name__)
 
@@ -295,11 +295,14 @@ def _finish(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]]) -> Hom
 
 
 def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: int = 1,
-                      counts: dict[str, int] | None = None, max_attempts: int = 400) -> HomeGraph:
+                      counts: dict[str, int] | None = None, max_attempts: int = 400,
+                      max_area: float | None = None) -> HomeGraph:
     """Sample a home graph of `n_storeys` storeys, optionally with fixed counts of room types.
 
     `rng_for(attempt)` gives the random stream of each attempt, so a rejected attempt never
-    shifts the randomness of the next. Raises ConfigError if no acceptable graph is found."""
+    shifts the randomness of the next. With `max_area` (a storey's area, when the user fixed
+    it), graphs whose storeys' typical areas add up to more than 1.25 times it are resampled
+    (unless counts are fixed). Raises ConfigError if no acceptable graph is found."""
     if not 1 <= n_storeys <= MAX_STOREYS:
         raise ConfigError(f"--floors {n_storeys} is out of range; a home has 1 to {MAX_STOREYS} "
                           "storeys")
@@ -321,6 +324,11 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
             continue
         if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY - (n_storeys > 1)
                               or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
+            continue
+        if not counts and max_area is not None and attempt < max_attempts // 2 and any(
+                sum(TYPICAL_AREA[g.nodes[n]["type"]] for n in g.nodes)
+                + (TYPICAL_AREA[STAIRCASE] if n_storeys > 1 else 0.0) > 1.25 * max_area
+                for g, _ in trees):
             continue
         hg = _finish(rng, trees)
         last = graph_problems(hg, counts or None)

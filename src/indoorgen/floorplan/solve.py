@@ -43,9 +43,9 @@ class AnnealConfig:
     """Annealing schedule: `steps_per_storey` steps per storey; temperature from `t_start` to
     `t_end` (exponential); `p_stair` of steps move the staircase in multi-storey homes."""
 
-    steps_per_storey: int = 400
-    t_start: float = 0.6
-    t_end: float = 0.005
+    steps_per_storey: int = 250
+    t_start: float = 0.2
+    t_end: float = 0.002
     p_stair: float = 0.08
     check: bool = False
     #: evaluate the program's hard constraints only at the start and the end (valid when the

@@ -24,21 +24,31 @@ from .rooms import MIN_AREA, TYPICAL_AREA, room_type_of
 _TURN = math.radians(20.0)
 
 
-def value_runs(code: np.ndarray) -> list[tuple[int, int, int, int]]:
-    """Maximal runs of equal non-negative values along axis 1 of a 2D int array:
-    (length, row, start, value)."""
-    n_rows, n = code.shape
-    flat = np.full((n_rows, n + 1), OUTSIDE, code.dtype)
-    flat[:, :n] = code
-    f = flat.ravel()
+def value_runs(*codes: np.ndarray) -> list[tuple[int, int, int, int, int]]:
+    """Maximal runs of equal non-negative values along axis 1 of 2D int arrays, all found in
+    one pass: (length, row, start, value, index of the array)."""
+    blocks, offsets, widths = [], [], []
+    pos = 0
+    for c in codes:
+        n_rows, n = c.shape
+        b = np.full((n_rows, n + 1), OUTSIDE, np.int64)
+        b[:, :n] = c
+        blocks.append(b.ravel())
+        offsets.append(pos)
+        widths.append(n + 1)
+        pos += b.size
+    f = np.concatenate(blocks) if len(blocks) > 1 else blocks[0]
     change = np.flatnonzero(f[1:] != f[:-1]) + 1
     starts = np.concatenate([[0], change])
     ends = np.concatenate([change, [len(f)]])
     vals = f[starts]
     keep = vals >= 0
     starts, ends, vals = starts[keep], ends[keep], vals[keep]
-    rows, cols = np.divmod(starts, n + 1)
-    return list(zip((ends - starts).tolist(), rows.tolist(), cols.tolist(), vals.tolist()))
+    which = np.searchsorted(np.asarray(offsets), starts, side="right") - 1
+    local = starts - np.asarray(offsets)[which]
+    rows, cols = np.divmod(local, np.asarray(widths)[which])
+    return list(zip((ends - starts).tolist(), rows.tolist(), cols.tolist(), vals.tolist(),
+                    which.tolist()))
 
 
 def all_runs(x: np.ndarray) -> list[tuple[int, int, int]]:
@@ -80,6 +90,20 @@ def longest_run(x: np.ndarray) -> tuple[int, int, int]:
     i = int(np.argmax(lengths))
     row, col = divmod(int(starts[i]), n + 1)
     return int(lengths[i]), row, col
+
+
+def polygon_exterior_runs(points, contour: sg.Polygon
+                          ) -> list[tuple[float, np.ndarray, np.ndarray]]:
+    """The edges of a room outline (CCW points) that lie on the storey outline: (length,
+    start, end), longest first."""
+    ring = contour.exterior
+    pts = np.asarray(points, float)
+    out = []
+    for a, b in zip(pts, np.roll(pts, -1, axis=0)):
+        if all(ring.distance(sg.Point(p)) < 1e-6 for p in (a, b, (a + b) / 2)):
+            out.append((float(np.hypot(*(b - a))), a, b))
+    out.sort(key=lambda r: (-r[0], r[1][0], r[1][1]))
+    return out
 
 
 class GridPlan(RoomView):
@@ -170,11 +194,15 @@ class GridPlan(RoomView):
         self._cache = snapshot
 
     def entry_point(self, level: int) -> np.ndarray:
-        if level > 0 or not self.graph.storeys:
-            sp = self.stair_polygon()
-            c = sp.centroid if sp is not None else self.contour(level).centroid
+        """Where a storey is entered: the front door on the ground floor (the middle of the
+        entrance room's longest outside wall), the staircase placeholder's centre above."""
+        if level == 0:
+            return self.front_door(self.graph.entrance)[1]
+        if self.stair_rect is None:
+            c = self.contour(level).centroid
             return np.array([c.x, c.y])
-        return self.front_door(self.graph.entrance)[1]
+        iy0, ix0, iy1, ix1 = self.stair_rect
+        return np.array(self.grids[0].xy((ix0 + ix1) / 2, (iy0 + iy1) / 2))
 
     # -- cells ---------------------------------------------------------------------------------
     def mask(self, o: str) -> np.ndarray:
@@ -326,9 +354,12 @@ class GridPlan(RoomView):
         return inter / (self.area(o) + sp - inter)
 
     def exterior_runs(self, o: str) -> list[tuple[float, np.ndarray, np.ndarray]]:
-        """Straight exterior walls of o along full cells: (length m, start xy, end xy), longest
-        first."""
+        """Straight exterior walls of o: (length m, start xy, end xy), longest first. Along
+        full cells they are read off the grid; a room the outline cuts (a bevel, an off-grid or
+        slanted outline) takes the straight edges of its polygon that lie on the outline."""
         def f():
+            if self.has_partial(o):
+                return self._polygon_exterior_runs(o)
             k, i = self.index[o]
             g = self.grids[k]
             ys, xs = self.bbox(o, 1)
@@ -337,28 +368,30 @@ class GridPlan(RoomView):
             # a cell edge is exterior if the cell across is outside the outline or the grid
             out_ = np.ones((lab.shape[0] + 2, lab.shape[1] + 2), bool)
             out_[1:-1, 1:-1] = lab == OUTSIDE
+            sides = ((0, 0, out_[:-2, 1:-1]), (0, 1, out_[2:, 1:-1]),
+                     (1, 0, out_[1:-1, :-2]), (1, 1, out_[1:-1, 2:]))
+            codes = [np.where(mine & across, 0, OUTSIDE) for _, _, across in sides]
+            codes = [c if axis == 0 else c.T for (axis, _, _), c in zip(sides, codes)]
             out = []
-            for axis, side, across in ((0, 0, out_[:-2, 1:-1]), (0, 1, out_[2:, 1:-1]),
-                                       (1, 0, out_[1:-1, :-2]), (1, 1, out_[1:-1, 2:])):
-                x = mine & across
-                if axis == 1:
-                    x = x.T
-                for length, row, start in all_runs(x):
-                    line = row + side
-                    if axis == 0:
-                        a = g.to_world(xs.start + start, ys.start + line)
-                        b = g.to_world(xs.start + start + length, ys.start + line)
-                    else:
-                        a = g.to_world(xs.start + line, ys.start + start)
-                        b = g.to_world(xs.start + line, ys.start + start + length)
-                    out.append((length * g.size, a, b))
+            for length, row, start, _, t in value_runs(*codes):
+                axis, side, _ = sides[t]
+                line = row + side
+                if axis == 0:
+                    a = g.xy(xs.start + start, ys.start + line)
+                    b = g.xy(xs.start + start + length, ys.start + line)
+                else:
+                    a = g.xy(xs.start + line, ys.start + start)
+                    b = g.xy(xs.start + line, ys.start + start + length)
+                out.append((length * g.size, np.array(a), np.array(b)))
             out.sort(key=lambda r: (-r[0], r[1][0], r[1][1]))
             return out
         return self.cached(o, "ext_runs", f)
 
+    def _polygon_exterior_runs(self, o: str) -> list[tuple[float, np.ndarray, np.ndarray]]:
+        return polygon_exterior_runs(self.outline_points(o), self.contour(self.level(o)))
+
     def longest_exterior_wall(self, o: str) -> float:
-        """Longest straight exterior wall along the grid (a bevel's diagonal or arc does not
-        count: doors and windows go on grid walls)."""
+        """Longest straight exterior wall (m): room for a window or the front door."""
         runs = self.exterior_runs(o)
         return runs[0][0] if runs else 0.0
 
@@ -383,16 +416,15 @@ class GridPlan(RoomView):
             other = np.where(full & (lab != i), lab, OUTSIDE)
             best: dict[int, tuple[float, tuple[float, float]]] = {}
             # horizontal grid lines between rows r and r+1, vertical between cols c and c+1
-            for axis, code in ((0, np.where(mine[:-1], other[1:], np.where(mine[1:], other[:-1], OUTSIDE))),
-                               (1, np.where(mine[:, :-1], other[:, 1:],
-                                            np.where(mine[:, 1:], other[:, :-1], OUTSIDE)).T)):
-                for length, row, start, lab_j in value_runs(code):
-                    L = length * g.size
-                    if L > best.get(lab_j, (0.0,))[0]:
-                        mid = start + length / 2
-                        p = g.xy(xs.start + mid, ys.start + row + 1) if axis == 0 else \
-                            g.xy(xs.start + row + 1, ys.start + mid)
-                        best[lab_j] = (L, p)
+            h = np.where(mine[:-1], other[1:], np.where(mine[1:], other[:-1], OUTSIDE))
+            v = np.where(mine[:, :-1], other[:, 1:], np.where(mine[:, 1:], other[:, :-1], OUTSIDE))
+            for length, row, start, lab_j, axis in value_runs(h, v.T):
+                L = length * g.size
+                if L > best.get(lab_j, (0.0,))[0]:
+                    mid = start + length / 2
+                    p = g.xy(xs.start + mid, ys.start + row + 1) if axis == 0 else \
+                        g.xy(xs.start + row + 1, ys.start + mid)
+                    best[lab_j] = (L, p)
             return best
         return self.cached(o, "walls", f)
 

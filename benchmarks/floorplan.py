@@ -1,0 +1,104 @@
+"""Floorplan benchmark: seconds per home, rule checks over many seeds, objective terms.
+
+    python benchmarks/floorplan.py [--seeds 100] [--floors 1 2 3] [--steps N] [--jobs 1]
+
+For each number of storeys, generates homes for seeds 0..N-1 and prints the median and 90th
+percentile seconds (wall and CPU) of the floorplan stage (graph -> annealing -> openings) and of
+solidification, the median for one-storey homes of 6-9 rooms, how many homes break a rule of
+`floorplan.check` (should be 0), and the objective and each of its twelve terms (weighted)
+before and after annealing, averaged over the seeds.
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+
+import numpy as np
+
+from indoorgen.floorplan.check import floorplan_problems
+from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.floorplan.solidify import solidify
+from indoorgen.floorplan.solve import AnnealConfig
+from indoorgen.programs.floorplan import floorplan as default_program
+
+
+def one(job: tuple[int, int, int | None]) -> dict:
+    seed, floors, steps = job
+    cfg = FloorplanConfig(floors=floors)
+    if steps is not None:
+        cfg.anneal = AnnealConfig(steps_per_storey=steps)
+    w0, c0 = time.perf_counter(), time.process_time()
+    try:
+        fp = generate_floorplan(seed, cfg)
+    except Exception as e:  # reported, not fatal: the benchmark counts failures
+        return {"seed": seed, "error": f"{type(e).__name__}: {e}"}
+    w1, c1 = time.perf_counter(), time.process_time()
+    solidify(fp)
+    w2, c2 = time.perf_counter(), time.process_time()
+    stats = fp.info["stats"]
+    return {"seed": seed, "rooms": [len(s.rooms) for s in fp.storeys],
+            "wall": w1 - w0, "cpu": c1 - c0, "solid_wall": w2 - w1, "solid_cpu": c2 - c1,
+            "problems": floorplan_problems(fp, fp.info["contours"]),
+            "start": stats.start.scores, "end": stats.end.scores,
+            "loss": (stats.start.loss, stats.end.loss), "timings": fp.info["timings_s"]}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", type=int, default=100)
+    ap.add_argument("--floors", type=int, nargs="+", default=[1, 2, 3])
+    ap.add_argument("--steps", type=int, default=None, help="annealing steps per storey")
+    ap.add_argument("--jobs", type=int, default=1, help="worker processes (timings are per "
+                    "process; use 1 for clean figures)")
+    args = ap.parse_args()
+    weights = {k: t.weight for k, t in default_program().score_terms.items()}
+    generate_floorplan(0, FloorplanConfig(anneal=AnnealConfig(steps_per_storey=5)))  # warm up
+    for floors in args.floors:
+        jobs = [(s, floors, args.steps) for s in range(args.seeds)]
+        if args.jobs > 1:
+            with ProcessPoolExecutor(args.jobs) as ex:
+                rows = list(ex.map(one, jobs))
+        else:
+            rows = [one(j) for j in jobs]
+        ok = [r for r in rows if "error" not in r]
+        errors = [r for r in rows if "error" in r]
+        bad = [r for r in ok if r["problems"]]
+        q = lambda xs, p: float(np.percentile(xs, p)) if xs else float("nan")
+        wall = [r["wall"] for r in ok]
+        cpu = [r["cpu"] for r in ok]
+        print(f"== {floors} storey(s), {len(rows)} seeds ==")
+        print(f"  floorplan stage  median {statistics.median(wall):.3f} s wall, "
+              f"{statistics.median(cpu):.3f} s CPU; p90 {q(wall, 90):.3f} s wall")
+        print(f"    of which init {statistics.median([r['timings']['init'] for r in ok]):.3f} s, "
+              f"anneal {statistics.median([r['timings']['anneal'] for r in ok]):.3f} s (median)")
+        print(f"  solidify         median {statistics.median([r['solid_wall'] for r in ok]):.3f}"
+              f" s wall, {statistics.median([r['solid_cpu'] for r in ok]):.3f} s CPU")
+        if floors == 1:
+            mid = [r for r in ok if 6 <= r["rooms"][0] <= 9]
+            if mid:
+                print(f"  one storey, 6-9 rooms ({len(mid)} homes): median "
+                      f"{statistics.median([r['wall'] for r in mid]):.3f} s wall, "
+                      f"{statistics.median([r['cpu'] for r in mid]):.3f} s CPU")
+        print(f"  rooms per storey: mean {np.mean([np.mean(r['rooms']) for r in ok]):.1f}")
+        print(f"  homes breaking a rule: {len(bad)}   generation errors: {len(errors)}")
+        for r in bad[:5]:
+            print(f"    seed {r['seed']}: {r['problems'][:3]}")
+        for r in errors[:5]:
+            print(f"    seed {r['seed']}: {r['error']}")
+        s0 = np.mean([r["loss"][0] for r in ok])
+        s1 = np.mean([r["loss"][1] for r in ok])
+        lower = sum(1 for r in ok if r["loss"][1] < r["loss"][0])
+        print(f"  objective: mean {s0:.3f} -> {s1:.3f}  (lower in {lower}/{len(ok)} homes)")
+        print(f"  {'term (weighted, mean over homes)':50s} {'start':>8s} {'end':>8s}")
+        for k, w in weights.items():
+            a = np.mean([w * r["start"][k] for r in ok])
+            b = np.mean([w * r["end"][k] for r in ok])
+            print(f"  {k:50s} {a:8.3f} {b:8.3f}")
+        sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()
