@@ -2,7 +2,6 @@
 deterministic, and can be furnished room by room by the existing object solver."""
 from __future__ import annotations
 
-import numpy as np
 import pytest
 import shapely.geometry as sg
 

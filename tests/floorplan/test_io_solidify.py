@@ -138,7 +138,6 @@ def test_stairs_and_floor_opening(two_storeys):
     assert upper.room.room_type == "staircase_room"
     # the floor slab of the room above has the flight's opening cut out
     c = hole.centroid
-    import trimesh
     hits = upper.floor.ray.intersects_any(
         np.array([[c.x, c.y, 10.0]]), np.array([[0.0, 0.0, -1.0]]))
     assert not hits[0]

@@ -2,7 +2,6 @@
 evaluator stays incremental and exact under floorplan moves, and users can write programs."""
 from __future__ import annotations
 
-import numpy as np
 import pytest
 import shapely.geometry as sg
 

@@ -416,7 +416,8 @@ stair_iou = _term("stair_iou", "Intersection over union of the room and the stai
 
 
 storey_area = _term("storey_area", "Floor area of a storey (m^2): its outline's area.")
-outline_length = _term("outline_length", "Length of a storey's outline (m): all its exterior walls.")
+outline_length = _term("outline_length",
+                       "Length of a storey's outline (m): all its exterior walls.")
 outline_corners = _term("outline_corners", "Corners of a storey's outline.")
 
 

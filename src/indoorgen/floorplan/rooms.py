@@ -105,8 +105,11 @@ def parse_room_counts(spec: str | dict | None) -> dict[str, int]:
     from ..errors import ConfigError
     if spec is None or spec == "":
         return {}
-    items = spec.items() if isinstance(spec, dict) else (
-        tuple(p.split("=", 1)) if "=" in p else (p, None) for p in str(spec).split(","))
+    if isinstance(spec, dict):
+        items = list(spec.items())
+    else:
+        items = [tuple(p.split("=", 1)) if "=" in p else (p, None)
+                 for p in str(spec).split(",") if p.strip()]
     out: dict[str, int] = {}
     for k, v in items:
         if v is None:
@@ -115,7 +118,8 @@ def parse_room_counts(spec: str | dict | None) -> dict[str, int]:
         try:
             n = int(v)
         except (TypeError, ValueError):
-            raise ConfigError(f"--rooms count for {k!r} must be a whole number, got {v!r}") from None
+            raise ConfigError(f"--rooms count for {k!r} must be a whole number, "
+                              f"got {v!r}") from None
         if n < 0 or n > 12:
             raise ConfigError(f"--rooms count for {k!r} is {n}; it must be between 0 and 12")
         out[t] = n
