@@ -39,6 +39,23 @@ def test_all_generators_registered():
     assert EXPECTED <= set(NAMES), EXPECTED - set(NAMES)
 
 
+def test_catalogue_is_wide():
+    """The catalogue's size (issue 3): at least 90 generators and 800 documented parameters,
+    with every group of the coverage list represented."""
+    factories = [get_factory(n) for n in NAMES]
+    assert len(factories) >= 90
+    assert sum(len(f.params) for f in factories) >= 800
+    groups = [Semantics.Appliance, Semantics.BathroomFixture, Semantics.Seating, Semantics.Bed,
+              Semantics.Table, Semantics.Storage, Semantics.Lighting, Semantics.Decor,
+              Semantics.SmallObject, Semantics.Plant, Semantics.Warehouse]
+    for g in groups:
+        assert sum(g in f.tags for f in factories) >= 2, g
+    articulated = [f.name for f in factories
+                   if any(f.joints(f.resolve(f.sample_params(np.random.default_rng(k))))
+                          for k in range(6))]
+    assert len(articulated) >= 25, articulated
+
+
 @pytest.mark.parametrize("name", NAMES)
 def test_factory_declaration(name):
     f = get_factory(name)

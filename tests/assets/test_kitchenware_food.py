@@ -18,7 +18,7 @@ MINE = ["bowl", "mug", "wineglass", "glass_tumbler", "wine_bottle", "beer_bottle
         "pot_lid", "knife", "fork", "spoon", "chopsticks", "spatula", "cutting_board",
         "book_stack", "leaning_books"]
 #: vessels whose `interior` surface is their inner floor, reachable from above
-VESSELS = ["bowl", "mug", "glass_tumbler", "jar", "cooking_pot", "frying_pan", "fruit_bowl"]
+VESSELS = ["bowl", "mug", "glass_tumbler", "jar", "cooking_pot", "frying_pan"]  # not fruit_bowl: fruit fill it
 UTENSILS = ["knife", "fork", "spoon", "chopsticks", "spatula"]
 SEEDS = range(5)
 

@@ -20,15 +20,18 @@ def test_generate_writes_every_output(tmp_path):
     out = tmp_path / "scene"
     r = run("generate", "--seed", "3", "--room", "dining_room", "--out", str(out))
     assert r.returncode == 0, r.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["plan.png", "report.json", "scene.json",
-                                                     "scene.usda"]
+    # the default formats: USD, URDF (per object + whole scene) and MJCF, with their meshes
+    # and baked textures
+    assert sorted(p.name for p in out.iterdir()) == [
+        "meshes", "plan.png", "report.json", "scene.json", "scene.urdf", "scene.usdc",
+        "scene.xml", "textures", "urdf"]
     scene = json.loads((out / "scene.json").read_text())
     report = json.loads((out / "report.json").read_text())
     assert len(scene["objects"]) == report["objects"] > 10
     assert {"large", "medium", "small"} == {s["stage"] for s in report["stages"]}
     for s in report["stages"]:
         assert s["steps"] > 0 and s["seconds"] > 0
-    stage = Usd.Stage.Open(str(out / "scene.usda"))
+    stage = Usd.Stage.Open(str(out / "scene.usdc"))
     assert UsdGeom.GetStageUpAxis(stage) == "Z"
     assert stage.GetDefaultPrim().GetPath() == "/World"
     for o in scene["objects"]:

@@ -418,13 +418,19 @@ def box_uv(vertices: np.ndarray, faces: np.ndarray, scale: float = 1.0) -> np.nd
     return uv * scale
 
 
-def convex_pieces(parts: Sequence[Part], max_pieces: int = 48) -> list[tuple[str, m3d.Manifold]]:
+def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool = False
+                  ) -> list[tuple[str, m3d.Manifold]]:
     """Convex collision pieces (link, hull) for simulators: the convex hull of each part, since
-    generators build objects from simple parts. Beyond `max_pieces` per link (foliage, many
-    slats), neighbouring parts are grouped by their centres and each group hulled."""
+    generators build objects from simple parts. With `decompose`, a part that is far from
+    convex (a hollow carcass, a bowl, an L-shaped board) is first cut into nearly convex
+    pieces, so that what goes inside it (a drawer, a lid, an apple) is not inside its collision
+    shape. Beyond `max_pieces` per link (foliage, many slats), neighbouring pieces are grouped by
+    their centres and each group hulled."""
     out: list[tuple[str, m3d.Manifold]] = []
     for link in link_names(parts):
         mine = [p.solid for p in parts if p.link == link and not p.solid.is_empty()]
+        if decompose:
+            mine = [piece for solid in mine for piece in convex_split(solid)]
         if len(mine) > max_pieces:
             centres = np.array([(np.asarray(s.bounding_box()[:3]) + s.bounding_box()[3:]) / 2
                                 for s in mine])
@@ -432,6 +438,43 @@ def convex_pieces(parts: Sequence[Part], max_pieces: int = 48) -> list[tuple[str
             mine = [solid_union([mine[i] for i in g]) for g in groups]
         out.extend((link, s.hull()) for s in mine)
     return out
+
+
+#: a piece whose volume fills at least this share of its convex hull counts as convex
+CONVEX_FILL = 0.85
+#: parts whose hull is smaller than this (m^3, 2 litres) keep their hull: a leaf, a cup
+MIN_SPLIT_VOLUME = 0.002
+
+
+def convex_split(solid: m3d.Manifold, depth: int = 4) -> list[m3d.Manifold]:
+    """Cut a solid into pieces that each nearly fill their convex hull: recursively split it by
+    the axis-aligned plane through the middle of its bounding box (along x, y or z) that leaves
+    the least empty hull volume, up to `depth` times (at most 2**depth pieces). Small solids
+    (hull under MIN_SPLIT_VOLUME) stay whole."""
+    vol = solid.volume()
+    if vol <= 0:
+        return []
+    hull_vol = solid.hull().volume()
+    if depth == 0 or vol >= CONVEX_FILL * hull_vol or hull_vol < MIN_SPLIT_VOLUME:
+        return [solid]
+    lo = np.asarray(solid.bounding_box()[:3], float)
+    hi = np.asarray(solid.bounding_box()[3:], float)
+    best, best_waste = None, hull_vol - vol
+    for axis in range(3):
+        if hi[axis] - lo[axis] < 1e-3:
+            continue
+        cut = (lo[axis] + hi[axis]) / 2
+        on_axis = np.arange(3) == axis
+        halves = [solid ^ box_between(lo - 1, np.where(on_axis, cut, hi + 1)),
+                  solid ^ box_between(np.where(on_axis, cut, lo - 1), hi + 1)]
+        if min(h.volume() for h in halves) <= 1e-12:
+            continue
+        waste = sum(h.hull().volume() - h.volume() for h in halves)
+        if waste < best_waste:
+            best, best_waste = halves, waste
+    if best is None:
+        return [solid]
+    return [piece for h in best for piece in convex_split(h, depth - 1)]
 
 
 def _group_by_position(points: np.ndarray, k: int) -> list[list[int]]:

@@ -1,6 +1,6 @@
 """A kitchen: cabinet runs along the walls with a fridge and a cooker, wall cabinets above,
 maybe an island with stools, and kitchenware on the counters."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, scene
+from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
 from ..tags import Semantics as S
 from .common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
 
@@ -8,13 +8,14 @@ from .common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_t
 def kitchen(room) -> Problem:
     floor = scene().related_to(room, on_floor)
     along_walls = floor.related_to(room, against_wall)
-    cabinets = along_walls[S.KitchenCabinet].excluding(S.KitchenIsland)
+    cabinets = along_walls[S.KitchenCabinet].excluding(S.KitchenIsland, S.WallMounted)
     fridges = along_walls[S.Fridge]
     cookers = along_walls[S.Range]
     dishwashers = along_walls[S.Dishwasher]
     islands = floor[S.KitchenIsland]
     stools = floor[S.Stool]
     wall_cabinets = scene()[S.WallCabinet].related_to(room, on_wall)
+    hoods = scene()[S.RangeHood].related_to(room, on_wall)
     lights = scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling)
     counters = cabinets | islands
     kitchenware = scene()[S.Kitchenware].related_to(counters, on_top)
@@ -31,6 +32,7 @@ def kitchen(room) -> Problem:
             "stools only at the island": islands.all(
                 lambda i: stools.related_to(i, at_table).count().in_range(0, 4)),
             "wall cabinets": wall_cabinets.count().in_range(0, 3),
+            "a hood at most": hoods.count().in_range(0, 1),
             "a ceiling light": lights.count().in_range(1, 2),
             "a microwave at most": appliances_on_counters.count().in_range(0, 1),
             "kitchenware out": kitchenware.count().in_range(1, 6),
@@ -44,6 +46,10 @@ def kitchen(room) -> Problem:
             "island clear of the runs": islands.mean(
                 lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
             "stools at the island": stools.count().maximize(0.3),
+            "a hood over the cooker": hoods.mean(
+                lambda h: h.distance(cookers).hinge(0.0, 0.05)).minimize(3),
+            "hood at head height": hoods.mean(lambda h: height(h).hinge(1.7, 2.0)).minimize(2),
+            "extraction": hoods.count().maximize(0.5),
             "wall cabinets over counters": wall_cabinets.mean(
                 lambda w: w.distance(cabinets).hinge(0.0, 0.05)).minimize(2),
             "square to the walls": angle_alignment_cost(floor, room).minimize(1),

@@ -115,7 +115,7 @@ class PartsFactory(AssetFactory):
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.corner_uv = box_uv(asset.mesh.vertices, asset.mesh.faces)
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
-                           for link, h in convex_pieces(parts)]
+                           for link, h in convex_pieces(parts, decompose=True)]
         return asset
 
 

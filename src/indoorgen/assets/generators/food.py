@@ -538,6 +538,5 @@ class FruitBowl(PartsFactory):
             Part(s, "food") for f, o in fruits for s in f.solids(o)]
 
     def extra_surfaces(self, p):
-        v = bowl_vessel(p)
-        return [round_bottom("bottom", bowl_base_radius(p)),
-                interior_floor("interior", v.floor_z, v.floor_r)]
+        # no interior surface: the fruit fill the bowl's floor, nothing else goes in
+        return [round_bottom("bottom", bowl_base_radius(p))]
