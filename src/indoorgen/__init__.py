@@ -5,9 +5,10 @@
     indoorgen.write_scene_dir(result, "scene_0")
 """
 from .errors import IndoorGenError
-from .pipeline import GenerateConfig, Generated, generate, write_scene_dir
+from .pipeline import (GenerateConfig, Generated, HomeConfig, generate, generate_home,
+                       write_scene_dir)
 from .scene import Pose, Room, Scene, SceneObject
 
 __version__ = "0.1.0"
-__all__ = ["GenerateConfig", "Generated", "IndoorGenError", "Pose", "Room", "Scene",
-           "SceneObject", "generate", "write_scene_dir", "__version__"]
+__all__ = ["GenerateConfig", "Generated", "HomeConfig", "IndoorGenError", "Pose", "Room", "Scene",
+           "SceneObject", "generate", "generate_home", "write_scene_dir", "__version__"]

@@ -34,15 +34,38 @@ def _load_program(spec: str):
 
 
 def _cmd_generate(args) -> int:
-    from .outputs import check_writable
     from .export import parse_formats
-    from .pipeline import GenerateConfig, generate, write_scene_dir
+    from .outputs import check_writable
+    from .pipeline import generate, generate_home, write_scene_dir
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out)
     formats = parse_formats(args.formats)
     if args.seed < 0:
         raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
-    cfg = GenerateConfig(room_type=args.room, size=tuple(args.size) if args.size else None,
+    progress = not args.quiet and sys.stderr.isatty()
+    room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
+    home_opts = [o for o in ("floors", "rooms", "area", "floorplan")
+                 if getattr(args, o) is not None]
+    if room_opts and home_opts:
+        raise ConfigError(f"--{room_opts[0]} makes a single room and --{home_opts[0]} a whole "
+                          "home; give options of one kind only")
+    if room_opts:
+        gen = generate(args.seed, _room_config(args), progress=progress)
+    else:
+        gen = generate_home(args.seed, _home_config(args), progress=progress)
+    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats)
+    if not args.quiet:
+        rep = gen.report
+        viol = sum(r["n_violated"] for r in rep["rooms"].values())
+        print(f"{out}: {len(gen.scene.rooms)} room(s), {rep['objects']} objects, {viol} hard "
+              f"constraints violated, {rep['timings_s']['total']:.2f} s")
+    return 0
+
+
+def _room_config(args):
+    from .pipeline import GenerateConfig
+    cfg = GenerateConfig(room_type=args.room or "living_room",
+                         size=tuple(args.size) if args.size else None,
                          program=_load_program(args.program) if args.program else None,
                          check=args.check)
     if args.polygon:
@@ -51,14 +74,23 @@ def _cmd_generate(args) -> int:
         except (ValueError, TypeError):
             raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
                               f"{args.polygon!r}") from None
-    gen = generate(args.seed, cfg, progress=not args.quiet and sys.stderr.isatty())
-    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats)
-    if not args.quiet:
-        rep = gen.report
-        viol = sum(r["n_violated"] for r in rep["rooms"].values())
-        print(f"{out}: {rep['objects']} objects, {viol} hard constraints violated, "
-              f"{rep['timings_s']['total']:.2f} s")
-    return 0
+    return cfg
+
+
+def _home_config(args):
+    from .pipeline import HomeConfig
+    plan = None
+    if args.floorplan:
+        try:
+            plan = json.loads(Path(args.floorplan).read_text())
+        except FileNotFoundError:
+            raise ConfigError(f"--floorplan {args.floorplan}: no such file") from None
+        except (ValueError, OSError) as e:
+            raise ConfigError(f"--floorplan {args.floorplan} is not a floorplan.json "
+                              f"({type(e).__name__}: {e})") from None
+    return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
+                      area=args.area,
+                      floorplan=plan, check=args.check)
 
 
 def _cmd_validate(args) -> int:
@@ -117,15 +149,22 @@ def _cmd_assets_sheet(args) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="indoorgen", description="Procedural furnished rooms.")
+    p = argparse.ArgumentParser(prog="indoorgen",
+                                description="Procedural furnished homes and rooms.")
     p.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
     sub = p.add_subparsers(dest="command", required=True)
 
-    g = sub.add_parser("generate", help="generate a furnished room into a directory")
+    g = sub.add_parser("generate", help="generate a furnished home (or one room) into a directory")
     g.add_argument("--seed", type=int, default=0)
-    g.add_argument("--room", default="living_room",
-                   help="room type: living_room, dining_room, bedroom, kitchen, bathroom, office, "
-                        "closet, hallway, utility, staircase_room, garage, balcony, warehouse")
+    home = g.add_argument_group("a whole home (the default)")
+    home.add_argument("--floors", type=int, help="storeys, 1-3 (default 1)")
+    home.add_argument("--rooms", help="room counts, e.g. bedroom=2,bathroom=1")
+    home.add_argument("--area", type=float, help="ground-floor area in m^2")
+    home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
+    g.add_argument("--room",
+                   help="one room of this type instead of a home: living_room, dining_room, "
+                        "bedroom, kitchen, bathroom, office, closet, hallway, utility, "
+                        "staircase_room, garage, balcony, warehouse")
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
     g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")

@@ -85,6 +85,8 @@ class Generated:
     cache: AssetCache
     results: dict[str, Result]
     report: dict[str, Any] = field(default_factory=dict)
+    #: the solidified home (floorplan.solidify.Architecture) when this is a whole home
+    architecture: Any = None
 
     def full_assets(self) -> dict[str, Asset]:
         return {n: self.cache.full(o.generator, o.params) for n, o in self.scene.objects.items()}
@@ -130,22 +132,88 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
              ) -> Generated:
     """Generate one furnished room from `seed`. Same seed + config + version => same scene."""
     cfg = config or GenerateConfig()
-    timings: dict[str, float] = {}
     t0 = time.perf_counter()
     room = _make_room(seed, cfg)
     geometry = {room.name: build_room(room)}
     program = cfg.program or get_program(cfg.room_type)
-    problems = {room.name: program(_room_set(room.name))}
-    if not isinstance(problems[room.name], Problem):
-        raise ConfigError(f"program {getattr(program, '__name__', program)!r} must return a "
-                          f"Problem, got {type(problems[room.name]).__name__}")
-    timings["architecture"] = time.perf_counter() - t0
+    problems = {room.name: _problem(program, room.name)}
+    timings = {"architecture": time.perf_counter() - t0}
+    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
+                   check=cfg.check, progress=progress)
+    gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
+    return gen
 
+
+@dataclass
+class HomeConfig:
+    """A whole home: the floorplan stage's settings (storeys, room counts, area or contour, or
+    a predefined `floorplan` JSON dict), then every room furnished by its room type's program.
+    Rooms whose type has no program (none today) stay empty."""
+
+    floors: int = 1
+    rooms: dict[str, int] | str | None = None
+    area: float | None = None
+    contour: list | None = None
+    floorplan: dict | None = None
+    steps: dict[str, int] | None = None
+    check: bool = False
+
+    def to_json(self) -> dict:
+        return {"home": True, "floors": self.floors,
+                "rooms": self.rooms if isinstance(self.rooms, (str, type(None))) else dict(self.rooms),
+                "area": self.area, "contour": self.contour,
+                "predefined_floorplan": self.floorplan is not None, "steps": self.steps}
+
+
+def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: bool = False
+                  ) -> Generated:
+    """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
+    furnished by its program. Same seed + config + version => same scene."""
+    from .floorplan.generate import FloorplanConfig, generate_floorplan
+    from .floorplan.io import check_predefined, from_json
+    from .floorplan.io import to_json as floorplan_json
+    from .floorplan.solidify import room_geometries, solidify
+    from .programs import ROOM_PROGRAMS
+    cfg = config or HomeConfig()
+    t0 = time.perf_counter()
+    if cfg.floorplan is not None:
+        plan = from_json(cfg.floorplan)
+        check_predefined(plan)
+    else:
+        plan = generate_floorplan(seed, FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms,
+                                                        area=cfg.area, contour=cfg.contour))
+    t1 = time.perf_counter()
+    arch = solidify(plan)
+    geometry = room_geometries(arch)
+    problems = {name: _problem(ROOM_PROGRAMS[g.room.room_type], name)
+                for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
+    timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
+    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
+                   check=cfg.check, progress=progress)
+    gen.scene.floorplan = floorplan_json(plan)
+    gen.architecture = arch
+    gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
+    gen.report["floorplan"] = {k: v for k, v in plan.info.items() if k in ("anneal", "timings_s")}
+    return gen
+
+
+def _problem(program: Callable[..., Problem], room: str) -> Problem:
+    problem = program(_room_set(room))
+    if not isinstance(problem, Problem):
+        raise ConfigError(f"program {getattr(program, '__name__', program)!r} must return a "
+                          f"Problem, got {type(problem).__name__}")
+    return problem
+
+
+def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, Problem],
+             config: dict, timings: dict[str, float], *, steps, check: bool, progress: bool
+             ) -> Generated:
+    """Solve every room's problem, re-check with full meshes and package the Scene."""
     cache = AssetCache()
     state = State(geometry, cache)
     t1 = time.perf_counter()
-    stats, evaluators = solve(state, problems, seed, config=AnnealConfig(check=cfg.check),
-                              steps=cfg.steps, progress=progress)
+    stats, evaluators = solve(state, problems, seed, config=AnnealConfig(check=check),
+                              steps=steps, progress=progress)
     timings["solve"] = time.perf_counter() - t1
 
     t2 = time.perf_counter()
@@ -156,8 +224,9 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     results = {r: ev.evaluate() for r, ev in evaluators.items()}
     timings["full_meshes"] = time.perf_counter() - t2
 
-    sc = Scene(seed=seed, config=cfg.to_json())
-    sc.rooms[room.name] = room
+    sc = Scene(seed=seed, config=config)
+    for name, g in geometry.items():
+        sc.rooms[name] = g.room
     for name, ob in state.objects.items():
         sc.add_object(SceneObject(
             name=name, generator=ob.generator, params=ob.params, seed=ob.seed,
@@ -167,7 +236,6 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
                                         p.parent_surface, p.relation.margin)
                        for p in ob.placements],
             stage=ob.stage))
-    timings["total"] = time.perf_counter() - t0
     report = {
         "seed": seed,
         "timings_s": {k: round(v, 4) for k, v in timings.items()},

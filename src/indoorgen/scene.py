@@ -204,6 +204,9 @@ class Scene:
     rooms: dict[str, Room] = field(default_factory=dict)
     objects: dict[str, SceneObject] = field(default_factory=dict)
     config: dict[str, Any] = field(default_factory=dict)
+    #: for a whole home, its floorplan in the floorplan.json schema (architecture is rebuilt
+    #: from it); None for a single room
+    floorplan: dict[str, Any] | None = None
 
     def add_object(self, obj: SceneObject) -> None:
         self.objects[obj.name] = obj
@@ -218,6 +221,7 @@ class Scene:
             "config": self.config,
             "rooms": [r.to_json() for r in self.rooms.values()],
             "objects": [o.to_json() for o in self.objects.values()],
+            **({"floorplan": self.floorplan} if self.floorplan is not None else {}),
         }
 
     def dumps(self) -> str:
@@ -232,4 +236,5 @@ class Scene:
             s.rooms[room.name] = room
         for o in d["objects"]:
             s.add_object(SceneObject.from_json(o))
+        s.floorplan = d.get("floorplan")
         return s

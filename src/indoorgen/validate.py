@@ -24,7 +24,7 @@ import trimesh
 from .assets import get_factory
 from .constraints.relations import CONTACT_GAP, parse_relation
 from .errors import ConfigError
-from .floorplan.room import build_room
+from .architecture import scene_architecture
 from .scene import Scene
 from .tags import Semantics
 
@@ -59,7 +59,7 @@ def _world(scene_obj, mesh: trimesh.Trimesh) -> trimesh.Trimesh:
 
 def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any]:
     """Check `scene`; return a report with `ok` and the list of problems found per check."""
-    rooms = {n: build_room(r) for n, r in scene.rooms.items()}
+    rooms, _ = scene_architecture(scene)
     meshes, assets = {}, {}
     for n, o in scene.objects.items():
         a = get_factory(o.generator).create(o.params)
@@ -114,8 +114,10 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     # 3. door clearance zones: nothing below 2 m may stand in them. Footprints are the union of
     # the plan views of the object's convex pieces (an L-shaped sofa's notch is empty floor).
     blocked = []
-    footprints = {n: _footprint_below(scene.objects[n], assets[n], DOOR_ZONE_TOP) for n in meshes}
     for rn, g in rooms.items():
+        floor_z = float(getattr(g, "elevation", 0.0))
+        footprints = {n: _footprint_below(scene.objects[n], assets[n], floor_z, DOOR_ZONE_TOP)
+                      for n in meshes}
         for k, zone in enumerate(g.door_zones):
             for n, fp in footprints.items():
                 if fp is not None and fp.intersection(zone).area > 1e-6:
@@ -147,13 +149,13 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
             "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP}
 
 
-def _footprint_below(obj, asset, top: float):
-    """Plan-view footprint (world) of the parts of `asset` that reach below height `top`, as
-    the union of its convex pieces' outlines; None if nothing does."""
+def _footprint_below(obj, asset, floor_z: float, top: float):
+    """Plan-view footprint (world) of the parts of `asset` that are between a floor at height
+    `floor_z` and `top` above it, as the union of its convex pieces' outlines; None if none."""
     outlines = []
     for _, piece in asset.collision:
         pts = obj.pose.apply(piece.vertices)
-        if pts[:, 2].min() < top:
+        if pts[:, 2].min() < floor_z + top and pts[:, 2].max() > floor_z - 0.05:
             outlines.append(sg.MultiPoint(pts[:, :2]).convex_hull)
     return shapely.union_all(outlines) if outlines else None
 

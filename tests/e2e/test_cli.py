@@ -44,16 +44,29 @@ def test_generate_writes_every_output(tmp_path):
     assert v.returncode == 0, v.stdout[-2000:]
 
 
-def test_default_command_writes_scene_seed_dir(tmp_path):
+@pytest.mark.slow
+def test_default_command_writes_a_furnished_home(tmp_path):
+    """What a user types first: a whole furnished home in ./scene_0, valid and deterministic."""
     r = run("generate", "--seed", "0", "-q", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
-    assert (tmp_path / "scene_0" / "scene.json").is_file()
+    out = tmp_path / "scene_0"
+    scene = json.loads((out / "scene.json").read_text())
+    assert len(scene["rooms"]) >= 4 and len(scene["objects"]) >= 40
+    assert scene["floorplan"]["storeys"][0]["rooms"]
+    types = {r["type"] for r in scene["rooms"]}
+    assert {"living_room", "bedroom", "bathroom"} <= types
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+    v = run("validate", str(out))
+    assert v.returncode == 0, v.stdout[-3000:]
+    r2 = run("generate", "--seed", "0", "-q", "--formats", "usd", "--out", str(tmp_path / "again"))
+    assert r2.returncode == 0, r2.stderr
+    assert (tmp_path / "again" / "scene.json").read_bytes() == (out / "scene.json").read_bytes()
 
 
 def test_same_seed_same_scene_json_bytes(tmp_path):
     for d in ("a", "b"):
-        assert run("generate", "--seed", "7", "-q", "--out", str(tmp_path / d)).returncode == 0
+        assert run("generate", "--seed", "7", "--room", "living_room", "-q", "--formats", "usd",
+                   "--out", str(tmp_path / d)).returncode == 0
     assert (tmp_path / "a" / "scene.json").read_bytes() == (tmp_path / "b" / "scene.json").read_bytes()
 
 
@@ -68,6 +81,10 @@ def bad_generator(room):
 
 @pytest.mark.parametrize("args, words", [
     (["--room", "ballroom"], "unknown room type 'ballroom'"),
+    (["--room", "bedroom", "--floors", "2"], "give options of one kind only"),
+    (["--floors", "0"], "floors"),
+    (["--rooms", "bedroom=2,ballroom=1"], "ballroom"),
+    (["--floorplan", "{prog}"], "not a floorplan.json"),
     (["--polygon", "[[0,0],[1,1],[2,2]]"], "area"),
     (["--program", "{prog}:bad_range"], "in_range(5, 2)"),
     (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),

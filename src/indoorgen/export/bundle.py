@@ -275,13 +275,19 @@ def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
 
 def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
                       variants: int = 1) -> ExportBundle:
-    """The bundle of a saved scene without solving: rooms rebuilt from the scene's `Room`s with
-    `build_room` (unless given) and assets from their generators (through `cache`, an
-    `AssetCache`, so identical objects are built once)."""
-    from ..floorplan.room import build_room
+    """The bundle of a saved scene without solving: the architecture rebuilt from the scene
+    (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
+    from their generators (through `cache`, an `AssetCache`, so identical objects are built
+    once)."""
+    from ..architecture import scene_architecture
     from ..solver.assets_cache import AssetCache
     cache = cache or AssetCache()
+    arch = None
     if rooms is None:
-        rooms = {n: build_room(r) for n, r in scene.rooms.items()}
+        rooms, arch = scene_architecture(scene)
     assets = {n: cache.full(o.generator, o.params) for n, o in scene.objects.items()}
+    if arch is not None:
+        return make_bundle(scene, assets, elements_from_architecture(scene, arch),
+                           variants=variants,
+                           room_types={n: g.room.room_type for n, g in arch.rooms.items()})
     return make_bundle(scene, assets, elements_from_rooms(scene, rooms), variants=variants)

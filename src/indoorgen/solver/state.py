@@ -78,7 +78,8 @@ class State:
             for m in g.collision_meshes():
                 self.static.append(fcl.CollisionObject(mesh_bvh(m), fcl.Transform()))
             for zone in g.door_zones:  # solid keep-out prisms: nothing may stand inside them
-                for piece in keep_out_prisms(zone, DOOR_ZONE_HEIGHT):
+                z0 = float(getattr(g, "elevation", 0.0))  # a home's upper storeys stand higher
+                for piece in keep_out_prisms(zone, z0, z0 + DOOR_ZONE_HEIGHT):
                     self.static.append(fcl.CollisionObject(convex_shape(piece), fcl.Transform()))
         self.manager.registerObjects(self.static)
         self.manager.setup()
@@ -297,9 +298,9 @@ class State:
                 self.manager.registerObject(c)
 
 
-def keep_out_prisms(zone: sg.Polygon, height: float) -> list[trimesh.Trimesh]:
-    """Convex prisms from z=0 to `height` covering a keep-out polygon (the polygon itself when
-    convex, else its triangles)."""
+def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trimesh]:
+    """Convex prisms from z0 to z1 covering a keep-out polygon (the polygon itself when convex,
+    else its triangles)."""
     if zone.is_empty or zone.area < 1e-9:
         return []
     pieces = [zone] if zone.convex_hull.area - zone.area < 1e-9 else \
@@ -307,7 +308,7 @@ def keep_out_prisms(zone: sg.Polygon, height: float) -> list[trimesh.Trimesh]:
     out = []
     for p in pieces:
         xy = np.asarray(p.exterior.coords)[:-1]
-        pts = np.vstack([np.c_[xy, np.zeros(len(xy))], np.c_[xy, np.full(len(xy), height)]])
+        pts = np.vstack([np.c_[xy, np.full(len(xy), z0)], np.c_[xy, np.full(len(xy), z1)]])
         out.append(trimesh.convex.convex_hull(pts))
     return out
 

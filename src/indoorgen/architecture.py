@@ -1,0 +1,19 @@
+"""The architecture of a saved scene, rebuilt from what scene.json records: a whole home's from
+its floorplan (solidified again), a single room's from its polygon. Validation and re-export use
+this, so neither has to store meshes."""
+from __future__ import annotations
+
+from typing import Any
+
+from .floorplan.room import RoomGeometry, build_room
+from .scene import Scene
+
+
+def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Any]:
+    """(room geometry by room name, the solidified home or None for a single room)."""
+    if scene.floorplan is not None:
+        from .floorplan.io import from_json
+        from .floorplan.solidify import room_geometries, solidify
+        arch = solidify(from_json(scene.floorplan))
+        return room_geometries(arch), arch
+    return {n: build_room(r) for n, r in scene.rooms.items()}, None
