@@ -207,8 +207,7 @@ class InteriorDoor(PartsFactory):
                 "cy": W / 2 - jt + REVEAL, "cz": H - jt + REVEAL}
 
     def parts(self, p, detail):
-        W, H, T = p["width"], p["height"], p["wall_thickness"]
-        jt, ct, cw = p["jamb_thickness"], p["casing_thickness"], p["casing_width"]
+        T, ct, cw = p["wall_thickness"], p["casing_thickness"], p["casing_width"]
         g = self._g(p)
         if not detail:
             reach = max(T / 2 + ct, g["lx1"] + STANDOFF)
@@ -295,7 +294,7 @@ class SlidingDoor(PartsFactory):
         rail_z1 = rail_z0 + 0.04
         wr = p["wheel_radius"]
         sgn = 1.0 if p["slide_direction"] == "left" else -1.0
-        travel = W + 0.03
+        travel = W + ov  # the trailing edge clears the opening
         wheel_in = 0.12
         # the rail covers both wheels over the whole travel, plus end stops
         lo_y = ly0 + wheel_in - wr - 0.045 - (0.0 if sgn > 0 else travel)
@@ -307,7 +306,7 @@ class SlidingDoor(PartsFactory):
 
     def parts(self, p, detail):
         g = self._g(p)
-        T, W, H, cw, ct = g["T"], g["W"], g["H"], p["casing_width"], g["ct"]
+        T, cw, ct = g["T"], p["casing_width"], g["ct"]
         wheel_top = g["rz1"] + GAP + 2 * g["wr"]
         front = g["lx1"] + (0.06 if p["handle"] == "bar" else 0.012)  # the pull, or hanger bolts
         if p["leaf_style"] in ("x_brace", "z_brace"):
