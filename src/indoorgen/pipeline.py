@@ -266,11 +266,17 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
         write_formats(bundle_from_generated(gen), tmp, formats, usd_ext=usd_ext)
         zones = {r: g.door_zones for r, g in gen.rooms.items()}
         draw_plan(gen.scene, gen.footprints(), tmp / "plan.png", door_zones=zones,
-                  title=f"{next(iter(gen.scene.rooms.values())).room_type}  seed {gen.scene.seed}")
+                  title=_plan_title(gen.scene))
         gen.report.setdefault("timings_s", {})["export"] = round(time.perf_counter() - t0, 4)
         (tmp / "report.json").write_text(json.dumps(gen.report, indent=1, sort_keys=True,
                                                     default=_json_default) + "\n")
     return out
+
+
+def _plan_title(scene: Scene) -> str:
+    if len(scene.rooms) == 1:
+        return f"{next(iter(scene.rooms.values())).room_type}  seed {scene.seed}"
+    return f"home, seed {scene.seed}: {len(scene.rooms)} rooms, {len(scene.objects)} objects"
 
 
 def _json_default(o):

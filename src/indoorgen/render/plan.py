@@ -61,21 +61,35 @@ def draw_plan(scene: Scene, footprints: dict[str, sg.Polygon], path: str | PathL
     """
     fig = Figure(dpi=DPI)
     FigureCanvasAgg(fig)
-    ax = fig.add_subplot()
+    storeys = sorted({r.storey for r in scene.rooms.values()}) or [0]
     bounds = _scene_bounds(scene, footprints)
-    _size_figure(fig, bounds)
-
-    for room in scene.rooms.values():
-        _draw_room(ax, room)
-    for zones in (door_zones or {}).values():
-        for z in zones:
-            _draw_zone(ax, z)
-    classes = _draw_objects(ax, scene, footprints, bounds)
-    for room in scene.rooms.values():
-        _draw_room_label(ax, room)
-
-    _finish_axes(ax, bounds, title if title is not None else _default_title(scene))
-    _draw_legend(ax, classes, bool(door_zones and any(door_zones.values())))
+    _size_figure(fig, bounds, len(storeys))
+    home = len(scene.rooms) > 1
+    classes: dict[str, str] = {}
+    for k, level in enumerate(storeys):
+        ax = fig.add_subplot(len(storeys), 1, k + 1)
+        rooms = [r for r in scene.rooms.values() if r.storey == level]
+        names = {r.name for r in rooms}
+        for room in rooms:
+            _draw_room(ax, room)
+        for rn, zones in (door_zones or {}).items():
+            if rn in names or not scene.rooms:
+                for z in zones:
+                    _draw_zone(ax, z)
+        mine = {n: f for n, f in footprints.items()
+                if n in scene.objects and (scene.objects[n].room in names or not scene.rooms)}
+        classes.update(_draw_objects(ax, scene, mine, bounds, label_small=not home))
+        if scene.floorplan is not None:
+            _draw_openings(ax, scene, level)
+        for room in rooms:
+            _draw_room_label(ax, room, 9 if home else 13)
+        heading = title if title is not None else _default_title(scene)
+        if len(storeys) > 1:
+            heading = f"{heading}  (storey {level})"
+        _finish_axes(ax, bounds, heading)
+        if k == 0:
+            _draw_legend(ax, dict(sorted(classes.items())),
+                         bool(door_zones and any(door_zones.values())))
     fig.savefig(path, dpi=DPI, facecolor="white")
     log.debug("plan written to %s", path)
 
@@ -97,12 +111,13 @@ def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon]) -> np.ndarray
     return np.concatenate([lo - pad, hi + pad])
 
 
-def _size_figure(fig: Figure, bounds: np.ndarray) -> None:
-    """Fix the width at TARGET_WIDTH_PX and pick a height that suits the plan's aspect (the
-    legend sits to the right, so the plan gets roughly 70 % of the width)."""
+def _size_figure(fig: Figure, bounds: np.ndarray, panels: int = 1) -> None:
+    """Fix the width at TARGET_WIDTH_PX and pick a height that suits the plan's aspect, one
+    panel per storey stacked (the legend sits to the right, so the plan gets roughly 70 % of
+    the width)."""
     w, h = bounds[2] - bounds[0], bounds[3] - bounds[1]
     width_in = TARGET_WIDTH_PX / DPI
-    height_in = float(np.clip(0.7 * width_in * h / max(w, 1e-6) + 0.9, 4.0, 12.0))
+    height_in = float(np.clip(0.7 * width_in * h / max(w, 1e-6) + 0.9, 4.0, 12.0)) * panels
     fig.set_size_inches(width_in, height_in)
     fig.set_layout_engine("constrained")
 
@@ -206,6 +221,48 @@ def _draw_door(ax, room: Room, door) -> None:
                      color=DOOR_COLOUR, linewidth=0.9, linestyle=(0, (3, 2)), zorder=4))
 
 
+def _nearest_edge(rooms: list[Room], point: np.ndarray) -> tuple[np.ndarray, float]:
+    """Unit direction of the room edge nearest `point` and the wall thickness there."""
+    best = (np.inf, np.array([1.0, 0.0]), 0.12)
+    for room in rooms:
+        p, d, _, length = _edge_frames(room)
+        t = np.clip(np.einsum("ij,ij->i", point - p, d), 0, length)
+        dist = np.linalg.norm(p + t[:, None] * d - point, axis=1)
+        i = int(np.argmin(dist))
+        if dist[i] < best[0]:
+            best = (dist[i], d[i], room.wall_thickness)
+    return best[1], best[2]
+
+
+def _draw_openings(ax, scene: Scene, level: int) -> None:
+    """A home's doors (brown), open connections (dashed), windows (blue), stairs (hatched) and
+    front entrance (triangle) on storey `level`, from the floorplan scene.json records."""
+    fp = scene.floorplan
+    storey = next((s for s in fp["storeys"] if s["level"] == level), None)
+    if storey is None:
+        return
+    rooms = [r for r in scene.rooms.values() if r.storey == level]
+    for kind, colour, lw in (("doors", "#8c564b", 3.0), ("windows", "#4a90d9", 3.0),
+                             ("openings", "#8c564b", 1.2)):
+        for o in storey.get(kind, []):
+            c = np.asarray(o["center"], float)
+            d, t = _nearest_edge(rooms, c)
+            seg = np.array([c - d * o["width"] / 2, c + d * o["width"] / 2])
+            ax.plot(seg[:, 0], seg[:, 1], color=colour, linewidth=lw, zorder=6,
+                    solid_capstyle="butt", linestyle="--" if kind == "openings" else "-")
+    for st in fp.get("stairs", []):
+        if level in (st["from_level"], st["to_level"]):
+            poly = sg.Polygon(st["polygon"])
+            ax.add_patch(PathPatch(_polygon_path(poly), facecolor="#cfcfcf", edgecolor="#555555",
+                                   hatch="---", linewidth=0.8, alpha=0.9, zorder=5))
+            pt = poly.representative_point()
+            ax.text(pt.x, pt.y, "stairs", fontsize=7, ha="center", va="center", zorder=7,
+                    path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
+    ent = fp.get("entrance")
+    if ent and level == 0:
+        ax.plot(*ent["center"], marker="^", markersize=9, color="#2ca02c", zorder=8)
+
+
 def _draw_zone(ax, zone: sg.Polygon) -> None:
     """A door clearance zone: light hatched area with a dashed outline."""
     if zone.is_empty:
@@ -216,13 +273,13 @@ def _draw_zone(ax, zone: sg.Polygon) -> None:
                            hatch="///", linewidth=0.6, linestyle="--", alpha=0.45, zorder=2))
 
 
-def _draw_room_label(ax, room: Room) -> None:
+def _draw_room_label(ax, room: Room, size: float = 13) -> None:
     """The room's name, large and faint, under the furniture at the room's centre."""
     if len(room.polygon) < 3:
         return
     poly = sg.Polygon(room.polygon)
     pt = poly.centroid if poly.contains(poly.centroid) else poly.representative_point()
-    ax.text(pt.x, pt.y, room.name.replace("_", " "), fontsize=13, color="#d0cbc0",
+    ax.text(pt.x, pt.y, room.name.replace("_", " "), fontsize=size, color="#d0cbc0",
             ha="center", va="center", zorder=1.5, fontweight="bold")
 
 
@@ -246,9 +303,10 @@ def short_label(name: str) -> str:
 
 
 def _draw_objects(ax, scene: Scene, footprints: dict[str, sg.Polygon],
-                  bounds: np.ndarray) -> dict[str, str]:
+                  bounds: np.ndarray, label_small: bool = True) -> dict[str, str]:
     """Fill every footprint by class, lowest and largest first so that small objects on top of
-    furniture stay visible; return the classes drawn (legend name -> colour)."""
+    furniture stay visible; return the classes drawn (legend name -> colour). Without
+    `label_small` (a whole home), only furniture-sized footprints are labelled."""
     objs = [o for o in scene.objects.values()
             if o.name in footprints and not footprints[o.name].is_empty]
     missing = len(scene.objects) - len(objs)
@@ -260,12 +318,13 @@ def _draw_objects(ax, scene: Scene, footprints: dict[str, sg.Polygon],
     for k, obj in enumerate(objs):
         name, colour = object_class(obj.tags)
         classes.setdefault(name, colour)
-        _draw_object(ax, obj, footprints[obj.name], colour, 10 + 3 * k, scale)
+        _draw_object(ax, obj, footprints[obj.name], colour, 10 + 3 * k, scale,
+                     label=label_small or footprints[obj.name].area >= 0.15)
     return dict(sorted(classes.items()))
 
 
 def _draw_object(ax, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
-                 scale: float) -> None:
+                 scale: float, label: bool = True) -> None:
     """One footprint: fill, outline, front arrow and label, stacked at z-order `z`."""
     floor_cover = colour == CLASS_COLOURS[0][2]
     ax.add_patch(PathPatch(_polygon_path(fp), facecolor=colour, edgecolor=_darker(colour),
@@ -280,6 +339,8 @@ def _draw_object(ax, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
                             length_includes_head=True, color="#1f1f1f", alpha=0.7,
                             linewidth=0, zorder=z + 500))
     small = fp.area < 0.15
+    if not label:
+        return
     # the label sits behind the arrow's tail so the two never overlap
     at = c - front * (9.0 * px)
     ax.text(at[0], at[1], short_label(obj.name), fontsize=5.5 if small else 6.5,
