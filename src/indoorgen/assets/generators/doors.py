@@ -313,7 +313,8 @@ class SlidingDoor(PartsFactory):
             front = max(front, g["lx1"] + 0.017)  # the applied frame and a flush cup in it
         if not detail:
             return [Part(box_between((-T / 2 - ct, -g["cy"] - cw, 0.0), (T / 2 + ct, g["cy"] + cw, g["cz"] + cw)), "frame"),
-                    Part(box_between((T / 2, g["ry0"], g["rz0"] - 0.02), (g["rx"] + 0.006, g["ry1"], g["rz1"])), "metal"),
+                    Part(box_between((T / 2 - OVERLAP, g["ry0"], self._board_z0(p, g)),
+                                     (g["rx"] + 0.012, g["ry1"], g["rz1"] + 0.025)), "metal"),
                     Part(box_between((g["lx0"], g["ly0"], g["lz0"]), (front, g["ly1"], wheel_top)), "door", "leaf")]
         return self._frame(p, g) + self._track(p, g) + self._leaf(p, g)
 
@@ -327,12 +328,17 @@ class SlidingDoor(PartsFactory):
             pieces += casing(side * T / 2, side, -g["cy"], g["cy"], 0.0, g["cz"], cw, ct, True)
         return [Part(s, "frame") for s in pieces]
 
+    @staticmethod
+    def _board_z0(p, g) -> float:
+        """Bottom of the mounting board along the wall face that carries the track's spacers;
+        it reaches down over the casing head to join it."""
+        return min(g["rz0"] - 0.02, g["cz"] + p["casing_width"] - 0.03)
+
     def _track(self, p, g) -> list[Part]:
         """The flat rail on spacers bolted through to the casing head / wall face, and end stops."""
         T, rx = g["T"], g["rx"]
         rail = box_between((rx - 0.004, g["ry0"], g["rz0"]), (rx + 0.004, g["ry1"], g["rz1"]))
-        # a mounting board along the wall face carries the spacers and joins the casing head
-        bz0 = min(g["rz0"] - 0.02, g["cz"] + p["casing_width"] - 0.03)
+        bz0 = self._board_z0(p, g)
         board = box_between((T / 2 - OVERLAP, g["ry0"], bz0), (T / 2 + g["ct"], g["ry1"], g["rz1"] + 0.02))
         n = max(2, int((g["ry1"] - g["ry0"]) / 0.4) + 1)
         zc = (g["rz0"] + g["rz1"]) / 2
@@ -554,13 +560,10 @@ class ExteriorDoor(PartsFactory):
                      Zone(lo, zt - 0.04, "recessed", 3 if W > 0.8 else 2, 1)]
         stile = min(0.13, 0.15 * W)
         parts = leaf(x0, x1, y0, y1, z0, z1, zones, stile, "leaf")
-        if style == "craftsman":  # the dentil shelf under the lites, both faces
-            zt = hi - 0.45
-            for side in (1, -1):
-                xf = x1 if side > 0 else x0
-                parts.append(Part(box_between((min(xf - side * OVERLAP, xf + side * 0.025), y0 + stile - 0.02, zt + 0.02),
-                                              (max(xf - side * OVERLAP, xf + side * 0.025), y1 - stile + 0.02, zt + 0.05)),
-                                  "door", "leaf"))
+        if style == "craftsman":  # the dentil shelf under the lites, outside only (on the +X
+            zt = hi - 0.45        # face it would hit the hinge jamb when the leaf is open)
+            parts.append(Part(box_between((x0 - 0.025, y0 + stile - 0.02, zt + 0.02),
+                                          (x0 + OVERLAP, y1 - stile + 0.02, zt + 0.05)), "door", "leaf"))
         left = p["hinge_side"] == "left"
         yh = y1 - BACKSET if left else y0 + BACKSET
         hw = [handle_pair(p["handle"], x1, yh, zl, -1.0 if left else 1.0),
@@ -576,7 +579,8 @@ class ExteriorDoor(PartsFactory):
     @staticmethod
     def _knocker(x0: float, y: float, z: float) -> m3d.Manifold:
         """A ring knocker on the -X (outside) face: a back plate, a pivot and a hanging ring."""
-        plate = box_between((x0 - 0.01, y - 0.03, z - 0.06), (x0 + OVERLAP, y + 0.03, z + 0.05))
+        # the plate's back sinks past the depth of a panel's pocket, so it holds on anywhere
+        plate = box_between((x0 - 0.01, y - 0.03, z - 0.06), (x0 + 0.009, y + 0.03, z + 0.05))
         pivot = box_between((x0 - 0.03, y - 0.008, z + 0.01), (x0 - 0.009, y + 0.008, z + 0.03))
         ring_ = torus(0.04, 0.007, (0.0, 0.0, 0.0), 24, 8).rotate((0.0, 90.0, 0.0)).translate((x0 - 0.024, y, z - 0.02))
         return solid_union([plate, pivot, ring_])

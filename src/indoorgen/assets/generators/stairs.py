@@ -229,6 +229,7 @@ class Staircase(PartsFactory):
                Part(handrail((xb, y, P(xb) + hh), (xt, y, P(xt) + hh), rail_style(style)), "wood")]
         a0, a1 = xb + POST / 2, xt - POST / 2
         if style == "glass":
+            a0, a1 = a0 - OVERLAP, a1 + OVERLAP  # into the newels, not flush with them
             if g["closed"]:
                 xk = min(max((z_top - 0.06 - z0 - r) * go / r - nos, a0), a1)
                 bottom = [(a0, P(a0) + 0.045), (xk, P(xk) + 0.045), (a1, min(P(a1) + 0.045, z_top - 0.015))]
@@ -308,7 +309,7 @@ class Staircase(PartsFactory):
         p0, p1 = np.r_[a, z + hh], np.r_[b, z + hh]
         out = [Part(handrail(p0, p1, rail_style(style)), "wood")]
         if style == "glass":
-            q0, q1 = a + u * POST / 2, b - u * POST / 2
+            q0, q1 = a + u * (POST / 2 - OVERLAP), b - u * (POST / 2 - OVERLAP)
             pts = [(x, y, zz) for x, y in (q0, q1) for zz in (z - 0.01, z + hh - 0.03)]
             n = np.array([-u[1], u[0]]) * 0.006
             out.append(Part(hull([(x + sx * n[0], y + sx * n[1], zz) for x, y, zz in pts for sx in (-1, 1)]), "glass"))

@@ -144,8 +144,11 @@ class Window(PartsFactory):
                   box_between((-T / 2, -W / 2, H - LINING), (T / 2, W / 2, H))]
         frame = [ring(-W / 2 + LINING - OVERLAP, W / 2 - LINING + OVERLAP, STOOL - OVERLAP, H - LINING + OVERLAP,
                       g["xf0"], g["xf1"], fw + OVERLAP)]
-        for (a0, a1), (b0, _) in zip(g["cols"][:-1], g["cols"][1:]):
-            frame.append(box_between((g["xf0"], a1 - OVERLAP, g["Z0"] - OVERLAP), (g["xf1"], b0 + OVERLAP, g["Z1"] + OVERLAP)))
+        mullions = [] if p["style"] == "sliding" else zip(g["cols"][:-1], g["cols"][1:])
+        for (a0, a1), (b0, _) in mullions:
+            # set 3 mm back from both frame faces: no faces flush with the frame's
+            frame.append(box_between((g["xf0"] + 0.003, a1 - OVERLAP, g["Z0"] - OVERLAP),
+                                     (g["xf1"] - 0.003, b0 + OVERLAP, g["Z1"] + OVERLAP)))
         trims = casing(T / 2, 1, -cy, cy, STOOL - OVERLAP, cz, cw, CASING_T, True)
         out = [Part(s, "wood") for s in wood] + [Part(s, "frame") for s in lining + frame + trims]
         z_ex = 0.0
@@ -177,12 +180,12 @@ class Window(PartsFactory):
                                      xf0 + sd + GAP, xf1, STOP + OVERLAP), "frame"))
                 out.append(Part(self._handle(p, g, i), "handle", link))
             elif p["style"] == "fixed":  # glazed into the frame between beads
-                xm = (xf0 + xf1) / 2
-                out += glazed_sash(xm - 0.015, xm + 0.015, c0 - OVERLAP, c1 + OVERLAP, Z0 - OVERLAP,
-                                   Z1 + OVERLAP, 0.015 + OVERLAP, cols, rows, "base")
+                xm = (xf0 + xf1) / 2  # (sunk 2 mm into the frame: no face flush with a mullion's)
+                out += glazed_sash(xm - 0.015, xm + 0.015, c0 - 2 * OVERLAP, c1 + 2 * OVERLAP,
+                                   Z0 - 2 * OVERLAP, Z1 + 2 * OVERLAP, 0.015 + 2 * OVERLAP, cols, rows, "base")
             else:  # the fixed middle light of a three-column casement
-                out += glazed_sash(xf0, xf0 + sd, c0 - OVERLAP, c1 + OVERLAP, Z0 - OVERLAP, Z1 + OVERLAP,
-                                   sw, cols, rows, "base")
+                out += glazed_sash(xf0, xf0 + sd, c0 - 2 * OVERLAP, c1 + 2 * OVERLAP, Z0 - 2 * OVERLAP,
+                                   Z1 + 2 * OVERLAP, sw, cols, rows, "base")
         return out
 
     def _hinge(self, p, g, i: int) -> str:
@@ -434,12 +437,12 @@ def _panel(s0: float, s1: float, zb: float, zt: float, fd: float, fw: float, lit
     iy0, iy1, iz0, iz1 = s0 + fw, s1 - fw, zb + fw, zt - fw
     xm = fd / 2
     out.append((box_between((xm - 0.003, iy0 - 0.006, iz0 - 0.006), (xm + 0.003, iy1 + 0.006, iz1 + 0.006)), "glass"))
-    bars = []
+    bars = []  # a little thinner than the frame, so that no faces lie flush with its faces
     for i in range(1, lites):
         y = iy0 + (iy1 - iy0) * i / lites
-        bars.append(box_between((0.0, y - fw / 2, iz0 - OVERLAP), (fd, y + fw / 2, iz1 + OVERLAP)))
+        bars.append(box_between((0.002, y - fw / 2, iz0 - OVERLAP), (fd - 0.002, y + fw / 2, iz1 + OVERLAP)))
     if transom:
         z = iz1 - 0.22 * (iz1 - iz0)
-        bars.append(box_between((0.0, iy0 - OVERLAP, z - fw / 3), (fd, iy1 + OVERLAP, z + fw / 3)))
+        bars.append(box_between((0.004, iy0 - OVERLAP, z - fw / 3), (fd - 0.004, iy1 + OVERLAP, z + fw / 3)))
     out += [(b, "frame") for b in bars]
     return out
