@@ -175,7 +175,7 @@ class Window(PartsFactory):
             cols = _grid(int(p["grid_cols"]), c1 - c0)
             if i in moving:
                 link = f"sash_{i}"
-                out += glazed_sash(xf0, xf0 + sd, c0 + GAP, c1 - GAP, Z0 + GAP, Z1 - GAP, sw, cols, rows, link)
+                out += glazed_sash(xf0, xf0 + sd, *self._sash_box(p, g, i), sw, cols, rows, link)
                 out.append(Part(ring(c0 - OVERLAP, c1 + OVERLAP, Z0 - OVERLAP, Z1 + OVERLAP,
                                      xf0 + sd + GAP, xf1, STOP + OVERLAP), "frame"))
                 out.append(Part(self._handle(p, g, i), "handle", link))
@@ -195,18 +195,35 @@ class Window(PartsFactory):
             return p["hinge_side"]
         return "left" if i == 0 else "right"
 
+    def _sash_box(self, p, g, i: int) -> tuple[float, float, float, float]:
+        """The extent (y0, y1, z0, z1) of the hinged sash in column i: GAP inside the frame, more
+        on the side that swings away from the hinge, whose inner corner first moves toward the
+        frame by up to depth^2 / (2 span) as the sash opens."""
+        c0, c1 = g["cols"][i]
+        hinge = self._hinge(p, g, i)
+        span = (g["Z1"] - g["Z0"]) if hinge == "top" else (c1 - c0)
+        free = max(GAP, g["sd"] ** 2 / (2 * (span - 2 * GAP)) + 0.0015)
+        y0, y1, z0, z1 = c0 + GAP, c1 - GAP, g["Z0"] + GAP, g["Z1"] - GAP
+        if hinge == "top":
+            z0 = g["Z0"] + free
+        elif hinge == "left":
+            y1 = c1 - free
+        else:
+            y0 = c0 + free
+        return y0, y1, z0, z1
+
     def _handle(self, p, g, i: int) -> m3d.Manifold:
         """A small lever on the sash's room face: on the latch stile (casement, arm down) or the
         bottom rail (awning, arm sideways)."""
-        c0, c1 = g["cols"][i]
+        y0, y1, z0, z1 = self._sash_box(p, g, i)
         x1, sw = g["xf0"] + g["sd"], p["sash_width"]
         hinge = self._hinge(p, g, i)
         if hinge == "top":
-            y, z = (c0 + c1) / 2, g["Z0"] + GAP + sw / 2
+            y, z = (y0 + y1) / 2, z0 + sw / 2
             arm = box_between((x1 + 0.025, y - 0.005, z - 0.006), (x1 + 0.037, y + 0.07, z + 0.006))
         else:
-            y = c1 - GAP - sw / 2 if hinge == "left" else c0 + GAP + sw / 2
-            z = (g["Z0"] + g["Z1"]) / 2
+            y = y1 - sw / 2 if hinge == "left" else y0 + sw / 2
+            z = (z0 + z1) / 2
             arm = box_between((x1 + 0.025, y - 0.006, z - 0.09), (x1 + 0.037, y + 0.006, z + 0.008))
         return solid_union([rod((x1 - OVERLAP, y, z), (x1 + 0.01, y, z), 0.011, 12),
                             box_between((x1 + 0.008, y - 0.006, z - 0.008), (x1 + 0.03, y + 0.006, z + 0.008)), arm])
@@ -266,16 +283,16 @@ class Window(PartsFactory):
             return out
         xf0 = g["xf0"]
         for i in self._moving(p, g):
-            c0, c1 = g["cols"][i]
+            y0, y1, _, z1 = self._sash_box(p, g, i)
             hinge = self._hinge(p, g, i)
             if hinge == "top":
-                m = DoorJoint("revolute", np.array([0.0, 1.0, 0.0]), np.array([xf0, c0, g["Z1"] - GAP]), f"sash_{i}")
+                m = DoorJoint("revolute", np.array([0.0, 1.0, 0.0]), np.array([xf0, y0, z1]), f"sash_{i}")
                 upper = math.radians(50.0)
             elif hinge == "left":
-                m = DoorJoint("revolute", np.array([0.0, 0.0, 1.0]), np.array([xf0, c0 + GAP, 0.0]), f"sash_{i}")
+                m = DoorJoint("revolute", np.array([0.0, 0.0, 1.0]), np.array([xf0, y0, 0.0]), f"sash_{i}")
                 upper = math.pi / 2
             else:
-                m = DoorJoint("revolute", np.array([0.0, 0.0, -1.0]), np.array([xf0, c1 - GAP, 0.0]), f"sash_{i}")
+                m = DoorJoint("revolute", np.array([0.0, 0.0, -1.0]), np.array([xf0, y1, 0.0]), f"sash_{i}")
                 upper = math.pi / 2
             out.append(make_joint(f"sash_{i}_joint", m, 0.0, upper))
         return out
