@@ -11,7 +11,7 @@ from indoorgen.floorplan.io import dumps
 from indoorgen.floorplan.solve import AnnealConfig
 
 #: The slow test runs fewer seeds than the benchmark (benchmarks/floorplan.py runs 100).
-SLOW_SEEDS = {1: range(0, 12), 2: range(100, 106), 3: range(200, 204)}
+SLOW_SEEDS = {1: range(0, 40), 2: range(100, 120), 3: range(200, 212)}
 
 
 @pytest.mark.slow

@@ -80,6 +80,7 @@ class RoomView:
             self._cache.pop(r, None)
 
     def cached(self, o: str, key, fn: Callable[[], object]):
+        """o's cached value under `key`, computed by `fn` the first time."""
         d = self._cache.setdefault(o, {})
         if key not in d:
             d[key] = fn()
@@ -227,6 +228,7 @@ class RoomView:
         return nx.shortest_path(g, self.entry_room(lv), o)
 
     def storey_graph(self, level: int):
+        """The room graph of one storey (from `neighbours`)."""
         import networkx as nx
         g = nx.Graph()
         for r in self.room_ids():

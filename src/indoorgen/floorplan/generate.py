@@ -165,11 +165,12 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
             max(_typical(n) for n in names) * float(rng.uniform(1.0, 1.15))
         ground = make_contour(rng, float(area))
     if ground.area < need / 0.8:
-        where = "--contour" if cfg.contour is not None else "--area"
+        where = f"--contour ({ground.area:.0f} m^2)" if cfg.contour is not None else \
+            f"--area {cfg.area:g} m^2"
         raise InvalidGeometryError(
-            f"{where} gives {ground.area:.0f} m^2 per storey, but the rooms "
-            f"({', '.join(sorted(set(room_type_of(r) for r in sum(names, []))))}) need at least "
-            f"{need / 0.8:.0f} m^2 on one storey; give a larger area or fewer rooms")
+            f"{where} is too small for the rooms "
+            f"({', '.join(sorted(set(room_type_of(r) for r in sum(names, []))))}): they need "
+            f"at least {need / 0.8:.0f} m^2 on one storey; give a larger area or fewer rooms")
     grid0 = make_grid(ground)
     rect, stair_poly = None, None
     if hg.n_storeys > 1:

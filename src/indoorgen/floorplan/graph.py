@@ -86,6 +86,7 @@ class HomeGraph:
         return [n for k in levels for n in self.storeys[k].nodes]
 
     def type_counts(self) -> dict[str, int]:
+        """Rooms per type over the whole home."""
         out: dict[str, int] = {}
         for n in self.rooms():
             out[room_type_of(n)] = out.get(room_type_of(n), 0) + 1

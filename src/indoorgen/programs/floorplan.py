@@ -14,6 +14,7 @@ from ..tags import Semantics
 
 
 def floorplan() -> Problem:
+    """The default floorplan program: the solver's hard rules and D.3's twelve terms."""
     rooms, storeys = scene()[Semantics.Room], scene()[STOREY]
     stairs = rooms_of(rooms, "staircase_room")
     with_a_view = rooms_of(rooms, "bedroom", "balcony")
