@@ -175,3 +175,20 @@ def test_scene_room_json_is_unchanged_for_single_rooms():
     up = Room("bedroom_2", "bedroom", [(0, 0), (4, 0), (4, 3), (0, 3)], storey=1, elevation=3.0)
     assert up.to_json()["elevation"] == 3.0
     assert Room.from_json(up.to_json()) == up and Room.from_json(r.to_json()) == r
+
+
+def test_catalogue_doors_windows_and_stairs(two_storeys):
+    fp, _ = two_storeys
+    arch = solidify(fp, seed=5)
+    gens = {(e.kind, e.generator) for e in arch.elements}
+    assert {("door", "interior_door"), ("door", "exterior_door"), ("window", "window"),
+            ("stair", "staircase"), ("railing", "stair_railing")} <= gens
+    stair = next(e for e in arch.elements if e.kind == "stair").meshes["stair"]
+    (st,) = fp.stairs
+    assert st.shape().buffer(0.3).contains(sg.box(*stair.bounds[0][:2], *stair.bounds[1][:2]))
+    for e in arch.elements:
+        assert all(m.is_watertight for m in e.meshes.values()), e.name
+    stage = build_architecture_stage(arch)
+    d = fp.storeys[0].doors[0]
+    prim = stage.GetPrimAtPath(f"/World/Architecture/storey_0/doors/{d.name}")
+    assert prim.GetAttribute("indoorgen:generator").Get() == "interior_door"

@@ -87,7 +87,7 @@ def run_floorplan(args) -> int:
         fp = generate_floorplan(args.seed, cfg)
         pitch = storey_pitch(cfg)
     walls = WallThickness(cfg.interior_wall, cfg.exterior_wall)
-    arch = solidify(fp, walls, pitch)
+    arch = solidify(fp, walls, pitch, seed=args.seed)
     with atomic_dir(out) as tmp:
         write_floorplan(fp, tmp / "floorplan.json")
         draw_floorplan(fp, tmp / "plan.png", walls,

@@ -35,6 +35,7 @@ from shapely.geometry.polygon import orient
 from ..assets.base import Surface
 from ..errors import InvalidGeometryError
 from ..scene import Door, Room
+from . import fixtures
 from .plan import DoorSpec, Floorplan, StairSpec, Storey
 from .room import (SLAB_THICKNESS, RoomGeometry, _ceiling_surface, _floor_surface, _to_trimesh,
                    _wall_surfaces)
@@ -59,11 +60,20 @@ class Element:
     """An architectural element for export: `meshes` by part name, in world coordinates."""
 
     name: str
-    kind: str          # "door" | "opening" | "window" | "stair" | "entrance"
+    kind: str          # "door" | "window" | "stair" | "railing"
     room: str
     storey: int
     meshes: dict[str, trimesh.Trimesh]
     semantics: list[str] = field(default_factory=list)
+    generator: str = ""  # the catalogue generator that made it ("" for the simple solids)
+    params: dict = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str]
+           ) -> "Element":
+        """An element holding a catalogue fixture's mesh."""
+        return cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
+                   dict(fx.params))
 
 
 @dataclass
@@ -276,13 +286,15 @@ def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, wid
     return None if best is None else best[:2]
 
 
-def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | None = None
-             ) -> Architecture:
+def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | None = None,
+             seed: int | None = None) -> Architecture:
     """Build every room's geometry and the doors, windows and stairs of `fp`.
 
     `pitch` is the floor-to-floor distance (default: the difference of the first two storeys'
-    elevations, or height + 2 slab thicknesses). Raises InvalidGeometryError when a door or
-    window does not sit on a suitable wall."""
+    elevations, or height + 2 slab thicknesses). With a `seed`, doors, windows, stairs and
+    railings come from the asset catalogue (each from its own child stream of the seed); without
+    one, or where a generator is missing, they are simple parametric solids. Raises
+    InvalidGeometryError when a door or window does not sit on a suitable wall."""
     t = walls or WallThickness()
     if pitch is None:
         pitch = (fp.storeys[1].elevation - fp.storeys[0].elevation) if len(fp.storeys) > 1 \
@@ -291,17 +303,42 @@ def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | N
     rooms: dict[str, HomeRoomGeometry] = {}
     elements: list[Element] = []
     for st in fp.stairs:
-        elements.append(_stair_element(st, fp, pitch))
-        rail = _rail_element(st, fp)
-        if rail is not None:
-            elements.append(rail)
+        elements += _stair_elements(st, fp, pitch, seed)
     for storey in fp.storeys:
-        rooms.update(_solidify_storey(fp, storey, t, depth, elements))
+        rooms.update(_solidify_storey(fp, storey, t, depth, elements, seed))
     return Architecture(fp, rooms, elements, t)
 
 
+def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
+                    ) -> list[Element]:
+    """The flight (catalogue staircase or a simple solid) and the rails round its opening."""
+    lower = next(s for s in fp.storeys if s.level == st.from_level)
+    upper = next((s for s in fp.storeys if s.level == st.to_level), None)
+    a, b = stair_rooms(fp, st)
+    name = f"stair_{st.from_level}_{st.to_level}"
+    fx = None if seed is None else fixtures.stair(seed, name, st.polygon, pitch, lower.elevation)
+    out = [Element.of(fx, name, "stair", a or "", st.from_level, ["stairs", "architecture"])
+           if fx is not None else _stair_element(st, fp, pitch)]
+    if upper is None:
+        return out
+    p = np.asarray(st.polygon, float)  # bl, br, tr, tl: rails on all sides but the head
+    sides = ((p[0], p[1]), (p[1], p[2]), (p[3], p[0]))
+    rails = [] if seed is None else [
+        fixtures.railing(seed, f"rail_{st.from_level}_{st.to_level}_{i}", u, v,
+                         upper.elevation) for i, (u, v) in enumerate(sides)]
+    if rails and all(r is not None for r in rails):
+        out += [Element.of(r, f"rail_{st.from_level}_{st.to_level}_{i}", "railing", b or "",
+                           st.to_level, ["railing", "architecture"])
+                for i, r in enumerate(rails)]
+    else:
+        rail = _rail_element(st, fp)
+        if rail is not None:
+            out.append(rail)
+    return out
+
+
 def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dict[str, int],
-                     elements: list[Element]) -> dict[str, HomeRoomGeometry]:
+                     elements: list[Element], seed: int | None) -> dict[str, HomeRoomGeometry]:
     e, h = storey.elevation, storey.height
     wall_fp = wall_footprint(storey, t)
     outline = storey.contour()
@@ -327,15 +364,21 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
 
     for d in storey.doors:
         f = door_frame(storey, d, t)
-        cutter = _box(f, d.width, 3 * t.exterior, e - 0.01, e + d.height)
-        for r in d.rooms:
-            cut[r].append(cutter)
         a, b = d.rooms
         swing_into = b if depth.get(b, 0) >= depth.get(a, 0) else a
+        fx = None if seed is None else fixtures.door(
+            seed, d.name, False, f.center, f.n if swing_into == b else -f.n, d.width,
+            d.height, f.thickness, e)
+        w, hh = fx.opening if fx is not None else (d.width, d.height)
+        cutter = _box(f, w, 3 * t.exterior, e - 0.01, e + hh)
+        for r in d.rooms:
+            cut[r].append(cutter)
         for r, side in ((a, -f.n), (b, f.n)):
             dep = SWING_DEPTH if r == swing_into else PASS_DEPTH
             add_door(r, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
-        elements.append(_door_element(d, f, storey))
+        elements.append(Element.of(fx, d.name, "door", swing_into, storey.level,
+                                   ["door", "architecture"]) if fx is not None
+                        else _door_element(d, f, storey))
     for o in storey.openings:
         f = door_frame(storey, o, t)
         cutter = _box(f, o.width, 3 * t.exterior, e - 0.01, e + h + 0.01)
@@ -344,14 +387,25 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
             add_door(r, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
     for w in storey.windows:
         f = window_frame(storey, w, t)
-        cut[w.room].append(_box(f, w.width, 3 * t.exterior, e + w.sill, e + w.sill + w.height))
-        elements.append(_window_element(w.name, w.room, f, storey, w.width, w.height, w.sill))
+        fx = None if seed is None else fixtures.window(
+            seed, w.name, f.center, -f.n, w.width, w.height, w.sill, f.thickness, e)
+        ww, wh = fx.opening if fx is not None else (w.width, w.height)
+        cut[w.room].append(_box(f, ww, 3 * t.exterior, e + w.sill, e + w.sill + wh))
+        elements.append(Element.of(fx, w.name, "window", w.room, storey.level,
+                                   ["window", "architecture"]) if fx is not None
+                        else _window_element(w.name, w.room, f, storey, w.width, w.height,
+                                             w.sill))
     if fp.entrance is not None and storey.level == 0:
         en = fp.entrance
         f = entrance_frame(storey, en, t)
-        cut[en.room].append(_box(f, en.width, 3 * t.exterior, e - 0.01, e + en.height))
+        fx = None if seed is None else fixtures.door(
+            seed, "entrance", True, f.center, -f.n, en.width, en.height, f.thickness, e)
+        w, hh = fx.opening if fx is not None else (en.width, en.height)
+        cut[en.room].append(_box(f, w, 3 * t.exterior, e - 0.01, e + hh))
         add_door(en.room, "entrance", f, -f.n, en.width, en.height, SWING_DEPTH, en.width + 0.2)
-        elements.append(_door_element(
+        elements.append(Element.of(fx, "entrance", "door", en.room, 0, ["door", "entrance",
+                                                                       "architecture"])
+                        if fx is not None else _door_element(
             DoorSpec("entrance", (en.room, en.room), en.center, en.width, en.height), f,
             storey))
     # stairs: flights leave this storey (cut the ceiling) or arrive (cut the floor)

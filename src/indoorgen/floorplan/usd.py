@@ -2,9 +2,12 @@
 prim /World), following the export contract of DESIGN.md::
 
     /World/Architecture/storey_<k>/<room>/{floor, ceiling, walls}
-    /World/Architecture/storey_<k>/doors/<door>/{leaf, casing}
-    /World/Architecture/storey_<k>/windows/<window>/{frame, glass}
-    /World/Architecture/stairs/<stair>/{flight | rail}
+    /World/Architecture/storey_<k>/doors/<door>/{door | leaf, casing}
+    /World/Architecture/storey_<k>/windows/<window>/{window | frame, glass}
+    /World/Architecture/stairs/<stair>/{stair | flight}, .../<rail>/{railing | rail}
+
+(the first part name when the element comes from the asset catalogue, whose generator is then
+its `indoorgen:generator`; the others for the simple parametric solids.)
 
 One Xform per element with its meshes (world coordinates) below; every element carries
 `indoorgen:generator`, `indoorgen:room`, `indoorgen:parent`, `indoorgen:semantics` (and
@@ -57,8 +60,8 @@ def build_architecture_stage(arch: Architecture) -> Usd.Stage:
             UsdGeom.Xform.Define(stage, gp)
         ep = gp.AppendChild(sanitize_name(el.name))
         _tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=el.name,
-                  generator=f"{el.kind}_simple", room=el.room, parent=el.room,
-                  semantics=el.semantics)
+                  generator=el.generator or f"{el.kind}_simple", room=el.room,
+                  parent=el.room, semantics=el.semantics)
         for part, mesh in el.meshes.items():
             _define_mesh(stage, ep.AppendChild(sanitize_name(part)), mesh)
     return stage
