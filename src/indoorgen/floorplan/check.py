@@ -3,7 +3,7 @@
 `floorplan_problems` lists every rule a plan breaks (an empty list means it is sound): rooms of
 a storey overlap or leave gaps in the outline; a room is unreachable from the front door
 through doors, open connections and stairs; a door is narrower than 0.8 m or not in a wall its
-two rooms share; a room other than a closet is narrower than 1.2 m; bathroom privacy is broken;
+two rooms share; a room is narrower than 1.2 m (a closet than 1 m); bathroom privacy is broken;
 required rooms are missing; a flight is not held by staircase rooms on both its storeys.
 """
 from __future__ import annotations
@@ -15,7 +15,8 @@ import shapely.geometry as sg
 
 from .graph import privacy_problems
 from .plan import Floorplan
-from .rooms import BATHROOM, KITCHEN, LIVING, MIN_WIDTH, NARROW_OK_TYPES, STAIRCASE
+from .rooms import (BATHROOM, KITCHEN, LIVING, MIN_CLOSET_WIDTH, MIN_WIDTH, NARROW_OK_TYPES,
+                    STAIRCASE)
 from .solidify import stair_rooms
 
 MIN_DOOR_WIDTH = 0.8
@@ -101,9 +102,10 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             if gap > 1e-4:
                 out.append(f"rooms on storey {s.level} differ from its outline by {gap:.4f} m^2")
         for r, p in zip(s.rooms, shapes):
-            if r.type not in NARROW_OK_TYPES and narrow_area(p, MIN_WIDTH) > 0.01:
-                out.append(f"{r.name} is narrower than {MIN_WIDTH} m somewhere "
-                           f"({narrow_area(p, MIN_WIDTH):.2f} m^2)")
+            width = MIN_CLOSET_WIDTH if r.type in NARROW_OK_TYPES else MIN_WIDTH
+            if narrow_area(p, width) > 0.01:
+                out.append(f"{r.name} is narrower than {width} m somewhere "
+                           f"({narrow_area(p, width):.2f} m^2)")
     out += _door_problems(fp)
     g = connection_graph(fp)
     if fp.entrance is None:

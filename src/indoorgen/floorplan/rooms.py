@@ -38,8 +38,9 @@ MIN_AREA: dict[str, float] = {
     UTILITY: 2.0, GARAGE: 15.0, BALCONY: 3.0, HALLWAY: 2.25, STAIRCASE: 10.0,
 }
 
-#: Narrowest a room may be (m), closets excepted.
+#: Narrowest a room may be (m); closets may be down to MIN_CLOSET_WIDTH.
 MIN_WIDTH = 1.2
+MIN_CLOSET_WIDTH = 1.0
 
 #: Types that must touch the exterior (D.2): bedrooms, garages and balconies.
 EXTERIOR_TYPES = frozenset({BEDROOM, GARAGE, BALCONY})

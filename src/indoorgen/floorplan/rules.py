@@ -7,14 +7,16 @@ breaks them for a room it touched before the program is even evaluated.
 from __future__ import annotations
 
 from ..constraints.room_terms import MIN_DOOR_WALL
-from .rooms import EXTERIOR_TYPES, MIN_AREA, MIN_WIDTH, NARROW_OK_TYPES, STAIRCASE, room_type_of
+from .rooms import (EXTERIOR_TYPES, MIN_AREA, MIN_CLOSET_WIDTH, MIN_WIDTH, NARROW_OK_TYPES,
+                    STAIRCASE, room_type_of)
 from .view import GridPlan
 
 
 def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
-    MIN_WIDTH wide (closets excepted), at least its type's minimum area, and the staircase room
+    MIN_WIDTH wide (closets MIN_CLOSET_WIDTH), at least its type's minimum area, and the
+    staircase room
     holding the whole staircase placeholder."""
     t = room_type_of(o)
     if plan.outline_points(o) is None:
@@ -27,8 +29,9 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
     if (t in EXTERIOR_TYPES or o == plan.graph.entrance) and \
             plan.longest_exterior_wall(o) < MIN_DOOR_WALL - 1e-9:
         out.append(f"{o} has no outside wall")
-    if t not in NARROW_OK_TYPES and plan.narrow_area(o, MIN_WIDTH) > 0.01:
-        out.append(f"{o} is narrower than {MIN_WIDTH} m")
+    width = MIN_CLOSET_WIDTH if t in NARROW_OK_TYPES else MIN_WIDTH
+    if plan.narrow_area(o, width) > 0.01:
+        out.append(f"{o} is narrower than {width} m")
     if plan.missing_doors(o):
         out.append(f"{o} lacks a door-wide wall with a graph neighbour")
     return out

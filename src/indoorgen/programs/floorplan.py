@@ -39,6 +39,8 @@ def floorplan() -> Problem:
                 lambda r: longest_exterior_wall(r) >= 1.5),
             "rooms at least 1.2 m wide": rooms.excluding("closet").all(
                 lambda r: narrow_area(r, 1.2) <= 0.01),
+            "closets at least 1 m wide": rooms_of(rooms, "closet").all(
+                lambda r: narrow_area(r, 1.0) <= 0.01),
             "rooms big enough for their use": rooms.all(lambda r: room_area(r) >= min_area(r)),
             "the staircase room holds the stairs": stairs.all(
                 lambda r: stair_coverage(r) >= 0.999),
