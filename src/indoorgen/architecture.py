@@ -14,6 +14,6 @@ def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Any]:
     if scene.floorplan is not None:
         from .floorplan.io import from_json
         from .floorplan.solidify import room_geometries, solidify
-        arch = solidify(from_json(scene.floorplan))
+        arch = solidify(from_json(scene.floorplan), seed=scene.seed)
         return room_geometries(arch), arch
     return {n: build_room(r) for n, r in scene.rooms.items()}, None

@@ -29,6 +29,10 @@ def check_writable(out: Path, directory: bool = True) -> None:
         probe = probe.parent
     if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
         raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
+    try:  # permissions can say yes where the filesystem says no (root, /proc, read-only mounts)
+        tempfile.TemporaryDirectory(prefix=".indoorgen-probe-", dir=probe).cleanup()
+    except OSError as e:
+        raise OutputError(f"cannot write to {out}: {probe} is not writable ({e.strerror})") from None
 
 
 @contextlib.contextmanager

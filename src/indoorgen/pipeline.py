@@ -183,7 +183,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
         plan = generate_floorplan(seed, FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms,
                                                         area=cfg.area, contour=cfg.contour))
     t1 = time.perf_counter()
-    arch = solidify(plan)
+    arch = solidify(plan, seed=seed)  # seeded: doors, windows and stairs from the catalogue
     geometry = room_geometries(arch)
     problems = {name: _problem(ROOM_PROGRAMS[g.room.room_type], name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}

@@ -178,7 +178,8 @@ def test_fruits_lie_in_the_bowl():
         fruit = a.mesh.triangles[a.face_slots == a.slots.index("food")].reshape(-1, 3)
         assert len(fruit)
         assert np.linalg.norm(fruit[:, :2], axis=1).max() <= p["radius"] + 1e-3
-        floor = a.surface("interior").origin[2]
+        _, offset, _ = f._layout(f.resolve(p))  # design frame -> asset frame
+        floor = tableware_more.bowl_vessel(p).floor_z + offset[2]  # the inner floor, under fruit
         assert fruit[:, 2].min() > floor - 0.005
         assert 3 <= len(f._fruits(p)) <= p["n_fruits"]
 

@@ -49,6 +49,9 @@ class FakeView:
             return np.array([c.x, c.y, 1.35])
         return self.objs[o]["center"]
 
+    def floor_z(self, o):
+        return 0.0
+
     def yaw(self, o):
         return 0.0 if o in self.rooms else self.objs[o]["yaw"]
 

@@ -347,7 +347,9 @@ def flip_caps(verts: np.ndarray, faces: np.ndarray, face_slots: np.ndarray,
             if n is None or n in done:
                 continue
             g = faces[n]
-            d = next(int(v) for v in g if v not in (a, b))
+            d = next((int(v) for v in g if v not in (a, b)), None)
+            if d is None or d == c:  # a degenerate neighbour: leave this cap alone
+                continue
             faces[k] = (c, a, d)
             faces[n] = (b, c, d)
             face_slots[k] = face_slots[n]

@@ -587,7 +587,8 @@ class CenterOfSupport(GeometricTerm):
 class Height(GeometricTerm):
     def compute(self, ev, env):
         (s,) = self.members(ev, env)
-        return float(math.fsum(float(ev.view.center(o)[2]) for o in sorted(s)))
+        return float(math.fsum(float(ev.view.center(o)[2]) - ev.view.floor_z(o)
+                               for o in sorted(s)))
 
 
 def _per_object(objs: ObjSet, make: Callable[[ObjSet], Scalar]) -> Scalar:
@@ -632,8 +633,8 @@ def center_of_support_distance(objs: ObjSet) -> Scalar:
 
 
 def height(objs: ObjSet) -> Scalar:
-    """Sum of the heights above the floor of the objects' bounding-box centres (for hanging
-    pictures at eye level)."""
+    """Sum of the heights above their room's floor of the objects' bounding-box centres (for
+    hanging pictures at eye level, on any storey)."""
     return _per_object(objs, Height)
 
 

@@ -48,10 +48,16 @@ class _Assets:
         self.files = files
         self._names: set[str] = set()
 
-    def mesh(self, path: str) -> str:
+    def mesh(self, path: str, visual: bool = False) -> str:
+        """The asset name of a mesh file. Visual meshes are open surfaces (one material's faces),
+        so MuJoCo must treat them as shells when it measures them; inertia comes from the
+        explicit <inertial> elements anyway."""
         name = path.removeprefix("meshes/").replace("/", "__").rsplit(".", 1)[0]
         if name not in self._names:
-            ET.SubElement(self.el, "mesh", name=name, file=path)
+            attrs = {"name": name, "file": path}
+            if visual:
+                attrs["inertia"] = "shell"
+            ET.SubElement(self.el, "mesh", attrs)
             self._names.add(name)
         return name
 
@@ -93,7 +99,7 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
     pos = _f(-frame)
     for vf in files.visuals(name):
         if vf.link == link:
-            ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path),
+            ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                          "material": assets.material(
                                              vf.material, vf.slot in ("emissive", "bulb")),
                                          "pos": pos})
@@ -170,7 +176,7 @@ def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
     for el in bundle.elements:
         vis_files, col_files = files.architecture(el)
         for vf in vis_files:
-            ET.SubElement(world, "geom", {"class": "visual", "mesh": assets.mesh(vf.path),
+            ET.SubElement(world, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                           "material": assets.material(vf.material)})
         for path in col_files:
             ET.SubElement(world, "geom", {"class": "collision", "mesh": assets.mesh(path)})

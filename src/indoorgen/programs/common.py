@@ -10,8 +10,9 @@ against_wall = StableAgainst(Subpart.Back, Subpart.Wall, margin=0.05)
 on_wall = StableAgainst(Subpart.Back, Subpart.Wall)
 #: resting on a tabletop, shelf or stand without tipping over
 on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
-#: a chair pulled up to a table: its seat's front 8 cm under the table's edge
-at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.08, overhang=False)
+#: a chair pulled up to a table: its front 4 cm under the table's edge (clear of legs inset
+#: from the edge and of stretchers between them)
+at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.04, overhang=False)
 #: hanging from the ceiling by its top (ceiling lights, pendants)
 on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 #: a side flush against a wall (the second wall of a corner: a bathtub, a kitchen run's end)

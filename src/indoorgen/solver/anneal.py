@@ -119,6 +119,11 @@ class Annealer:
             res = solve_pose(st, ob.asset, ob.placements, q - r @ child.origin, yaw)
             if res is None:
                 return []
+            if abs(res[1] - yaw) > 1e-9:  # a wall or table side fixed the yaw: aim again
+                res = solve_pose(st, ob.asset, ob.placements, q - rotation(res[1]) @ child.origin,
+                                 res[1])
+                if res is None:
+                    return []
             moved = self._move(ob.name, res[0], res[1])
             if self._valid_group(moved):
                 return moved

@@ -140,6 +140,12 @@ class State:
         b = ob.asset.mesh.bounds
         return rotation(ob.yaw) @ np.array([b[1][0], 0.0, (b[0][2] + b[1][2]) / 2]) + ob.position
 
+    def floor_z(self, o: str) -> float:
+        """Height of the floor of the room `o` is in (or is): a home's upper storeys stand
+        higher than z = 0."""
+        room = o if o in self.rooms else self.objects[o].room
+        return float(getattr(self.rooms[room], "elevation", 0.0))
+
     def yaw(self, o: str) -> float:
         return 0.0 if o in self.rooms else float(self.objects[o].yaw)
 
