@@ -53,3 +53,46 @@ def to_local(surface, pts3: np.ndarray) -> np.ndarray:
     return np.c_[d @ surface.u, d @ surface.v]
 
 
+
+
+def part_signature(factory, params) -> tuple:
+    """A cheap fingerprint of the detailed design of `params`: every piece's bounding box,
+    volume, size, link and material slot, and every named surface (no booleans, so comparing
+    many variants stays fast)."""
+    p = factory.resolve(params)
+    parts = factory.parts(p, True)
+    pieces = tuple(sorted((tuple(np.round(q.solid.bounding_box(), 6)), round(q.solid.volume(), 10),
+                           q.solid.num_tri(), q.link, q.slot) for q in parts))
+    surfaces = tuple(sorted((s.name, tuple(np.round(s.origin, 6)), tuple(np.round(s.polygon.bounds, 6)))
+                            for s in factory.extra_surfaces(p)))
+    return pieces, surfaces
+
+
+def param_values(prm) -> list:
+    """The values a parameter is moved through: its range's ends, both booleans, every choice."""
+    if prm.kind == "float":
+        return [prm.low, (prm.low + prm.high) / 2, prm.high]
+    if prm.kind == "int":
+        return [int(prm.low), int(prm.high)]
+    if prm.kind == "bool":
+        return [False, True]
+    return list(prm.choices)
+
+
+def inert_params(factory, n_bases: int = 16) -> list[str]:
+    """Parameters that never change the design (geometry, materials or surfaces), whatever the
+    design around them:
+    each is moved through its values on a few base designs (sampled ones, and the first of
+    them with every number at its low and at its high end)."""
+    bases = [factory.sample_params(np.random.default_rng(s)) for s in range(n_bases - 2)]
+    for end in ("low", "high"):
+        bases.append(dict(bases[0], **{k: (getattr(q, end) if q.kind == "float"
+                                           else int(getattr(q, end)))
+                                       for k, q in factory.params.items()
+                                       if q.kind in ("float", "int")}))
+    inert = []
+    for k, prm in factory.params.items():
+        if not any(len({part_signature(factory, dict(b, **{k: v}))
+                        for v in param_values(prm)}) > 1 for b in bases):
+            inert.append(k)
+    return inert

@@ -444,11 +444,11 @@ def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool =
 
 #: a piece whose volume fills at least this share of its convex hull counts as convex
 CONVEX_FILL = 0.85
-#: parts whose hull is smaller than this (m^3, 2 litres) keep their hull: a leaf, a cup
-MIN_SPLIT_VOLUME = 0.002
+#: parts whose hull is smaller than this (m^3, 10 litres) keep their hull: a leaf, a pot, a vase
+MIN_SPLIT_VOLUME = 0.01
 
 
-def convex_split(solid: m3d.Manifold, depth: int = 4) -> list[m3d.Manifold]:
+def convex_split(solid: m3d.Manifold, depth: int = 3) -> list[m3d.Manifold]:
     """Cut a solid into pieces that each nearly fill their convex hull: recursively split it by
     the axis-aligned plane through the middle of its bounding box (along x, y or z) that leaves
     the least empty hull volume, up to `depth` times (at most 2**depth pieces). Small solids

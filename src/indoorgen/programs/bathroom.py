@@ -13,7 +13,6 @@ def bathroom(room) -> Problem:
     baths = along_walls[S.Bathtub].related_to(room, side_to_wall)
     showers = along_walls[S.Shower].related_to(room, side_to_wall)
     on_walls = scene().related_to(room, on_wall)
-    mirrors = on_walls[S.MirrorCabinet] | on_walls[S.Mirror]
     towel_rails = on_walls[S.TowelBar] | on_walls[S.TowelRing]
     roll_holders = on_walls[S.ToiletRollHolder]
     hooks = on_walls[S.RobeHook]

@@ -26,6 +26,9 @@ from .state import ObjState, Placement, State, rotation
 
 log = logging.getLogger(__name__)
 
+#: a loss improvement smaller than this does not count as progress for early stopping
+MIN_GAIN = 1e-3
+
 MOVES_DISCRETE = {"add": 3.0, "delete": 0.6, "resample": 0.8, "reinit": 0.8,
                   "reassign_plane": 0.6, "reassign_parent": 0.5}
 MOVES_CONTINUOUS = {"translate": 3.0, "rotate": 1.2}
@@ -411,9 +414,12 @@ class Annealer:
         self.temperature = cfg.t_start
         best = (self.result.violation, self.result.loss)
         last_gain = 0
-        patience = max(60, int(cfg.patience * steps))
+        patience = max(40, int(cfg.patience * steps))
         for step in range(steps):
-            if step - last_gain > patience and step > steps // 2 and self.result.violation == 0:
+            stalled = step - last_gain
+            # converged (nothing improved for a while), or stuck on a constraint this room
+            # cannot meet (twice as long without any gain): more steps would change nothing
+            if stalled > patience and (self.result.violation == 0 or stalled > 2 * patience):
                 st.stopped_early = True
                 break  # converged: nothing has improved for a while
             frac = step / max(1, steps - 1)
@@ -431,7 +437,7 @@ class Annealer:
             new = self.ev.evaluate()
             if self.accept(self.result, new):
                 self.result = new
-                if (new.violation, new.loss + 1e-4) < best:
+                if (new.violation, new.loss + MIN_GAIN) < best:
                     best, last_gain = (new.violation, new.loss), step
                 st.accepted += 1
                 st.taken[move] = st.taken.get(move, 0) + 1

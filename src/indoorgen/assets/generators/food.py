@@ -20,7 +20,7 @@ from ..base import Param, register
 from ..parts import Part, bevel_box, box_between, cylinder, lathe, rod, solid_union
 from ._common import PartsFactory, support_rect
 from .tableware_more import (SECTIONS, bowl_base_radius, bowl_params, bowl_vessel, cheap_cylinder,
-                             interior_floor, round_bottom, solid_revolve)
+                             round_bottom, solid_revolve)
 
 #: how far touching pieces sink into each other so that their union is one shell (m)
 SINK = 0.0015

@@ -1,9 +1,7 @@
 """Tableware: lathed plates and cups (a cup is a closed solid with an open cavity)."""
 from __future__ import annotations
 
-import math
 
-import numpy as np
 
 from ...tags import Semantics as S
 from ...tags import Subpart
