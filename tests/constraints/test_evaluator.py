@@ -86,7 +86,7 @@ def test_unrelated_move_recomputes_nothing():
     assert ev.recomputed == before
 
 
-ops = st.lists(st.tuples(st.sampled_from(["table", "chair", "cup", "move", "delete"]),
+ops = st.lists(st.tuples(st.sampled_from(["table", "chair", "cup", "move", "delete", "relink"]),
                          st.integers(0, 10**6)), min_size=1, max_size=30)
 
 
@@ -120,6 +120,18 @@ def test_incremental_equals_full_for_random_edit_sequences(seq):
             name = names[int(rng.integers(len(names)))]
             v.move(name, center=pos, yaw=float(rng.uniform(-3, 3)))
             ev.notify([name])
+        elif op == "relink" and len(tables) > 1:
+            # a chair or cup moved to another table (the solver's reassign-parent move)
+            kids = sorted(k for k, o in v.objs.items() if len(o["relations"]) and
+                          o["relations"][-1][1] in tables)
+            if kids:
+                name = kids[int(rng.integers(len(kids)))]
+                rels = v.objs[name]["relations"]
+                old_parent = rels[-1][1]
+                new_parent = tables[int(rng.integers(len(tables)))]
+                v.objs[name]["relations"] = rels[:-1] + [(rels[-1][0], new_parent)]
+                v.move(name, center=pos)
+                ev.notify([name], relinked=[old_parent, new_parent])
         elif op == "delete" and names:
             name = names[int(rng.integers(len(names)))]
             # deleting a table orphans its children's relations; that is fine for the DSL

@@ -43,6 +43,9 @@ class FakeView:
     def relations(self, o):
         return [] if o in self.rooms else self.objs[o]["relations"]
 
+    def children(self, o):
+        return {n for n, d in self.objs.items() if any(p == o for _, p in d["relations"])}
+
     def center(self, o):
         if o in self.rooms:
             c = self.rooms[o].centroid

@@ -28,6 +28,8 @@ from .expressions import Node, Problem
 log = logging.getLogger(__name__)
 
 Key = tuple  # (node uid, bound object names of the node's free variables)
+#: watch-key tag of "which objects are related to this parent" (see `watch_children`)
+CHILDREN = "@children"
 
 
 class ObjectView(Protocol):
@@ -36,6 +38,7 @@ class ObjectView(Protocol):
     def all_ids(self) -> frozenset[str]: ...
     def tags(self, o: str) -> frozenset: ...
     def relations(self, o: str) -> list[tuple[Any, str]]: ...
+    def children(self, o: str) -> set[str]: ...
     def center(self, o: str) -> np.ndarray: ...
     def front(self, o: str) -> np.ndarray: ...
     def front_point(self, o: str) -> np.ndarray: ...
@@ -108,6 +111,12 @@ class Evaluator:
         """Mark the entry being computed as depending on the state of `objs`."""
         self._frames[-1][2].update(objs)
 
+    def watch_children(self, parents: Iterable[str]) -> None:
+        """Mark the entry being computed as depending on which objects are related to
+        `parents` (not on anyone's pose): it is re-computed when `notify(relinked=...)` names
+        one of them."""
+        self._frames[-1][2].update((CHILDREN, p) for p in parents)
+
     def watch_membership(self) -> None:
         """Mark the entry being computed as depending on which objects exist."""
         f = self._frames[-1]
@@ -115,13 +124,16 @@ class Evaluator:
 
     # -- driving it ----------------------------------------------------------------------------
     def notify(self, changed: Iterable[str] = (), *, added: Iterable[str] = (),
-               removed: Iterable[str] = ()) -> None:
+               removed: Iterable[str] = (), relinked: Iterable[str] = ()) -> None:
         """Tell the evaluator which objects moved or changed relations/params (`changed`), were
-        added or were deleted since the last evaluation."""
+        added or were deleted since the last evaluation, and which parents gained or lost a
+        related object without an addition or deletion (`relinked`: a reassigned parent)."""
         added, removed = list(added), list(removed)
         dirty: set[Key] = set()
         for o in list(changed) + removed:
             dirty |= self._watchers.get(o, set())
+        for p in relinked:
+            dirty |= self._watchers.get((CHILDREN, p), set())
         if added or removed:
             dirty |= self._membership
         for o in removed:

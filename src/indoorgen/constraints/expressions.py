@@ -217,9 +217,12 @@ class RelatedTo(ObjSet):
     def compute(self, ev, env):
         objs = ev.get(self.children[0], env)
         parents = ev.get(self.children[1], env)
-        ev.watch(objs)
+        # which objects relate to the parents: poses don't matter, so a move never re-computes
+        # this; a changed set of objects (input version) or a reassigned parent does
+        ev.watch_children(parents)
         rel, view = self.relation, ev.view
-        return frozenset(o for o in objs
+        related = set().union(*(view.children(p) for p in parents)) & objs if parents else set()
+        return frozenset(o for o in related
                          if any(p in parents and r.implies(rel) for r, p in view.relations(o)))
 
     def label(self):

@@ -91,8 +91,8 @@ class Annealer:
 
     # -- helpers ---------------------------------------------------------------------------
     def _mine(self) -> list[str]:
-        return sorted(n for n, o in self.state.objects.items()
-                      if o.room == self.room and o.stage == self.stage)
+        """This room's objects of this stage, in name order (what moves may touch)."""
+        return self.state.members(self.room, self.stage)
 
     def _bounds(self) -> list[Bound]:
         rooms = frozenset(self.state.rooms)
@@ -170,7 +170,8 @@ class Annealer:
                 return placements
         return None
 
-    # -- moves: each returns (changed, added, removed, undo) or None when invalid -----------
+    # -- moves: each returns (changed, added, removed, undo, relinked) or None when invalid --
+    #    relinked: parents that gained or lost a related object (a reassigned parent)
     def move_add(self):
         bounds = [b for b in self._bounds() if b.can_add]
         if not bounds:
@@ -201,15 +202,14 @@ class Annealer:
             self.state.remove(ob.name)
             return None
         name = ob.name
-        return (), (name,), (), lambda: self.state.remove(name)
+        return (), (name,), (), lambda: self.state.remove(name), ()
 
     def move_delete(self):
         mine = self._mine()
         if not mine:
             return None
-        parents = {p.parent for o in self.state.objects.values() for p in o.placements}
         bounds = self._bounds()
-        ok = [n for n in mine if n not in parents
+        ok = [n for n in mine if not self.state.children(n)
               and all(b.can_delete for b in bounds if n in b.members)]
         if not ok:
             return None
@@ -218,7 +218,7 @@ class Annealer:
 
         def undo():
             self.state.add(ob)
-        return (), (), (name,), undo
+        return (), (), (name,), undo, ()
 
     def _pose_undo(self, name: str):
         """An undo for a pose change of `name` and of everything resting on it."""
@@ -274,7 +274,7 @@ class Annealer:
         if not self._valid_group(moved):
             undo()
             return None
-        return tuple(moved), (), (), undo
+        return tuple(moved), (), (), undo, ()
 
     def move_rotate(self):
         mine = [n for n in self._mine()]
@@ -297,7 +297,7 @@ class Annealer:
         if not self._valid_group(moved):
             undo()
             return None
-        return tuple(moved), (), (), undo
+        return tuple(moved), (), (), undo, ()
 
     def move_reinit(self):
         mine = self._mine()
@@ -310,7 +310,7 @@ class Annealer:
         if not moved:
             undo()
             return None
-        return tuple(moved), (), (), undo
+        return tuple(moved), (), (), undo, ()
 
     def move_resample(self):
         # new params mean new surfaces: whatever rests on an object keeps it as it is
@@ -335,7 +335,7 @@ class Annealer:
         if not self._valid(name):
             undo()
             return None
-        return (name,), (), (), undo
+        return (name,), (), (), undo, ()
 
     def _replace_placement(self, name: str, i: int, new: Placement):
         ob = self.state.objects[name]
@@ -349,7 +349,8 @@ class Annealer:
         if not moved:
             undo()
             return None
-        return tuple(moved), (), (), undo
+        relinked = tuple({p.parent for p in old_pl} ^ {p.parent for p in ob.placements})
+        return tuple(moved), (), (), undo, relinked
 
     def move_reassign_plane(self):
         mine = self._mine()
@@ -432,8 +433,8 @@ class Annealer:
             if out is None:
                 continue
             st.valid[move] = st.valid.get(move, 0) + 1
-            changed, added, removed, undo = out
-            self.ev.notify(changed, added=added, removed=removed)
+            changed, added, removed, undo, relinked = out
+            self.ev.notify(changed, added=added, removed=removed, relinked=relinked)
             new = self.ev.evaluate()
             if self.accept(self.result, new):
                 self.result = new
@@ -443,7 +444,7 @@ class Annealer:
                 st.taken[move] = st.taken.get(move, 0) + 1
             else:
                 undo()
-                self.ev.notify(changed, added=removed, removed=added)
+                self.ev.notify(changed, added=removed, removed=added, relinked=relinked)
         self.result = self.ev.evaluate()
         st.seconds = time.perf_counter() - t0
         st.objects = len(self._mine())

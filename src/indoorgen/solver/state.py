@@ -5,6 +5,7 @@ geometric facts the DSL's terms need, each cached per object until the object mo
 """
 from __future__ import annotations
 
+import bisect
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -72,7 +73,10 @@ class State:
         self._ids = frozenset(rooms)
         self._geo: dict[str, dict] = {}
         self._children: dict[str, set[str]] = {}
-        self.manager = fcl.DynamicAABBTreeCollisionManager()
+        self._members: dict[tuple[str, str], list[str]] = {}  # (room, stage) -> sorted names
+        # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
+        # room's objects and the (shared) architecture; this keeps each tree small in a home
+        self.managers: dict[str, fcl.DynamicAABBTreeCollisionManager] = {}
         self.static = []
         for g in rooms.values():
             for m in g.collision_meshes():
@@ -81,8 +85,10 @@ class State:
                 z0 = float(getattr(g, "elevation", 0.0))  # a home's upper storeys stand higher
                 for piece in keep_out_prisms(zone, z0, z0 + DOOR_ZONE_HEIGHT):
                     self.static.append(fcl.CollisionObject(convex_shape(piece), fcl.Transform()))
-        self.manager.registerObjects(self.static)
-        self.manager.setup()
+        for room in rooms:
+            m = self.managers[room] = fcl.DynamicAABBTreeCollisionManager()
+            m.registerObjects(self.static)
+            m.setup()
 
     # -- ObjectView ------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
@@ -217,26 +223,35 @@ class State:
         tf = self._transform(ob)
         ob.cobjs = [fcl.CollisionObject(shape, tf)
                     for shape in self.cache.placeholder_convex(ob.generator, ob.params)]
+        manager = self.managers[ob.room]
         for c in ob.cobjs:
-            self.manager.registerObject(c)
+            manager.registerObject(c)
 
     def _unregister(self, ob: ObjState) -> None:
+        manager = self.managers[ob.room]
         for c in ob.cobjs:
-            self.manager.unregisterObject(c)
+            manager.unregisterObject(c)
 
     def add(self, ob: ObjState) -> None:
         self.objects[ob.name] = ob
         self._ids = self._ids | {ob.name}
+        bisect.insort(self._members.setdefault((ob.room, ob.stage), []), ob.name)
         self._link(ob)
         self._register(ob)
 
     def remove(self, name: str) -> ObjState:
         ob = self.objects.pop(name)
         self._ids = self._ids - {name}
+        self._members[(ob.room, ob.stage)].remove(name)
         self._geo.pop(name, None)
         self._unlink(ob)
         self._unregister(ob)
         return ob
+
+    def members(self, room: str, stage: str) -> list[str]:
+        """Names of the objects of `room` placed in `stage`, sorted (kept up to date on add and
+        remove, so a move does not scan the whole scene)."""
+        return self._members.get((room, stage), [])
 
     def _link(self, ob: ObjState) -> None:
         for p in ob.placements:
@@ -275,7 +290,7 @@ class State:
         tf = self._transform(ob)
         for c in ob.cobjs:
             c.setTransform(tf)
-            self.manager.update(c)
+        self.managers[ob.room].update(ob.cobjs)
 
     def set_asset(self, name: str, params: dict[str, Any]) -> None:
         """Swap an object's params (and so its placeholder and collision pieces), keeping its
@@ -289,19 +304,20 @@ class State:
 
     def collides(self, name: str) -> bool:
         """Does object `name`'s placeholder (its solid convex pieces) overlap anything else:
-        other objects, walls, floor, ceiling, door keep-out zones?"""
+        other objects of its room, walls, floor, ceiling, door keep-out zones?"""
         ob = self.objects[name]
+        manager = self.managers[ob.room]
         self._unregister(ob)
         try:
             for c in ob.cobjs:
                 data = fcl.CollisionData(request=fcl.CollisionRequest())
-                self.manager.collide(c, data, fcl.defaultCollisionCallback)
+                manager.collide(c, data, fcl.defaultCollisionCallback)
                 if data.result.is_collision:
                     return True
             return False
         finally:
             for c in ob.cobjs:
-                self.manager.registerObject(c)
+                manager.registerObject(c)
 
 
 def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trimesh]:
