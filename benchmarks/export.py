@@ -3,10 +3,9 @@
     python benchmarks/export.py [--seed 0] [--room living_room] [--floors 2] [--res 512]
                                 [--formats usd,urdf,mjcf,glb,obj] [--cold]
 
-Room: `indoorgen.generate` (default config), then every format. Home: the solidified
-architecture of a generated floorplan (`floorplan.generate_floorplan` + `solidify`) with the
-furnished room's objects copied into every room (translated to the room's centre) until whole
-homes are furnished by the pipeline; the figure is what exporting a home of that size costs.
+Room: `indoorgen.generate` (default config), then every format. Home: `indoorgen.generate_home`
+with `--floors` storeys, every room furnished, then USD, URDF and MJCF. Generation is not
+counted, only export.
 `--cold` bakes textures from scratch (an empty texture cache); otherwise the texture cache is
 warm after the first run. Targets (issue 5): home USD+URDF+MJCF <= 10 s, scene.usdc <= 100 MB
 with 512 px textures.
@@ -18,8 +17,6 @@ import os
 import tempfile
 import time
 from pathlib import Path
-
-import numpy as np
 
 
 def _size(p: Path) -> int:
@@ -57,37 +54,6 @@ def run_formats(label: str, bundle, formats: str, res: int) -> None:
         print(f"  {'directory':12s} {_mb(_size(out))}")
 
 
-def home_bundle(seed: int, floors: int, room_gen):
-    """A whole home's architecture with `room_gen`'s objects copied into every room."""
-    from indoorgen.export.bundle import elements_from_architecture, make_bundle
-    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-    from indoorgen.floorplan.solidify import solidify
-    from indoorgen.scene import Pose, Scene, SceneObject
-
-    t = time.perf_counter()
-    arch = solidify(generate_floorplan(seed, FloorplanConfig(floors=floors)))
-    print(f"home architecture: {len(arch.rooms)} rooms, {len(arch.elements)} elements "
-          f"({time.perf_counter() - t:.1f} s to generate, not counted)")
-    src = room_gen.scene
-    src_room = next(iter(src.rooms.values()))
-    c0 = np.asarray(src_room.polygon, float).mean(axis=0)
-    scene = Scene(seed=seed)
-    assets = {}
-    full = room_gen.full_assets()
-    for rname, geo in arch.rooms.items():
-        scene.rooms[rname] = geo.room
-        c = np.asarray(geo.room.polygon, float).mean(axis=0)
-        for o in src.objects.values():
-            x, y, z = o.pose.position
-            name = f"{rname}__{o.name}"
-            scene.add_object(SceneObject(
-                name, o.generator, o.params, o.seed,
-                Pose((x - c0[0] + c[0], y - c0[1] + c[1], z + geo.elevation), o.pose.yaw),
-                o.tags, rname, [], o.stage))
-            assets[name] = full[o.name]
-    return make_bundle(scene, assets, elements_from_architecture(scene, arch))
-
-
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seed", type=int, default=0)
@@ -115,9 +81,15 @@ def main() -> None:
     print(f"bundle (full assets, materials): {time.perf_counter() - t:.2f} s")
     run_formats(f"furnished {args.room}", bundle, args.formats, args.res)
     if not args.no_home:
+        from indoorgen import HomeConfig, generate_home
         t = time.perf_counter()
-        home = home_bundle(args.seed, args.floors, gen)
-        print(f"home bundle: {time.perf_counter() - t:.2f} s")
+        home_gen = generate_home(args.seed, HomeConfig(floors=args.floors))
+        print(f"\ngenerated a {args.floors}-storey home, seed {args.seed}: "
+              f"{len(home_gen.scene.rooms)} rooms, {len(home_gen.scene.objects)} objects in "
+              f"{time.perf_counter() - t:.1f} s (not counted)")
+        t = time.perf_counter()
+        home = bundle_from_generated(home_gen)
+        print(f"home bundle (full assets, materials): {time.perf_counter() - t:.2f} s")
         run_formats(f"whole home ({args.floors} storeys)", home, args.home_formats, args.res)
 
 
