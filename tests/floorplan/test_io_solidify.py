@@ -192,3 +192,20 @@ def test_catalogue_doors_windows_and_stairs(two_storeys):
     d = fp.storeys[0].doors[0]
     prim = stage.GetPrimAtPath(f"/World/Architecture/storey_0/doors/{d.name}")
     assert prim.GetAttribute("indoorgen:generator").Get() == "interior_door"
+
+
+def test_catalogue_elements_carry_their_own_collision_pieces(two_storeys):
+    """Doors, windows and stairs from the catalogue bring the asset's convex pieces (placed in
+    the world like the mesh), so exporters never decompose them; each piece is convex and lies
+    within the element's mesh bounds."""
+    fp, _ = two_storeys
+    arch = solidify(fp, seed=5)
+    for e in arch.elements:
+        if not e.generator:
+            continue
+        assert e.collision, e.name
+        (mesh,) = e.meshes.values()
+        lo, hi = mesh.bounds
+        for piece in e.collision:
+            assert piece.is_watertight and piece.is_convex, e.name
+            assert np.all(piece.bounds[0] >= lo - 0.02) and np.all(piece.bounds[1] <= hi + 0.02), e.name

@@ -75,6 +75,9 @@ class ArchElement:
     parts: list[ArchPart]
     semantics: list[str] = field(default_factory=list)
     parent: str = ""
+    #: convex collision pieces (world coordinates) when the element brings its own (catalogue
+    #: doors, windows, stairs); otherwise they are cut from `parts` on demand
+    collision: list[trimesh.Trimesh] = field(default_factory=list)
 
 
 @dataclass
@@ -103,7 +106,8 @@ class ExportBundle:
         from .convex import convex_parts
         key = ("pieces", element.path)
         if key not in self._memo:
-            self._memo[key] = [p for part in element.parts for p in convex_parts(part.mesh)]
+            self._memo[key] = list(element.collision) or [
+                p for part in element.parts for p in convex_parts(part.mesh)]
         return self._memo[key]
 
     @property
@@ -241,7 +245,8 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
             slot = PART_SLOTS.get(pname, "frame")
             parts.append(ArchPart(pname, mesh, mats[slot], slot))
         out.append(ArchElement(el.name, el.kind, el.room, path, parts,
-                               list(el.semantics) or [el.kind, "architecture"], el.room))
+                               list(el.semantics) or [el.kind, "architecture"], el.room,
+                               list(getattr(el, "collision", []))))
     return out
 
 

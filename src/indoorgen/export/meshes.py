@@ -69,8 +69,11 @@ def weld(tri: np.ndarray, uv: np.ndarray, nrm: np.ndarray, decimals: int = 6) ->
     if f == 0:
         return Piece(np.zeros((0, 3)), np.zeros((0, 2)), np.zeros((0, 3)), np.zeros((0, 3), int))
     rows = np.concatenate([tri.reshape(-1, 3), uv.reshape(-1, 2), nrm.reshape(-1, 3)], axis=1)
-    key = np.round(rows, decimals)
-    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    # rows as opaque byte strings: np.unique on them is ~4x faster than with axis=0
+    # (+ 0.0 turns -0.0 into 0.0, whose bytes differ)
+    key = np.ascontiguousarray(np.round(rows, decimals) + 0.0)
+    key = key.view(np.dtype((np.void, key.dtype.itemsize * key.shape[1]))).ravel()
+    _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     v = rows[first]
     return Piece(v[:, :3], v[:, 3:5], v[:, 5:8], inverse.reshape(f, 3).astype(np.int64))
 

@@ -7,14 +7,13 @@ to texture repeats; MuJoCo takes one material per geom) and collision pieces as 
 """
 from __future__ import annotations
 
-import io
 import logging
 import os
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import trimesh
+
 
 from .bundle import ArchElement, ExportBundle, MatRef
 from .meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
@@ -26,11 +25,11 @@ MESH_DIR = "meshes"
 
 
 def _rows(fmt: str, arr: np.ndarray) -> str:
+    """`fmt` applied to every row of `arr`, a line each (what `np.savetxt` writes, formatted in
+    one %-operation instead of a Python loop over rows: 3-4x faster)."""
     if len(arr) == 0:
         return ""
-    buf = io.StringIO()
-    np.savetxt(buf, arr, fmt=fmt)
-    return buf.getvalue()
+    return ((fmt + "\n") * len(arr)) % tuple(np.asarray(arr).ravel().tolist())
 
 
 def obj_text(groups: list[tuple[str, Piece, float]], mtllib: str | None = None) -> str:

@@ -55,19 +55,23 @@ def piece_slots(asset: Asset) -> list[int]:
     fs = face_slot_names(asset)
     centroids = np.asarray(asset.mesh.triangles_center)
     areas = np.asarray(asset.mesh.area_faces)
+    link_faces = {link: asset.link_faces(link) for link in asset.links}
     out = []
     for link, piece in asset.collision:
-        faces = asset.link_faces(link)
+        faces = link_faces.get(link)
+        if faces is None:
+            faces = link_faces[link] = asset.link_faces(link)
         if len(faces) == 0 or len(piece.faces) == 0:
             out.append(0)
             continue
-        lo, hi = np.asarray(piece.bounds) + [[-2e-3], [2e-3]]
+        tri = np.asarray(piece.vertices)[np.asarray(piece.faces)]
+        lo = tri.reshape(-1, 3).min(axis=0) - 2e-3
+        hi = tri.reshape(-1, 3).max(axis=0) + 2e-3
         c = centroids[faces]
         near = faces[np.all((c >= lo) & (c <= hi), axis=1)]
         if len(near) == 0:
             out.append(int(np.bincount(fs[faces], weights=areas[faces]).argmax()))
             continue
-        tri = np.asarray(piece.vertices)[np.asarray(piece.faces)]
         n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
         n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-18)
         d = np.einsum("ij,ij->i", n, tri[:, 0])
@@ -77,58 +81,96 @@ def piece_slots(asset: Asset) -> list[int]:
     return out
 
 
+def volume_integrals(triangles: np.ndarray) -> np.ndarray:
+    """Per-triangle contributions (T, 10) to the integrals over a closed solid of 1, x, y, z,
+    x^2, y^2, z^2, xy, yz, zx (divergence theorem, Eberly's "Polyhedral Mass Properties"), so
+    that any set of triangles forming closed shells sums to that solid's moments."""
+    v0, v1, v2 = triangles[:, 0], triangles[:, 1], triangles[:, 2]
+    d = np.cross(v1 - v0, v2 - v0)
+    f1 = v0 + v1 + v2
+    f2 = v0 * v0 + v1 * (v0 + v1) + v2 * f1
+    f3 = v0 ** 3 + v0 * v0 * v1 + v0 * v1 * v1 + v1 ** 3 + v2 * f2
+    g0, g1, g2 = f2 + v0 * (f1 + v0), f2 + v1 * (f1 + v1), f2 + v2 * (f1 + v2)
+    nxt = [1, 2, 0]  # x -> y, y -> z, z -> x
+    mixed = d * (v0[:, nxt] * g0 + v1[:, nxt] * g1 + v2[:, nxt] * g2)
+    out = np.concatenate([d[:, :1] * f1[:, :1], d * f2, d * f3, mixed], axis=1)
+    return out / np.array([6, 24, 24, 24, 60, 60, 60, 120, 120, 120], float)
+
+
 def link_inertials(asset: Asset, materials: dict[str, MatRef]) -> dict[str, Inertial]:
-    """Inertial of every link of `asset` with slot materials `materials` (see module doc)."""
+    """Inertial of every link of `asset` with slot materials `materials` (see module doc).
+
+    All convex pieces' moments come from one vectorised pass over their triangles; a link's
+    density-weighted moments are the sums over its pieces."""
     slots = piece_slots(asset)
-    by_link: dict[str, list[tuple]] = {link: [] for link in asset.links}
+    pieces = [(link, piece) for link, piece in asset.collision if len(piece.faces)]
+    rho = []
     for (link, piece), si in zip(asset.collision, slots):
-        slot = asset.slots[si] if si < len(asset.slots) else "body"
-        ref = materials.get(slot)
-        rho = density_of(ref.name) if ref else 1000.0
-        by_link.setdefault(link, []).append((piece, rho))
+        if len(piece.faces):
+            slot = asset.slots[si] if si < len(asset.slots) else "body"
+            ref = materials.get(slot)
+            rho.append(density_of(ref.name) if ref else 1000.0)
+    moments = np.zeros((len(pieces), 10))
+    if pieces:
+        tris = np.concatenate([np.asarray(p.vertices)[np.asarray(p.faces)] for _, p in pieces])
+        owner = np.repeat(np.arange(len(pieces)), [len(p.faces) for _, p in pieces])
+        per_tri = volume_integrals(tris)
+        for k in range(10):
+            moments[:, k] = np.bincount(owner, weights=per_tri[:, k], minlength=len(pieces))
+        moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
+    shells = _shell_volumes(asset)
     out = {}
-    for link, items in by_link.items():
-        out[link] = _link_inertial(asset, link, items)
+    for link in asset.links + [l for l, _ in pieces if l not in asset.links]:
+        sel = [i for i, (l, _) in enumerate(pieces) if l == link and moments[i, 0] > 1e-12]
+        out[link] = _link_inertial(asset, link, moments[sel], np.asarray(rho)[sel],
+                                   shells.get(link))
     return out
 
 
-def _link_inertial(asset: Asset, link: str, items: list[tuple]) -> Inertial:
-    shell = asset.link_mesh(link) if len(asset.link_faces(link)) else None
-    masses, coms, tensors, vol_pieces, rho_vol = [], [], [], 0.0, 0.0
-    for piece, rho in items:
-        v = abs(float(piece.volume))
-        if v <= 1e-12:
-            continue
-        props = piece.mass_properties  # density 1
-        masses.append(v * rho)
-        coms.append(np.asarray(props["center_mass"], float))
-        tensors.append(np.asarray(props["inertia"], float) * rho * np.sign(piece.volume or 1))
-        vol_pieces += v
-        rho_vol += v * rho
-    if not masses:
-        if shell is not None and len(shell.faces):
-            c = np.asarray(shell.bounds).mean(axis=0)
-            ext = np.ptp(np.asarray(shell.vertices), axis=0) if len(shell.vertices) else np.ones(3)
+def _shell_volumes(asset: Asset) -> dict[str, float]:
+    """Enclosed volume of each link's render shell, for closed assets (whose links are closed
+    shells); empty otherwise."""
+    if not asset.closed or len(asset.mesh.faces) == 0:
+        return {}
+    tris = np.asarray(asset.mesh.triangles)
+    per_tri = np.einsum("ij,ij->i", tris[:, 0], np.cross(tris[:, 1], tris[:, 2])) / 6.0
+    if asset.face_links is None:
+        return {"base": float(per_tri.sum())}
+    vols = np.bincount(np.asarray(asset.face_links, int), weights=per_tri,
+                       minlength=len(asset.links))
+    return {link: float(v) for link, v in zip(asset.links, vols)}
+
+
+def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray,
+                   shell_volume: float | None) -> Inertial:
+    """One link's inertial from its pieces' moments (P, 10) and densities (P,)."""
+    if len(moments) == 0:
+        faces = asset.link_faces(link)
+        if len(faces):
+            v = np.asarray(asset.mesh.vertices)[np.unique(np.asarray(asset.mesh.faces)[faces])]
+            c, ext = (v.min(axis=0) + v.max(axis=0)) / 2, np.ptp(v, axis=0)
         else:
             c, ext = np.zeros(3), np.full(3, 0.05)
         m = MIN_MASS * 10
         box = m / 12.0 * np.diag([ext[1] ** 2 + ext[2] ** 2, ext[0] ** 2 + ext[2] ** 2,
                                   ext[0] ** 2 + ext[1] ** 2])
         return Inertial(m, c, box + np.eye(3) * MIN_INERTIA)
-    masses = np.asarray(masses)
-    coms = np.asarray(coms)
-    total = masses.sum()
-    com = (masses[:, None] * coms).sum(axis=0) / total
-    inertia = np.zeros((3, 3))
-    for m, c, t in zip(masses, coms, tensors):
-        r = c - com
-        inertia += t + m * (np.dot(r, r) * np.eye(3) - np.outer(r, r))
+    vol_pieces = float(moments[:, 0].sum())
+    total, (x, y, z), (xx, yy, zz), (xy, yz, zx) = (
+        float(rho @ moments[:, 0]), rho @ moments[:, 1:4], rho @ moments[:, 4:7],
+        rho @ moments[:, 7:10])
+    com = np.array([x, y, z]) / total
+    cx, cy, cz = com
+    inertia = np.array([
+        [yy + zz - total * (cy * cy + cz * cz), -(xy - total * cx * cy), -(zx - total * cz * cx)],
+        [-(xy - total * cx * cy), xx + zz - total * (cx * cx + cz * cz), -(yz - total * cy * cz)],
+        [-(zx - total * cz * cx), -(yz - total * cy * cz), xx + yy - total * (cx * cx + cy * cy)]])
     # mass: the shell's volume (the real material) at the pieces' mean density
-    rho = rho_vol / vol_pieces
+    density = total / vol_pieces
     volume = vol_pieces
-    if shell is not None and asset.closed and shell.is_volume:
-        volume = min(abs(float(shell.volume)), vol_pieces)
-    mass = max(volume * rho, MIN_MASS)
+    if shell_volume is not None and shell_volume > 0:
+        volume = min(shell_volume, vol_pieces)
+    mass = max(volume * density, MIN_MASS)
     inertia *= mass / total
     inertia = 0.5 * (inertia + inertia.T) + np.eye(3) * MIN_INERTIA
     return Inertial(mass, com, inertia)

@@ -12,7 +12,7 @@ rejects the plan's values, and the caller falls back to the simple parametric so
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -32,6 +32,8 @@ class Fixture:
     params: dict[str, Any]
     mesh: trimesh.Trimesh
     opening: tuple[float, float] | None = None  # the rough opening (width, height) it needs
+    #: the asset's own convex collision pieces, placed like `mesh` (what simulators collide)
+    collision: list[trimesh.Trimesh] = field(default_factory=list)
 
 
 def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
@@ -49,15 +51,22 @@ def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
         return None
 
 
-def _place(mesh: trimesh.Trimesh, x_axis: np.ndarray, origin: np.ndarray) -> trimesh.Trimesh:
-    """Rotate the local +X onto `x_axis` (2D, horizontal) and move the origin to `origin`."""
+def _fixture(generator: str, params: dict, asset, x_axis: np.ndarray, origin: np.ndarray,
+             opening: tuple[float, float] | None = None) -> Fixture:
+    """`asset` placed with its local +X rotated onto `x_axis` (2D, horizontal) and its origin
+    moved to `origin`; its collision pieces go along."""
     m = np.eye(4)
     c, s = float(x_axis[0]), float(x_axis[1])
     m[:2, :2] = [[c, -s], [s, c]]
     m[:3, 3] = origin
-    out = mesh.copy()
-    out.apply_transform(m)
-    return out
+
+    def placed(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+        out = mesh.copy()
+        out.apply_transform(m)
+        return out
+
+    return Fixture(generator, params, placed(asset.mesh), opening,
+                   [placed(piece) for _, piece in asset.collision])
 
 
 def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: float,
@@ -73,8 +82,8 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
     f, params, asset = got
     from ..assets.generators.architecture import opening_size
     c = np.asarray(center, float)
-    return Fixture(gen, params, _place(asset.mesh, into, np.array([c[0], c[1], elevation])),
-                   opening_size(params))
+    return _fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
+                    opening_size(params))
 
 
 def window(seed: int, name: str, center, inward: np.ndarray, width: float, height: float,
@@ -87,9 +96,8 @@ def window(seed: int, name: str, center, inward: np.ndarray, width: float, heigh
     f, params, asset = got
     from ..assets.generators.architecture import opening_size
     c = np.asarray(center, float)
-    return Fixture("window", params,
-                   _place(asset.mesh, inward, np.array([c[0], c[1], elevation + sill])),
-                   opening_size(params))
+    return _fixture("window", params, asset, inward,
+                    np.array([c[0], c[1], elevation + sill]), opening_size(params))
 
 
 def stair(seed: int, name: str, polygon, rise: float, elevation: float) -> Fixture | None:
@@ -106,8 +114,8 @@ def stair(seed: int, name: str, polygon, rise: float, elevation: float) -> Fixtu
         return None
     f, params, asset = got
     centre = p.mean(axis=0)
-    return Fixture("staircase", params,
-                   _place(asset.mesh, up / run, np.array([centre[0], centre[1], elevation])))
+    return _fixture("staircase", params, asset, up / run,
+                    np.array([centre[0], centre[1], elevation]))
 
 
 def railing(seed: int, name: str, a, b, elevation: float) -> Fixture | None:
@@ -121,6 +129,6 @@ def railing(seed: int, name: str, a, b, elevation: float) -> Fixture | None:
     along = (b - a) / length
     x_axis = np.array([along[1], -along[0]])  # local +X is right of +Y
     mid = (a + b) / 2
-    return Fixture("stair_railing", params,
-                   _place(asset.mesh, x_axis, np.array([mid[0], mid[1], elevation])))
+    return _fixture("stair_railing", params, asset, x_axis,
+                    np.array([mid[0], mid[1], elevation]))
 

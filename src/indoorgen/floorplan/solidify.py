@@ -67,13 +67,16 @@ class Element:
     semantics: list[str] = field(default_factory=list)
     generator: str = ""  # the catalogue generator that made it ("" for the simple solids)
     params: dict = field(default_factory=dict)
+    #: convex collision pieces in world coordinates (a catalogue asset's own); empty: exporters
+    #: decompose `meshes` themselves
+    collision: list[trimesh.Trimesh] = field(default_factory=list)
 
     @classmethod
     def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str]
            ) -> "Element":
         """An element holding a catalogue fixture's mesh."""
         return cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
-                   dict(fx.params))
+                   dict(fx.params), list(fx.collision))
 
 
 @dataclass
