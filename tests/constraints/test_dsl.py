@@ -1,11 +1,10 @@
 """Every DSL term evaluated through the expression graph against hand-computed values."""
 import math
 
-import numpy as np
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.constraints import (Not, Problem, StableAgainst, SupportedBy, accessibility_cost,
+from indoorgen.constraints import (Not, Problem, StableAgainst, accessibility_cost,
                                    angle_alignment_cost, area, center_of_support_distance,
                                    distance, focus_score, freespace_2d, height, min_distance,
                                    reflectional_asymmetry, rotational_asymmetry, scene, volume)

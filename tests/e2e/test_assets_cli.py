@@ -4,7 +4,6 @@ import subprocess
 import sys
 
 import matplotlib.image as mpimg
-import numpy as np
 
 CLI = [sys.executable, "-m", "indoorgen.cli"]
 

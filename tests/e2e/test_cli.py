@@ -1,9 +1,7 @@
 """The CLI as a user runs it: outputs, determinism and one-line errors with exit status 2."""
 import json
-import os
 import subprocess
 import sys
-from pathlib import Path
 
 import matplotlib.image as mpimg
 import pytest

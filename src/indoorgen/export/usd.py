@@ -41,7 +41,7 @@ from pxr import Gf, Sdf, Sdr, Tf, Usd, UsdGeom, UsdLux, UsdPhysics, UsdSemantics
 from ..assets.base import Asset
 from ..errors import OutputError
 from ..scene import Scene, SceneObject
-from .bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
+from .bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
 from .meshes import corner_normals, corner_uv, face_slot_names, mesh_uv
 from .physics import Inertial, matrix_to_quat, quat_between
 from .textures import TextureStore

@@ -8,7 +8,7 @@ import numpy as np
 
 from ...tags import Semantics as S
 from ..base import Param, register
-from ..parts import Part, bevel_box, box, box_between, cylinder, legs, tapered_box
+from ..parts import Part, bevel_box, box, box_between, legs
 from ._common import PartsFactory, support_rect
 
 OVERLAP = 0.002
