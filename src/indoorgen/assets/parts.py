@@ -562,17 +562,7 @@ def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thic
         parts.append(Part(bar_handle(grip, hl, vertical), handle_slot, link))
     elif handle == "knob":
         parts.append(Part(knob(grip), handle_slot, link))
-    if hinge == "left":
-        axis, origin = (0.0, 0.0, -1.0), (x1, y0, z0)
-    elif hinge == "right":
-        axis, origin = (0.0, 0.0, 1.0), (x1, y1, z0)
-    elif hinge == "bottom":
-        axis, origin = (0.0, 1.0, 0.0), (x1, y0, z0)
-    elif hinge == "top":
-        axis, origin = (0.0, -1.0, 0.0), (x1, y0, z1)
-    else:
-        raise ValueError(f"hinge must be left, right, bottom or top, got {hinge!r}")
-    return parts, DoorJoint("revolute", np.array(axis), np.array(origin), link)
+    return parts, hinge_motion(hinge, x1, y0, y1, z0, z1, link)
 
 
 def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: float,
@@ -612,6 +602,29 @@ class DoorJoint:
     axis: np.ndarray
     origin: np.ndarray
     link: str
+
+
+def hinge_motion(hinge: str, x1: float, y0: float, y1: float, z0: float, z1: float,
+                 link: str) -> DoorJoint:
+    """The revolute motion of a leaf whose outer face is at `x1`, covering y0..y1, z0..z1,
+    hinged on its `hinge` side ("left" = low y, "right" = high y, "bottom" drop-down, "top"
+    lift-up): the axis runs along the leaf's outer hinge edge, so it swings away from the body."""
+    if hinge == "left":
+        axis, origin = (0.0, 0.0, -1.0), (x1, y0, z0)
+    elif hinge == "right":
+        axis, origin = (0.0, 0.0, 1.0), (x1, y1, z0)
+    elif hinge == "bottom":
+        axis, origin = (0.0, 1.0, 0.0), (x1, y0, z0)
+    elif hinge == "top":
+        axis, origin = (0.0, -1.0, 0.0), (x1, y0, z1)
+    else:
+        raise ValueError(f"hinge must be left, right, bottom or top, got {hinge!r}")
+    return DoorJoint("revolute", np.array(axis), np.array(origin), link)
+
+
+def slide_motion(link: str, origin: Sequence[float]) -> DoorJoint:
+    """A prismatic motion along +X (a drawer pulled out)."""
+    return DoorJoint("prismatic", np.array([1.0, 0.0, 0.0]), np.asarray(origin, float), link)
 
 
 # ----------------------------------------------------------------------------------- cabinets

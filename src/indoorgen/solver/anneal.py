@@ -266,10 +266,16 @@ class Annealer:
         _, _, dof = res
         sigma = self.cfg.translate_sigma * self.temperature
         step = dof.projection @ self.rng.normal(0.0, sigma, 3)
-        undo = self._pose_undo(name)
-        res = solve_pose(self.state, ob.asset, ob.placements, ob.position + step, ob.yaw)
+        return self._try_pose(name, ob.position + step, ob.yaw)
+
+    def _try_pose(self, name: str, position: np.ndarray, yaw: float):
+        """Move `name` (and what rests on it) to the pose nearest (position, yaw) on its planes;
+        the move's outcome, or None (and nothing changed) if that pose is invalid."""
+        ob = self.state.objects[name]
+        res = solve_pose(self.state, ob.asset, ob.placements, position, yaw)
         if res is None:
             return None
+        undo = self._pose_undo(name)
         moved = self._move(name, res[0], res[1])
         if not self._valid_group(moved):
             undo()
@@ -289,15 +295,7 @@ class Annealer:
             new_yaw = self._grid_yaw(ob, self._anchor(ob)[0])
         else:
             new_yaw = ob.yaw + float(self.rng.normal(0.0, self.cfg.rotate_sigma * self.temperature))
-        undo = self._pose_undo(name)
-        res = solve_pose(self.state, ob.asset, ob.placements, ob.position, new_yaw)
-        if res is None:
-            return None
-        moved = self._move(name, res[0], res[1])
-        if not self._valid_group(moved):
-            undo()
-            return None
-        return tuple(moved), (), (), undo, ()
+        return self._try_pose(name, ob.position, new_yaw)
 
     def move_reinit(self):
         mine = self._mine()

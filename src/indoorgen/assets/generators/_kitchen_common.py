@@ -18,6 +18,7 @@ from ...tags import Subpart
 from ..base import Joint, Surface
 from ..parts import (MOVING_GAP, DoorJoint, Front, Part, box_between, carcass, frame, knob, rod,
                      solid_union)
+from ..parts import hinge_motion, slide_motion  # noqa: F401 - the appliance generators' motions
 from ._common import make_joint
 
 OVERLAP = 0.002
@@ -176,29 +177,6 @@ def shaker_frame(x_face: float, y0: float, y1: float, z0: float, z1: float,
 
 
 # --------------------------------------------------------------------------------- motions
-def hinge_motion(hinge: str, x1: float, y0: float, y1: float, z0: float, z1: float,
-                 link: str) -> DoorJoint:
-    """The revolute motion of a leaf whose outer face is at `x1`, covering y0..y1, z0..z1,
-    hinged on its `hinge` side ("left" = low y, "right" = high y, "bottom" drop-down, "top"
-    lift-up): the axis runs along the leaf's outer hinge edge, so it swings away from the body."""
-    if hinge == "left":
-        axis, origin = (0.0, 0.0, -1.0), (x1, y0, z0)
-    elif hinge == "right":
-        axis, origin = (0.0, 0.0, 1.0), (x1, y1, z0)
-    elif hinge == "bottom":
-        axis, origin = (0.0, 1.0, 0.0), (x1, y0, z0)
-    elif hinge == "top":
-        axis, origin = (0.0, -1.0, 0.0), (x1, y0, z1)
-    else:
-        raise ValueError(f"hinge must be left, right, bottom or top, got {hinge!r}")
-    return DoorJoint("revolute", np.array(axis), np.array(origin), link)
-
-
-def slide_motion(link: str, origin: Sequence[float]) -> DoorJoint:
-    """A prismatic motion along +X (a drawer pulled out)."""
-    return DoorJoint("prismatic", np.array([1.0, 0.0, 0.0]), np.asarray(origin, float), link)
-
-
 def joint_for(m: DoorJoint, slide: float = 0.3, open_angle: float = DOOR_OPEN) -> Joint:
     """A named joint for a motion: `<link>_joint`, revolute to `open_angle` (drop-down flaps
     to 90 degrees) or prismatic to `slide` metres."""

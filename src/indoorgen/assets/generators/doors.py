@@ -16,7 +16,8 @@ import numpy as np
 
 from ...tags import Semantics as S
 from ..base import Param, register
-from ..parts import DoorJoint, Part, bar_handle, box, box_between, rod, solid_union, torus
+from ..parts import (DoorJoint, Part, bar_handle, box, box_between, hinge_motion, rod, solid_union,
+                     torus)
 from ._common import PartsFactory, make_joint
 from .architecture import (GAP, GLASS, OVERLAP, casing, grid_cells, hull, lever, opening_surface,
                            round_knob, slab)
@@ -158,14 +159,6 @@ def max_swing(wall: float, leaf_face: float, casing_t: float, gap: float) -> flo
     return min(math.radians(100.0), math.pi / 2 + min(a, b))
 
 
-def hinge_motion(hinge: str, x1: float, y0: float, y1: float, z0: float, link: str) -> DoorJoint:
-    """The revolute motion of a leaf y0..y1 whose +X face is at x1, hinged on its `hinge` side
-    (left = low y) and swinging into +X."""
-    if hinge == "left":
-        return DoorJoint("revolute", np.array([0.0, 0.0, -1.0]), np.array([x1, y0, z0]), link)
-    return DoorJoint("revolute", np.array([0.0, 0.0, 1.0]), np.array([x1, y1, z0]), link)
-
-
 # ------------------------------------------------------------------------- interior door
 @register
 class InteriorDoor(PartsFactory):
@@ -245,7 +238,7 @@ class InteriorDoor(PartsFactory):
     def joints(self, p):
         g = self._g(p)
         upper = max_swing(p["wall_thickness"], g["lx1"], p["casing_thickness"], GAP)
-        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, "leaf")
+        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, 0.0, "leaf")
         return [make_joint("leaf_joint", m, 0.0, upper)]
 
     def extra_surfaces(self, p):
@@ -588,7 +581,7 @@ class ExteriorDoor(PartsFactory):
     def joints(self, p):
         g = self._g(p)
         upper = max_swing(g["T"], g["lx1"], self.CASING_T, GAP)
-        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, "leaf")
+        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, 0.0, "leaf")
         return [make_joint("leaf_joint", m, 0.0, upper)]
 
     def extra_surfaces(self, p):
