@@ -61,7 +61,13 @@ class Bound:
 
 def context_of(node: Node) -> Context | None:
     """The addable context of a set expression, or None if objects cannot be added to it
-    (unions, differences, loop variables...)."""
+    (unions, differences, loop variables...). Memoised on the node (programs are immutable)."""
+    if "_context" not in node.__dict__:
+        node.__dict__["_context"] = _context_of(node)
+    return node.__dict__["_context"]
+
+
+def _context_of(node: Node) -> Context | None:
     tags: set = set()
     excluded: set = set()
     rels: list = []

@@ -101,7 +101,7 @@ class Evaluator:
     # -- the interface nodes use while computing ------------------------------------------
     def get(self, node: Node, env: dict) -> Any:
         """The value of `node` under loop bindings `env`, from cache when still valid."""
-        key = (node.uid, tuple(env[v] for v in sorted(node.free_vars)))
+        key = (node.uid, tuple([env[v] for v in node.key_vars]))
         e = self._refresh(key, node, env)
         if self._frames:
             self._frames[-1][1][key] = e.version

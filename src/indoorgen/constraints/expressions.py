@@ -48,6 +48,14 @@ class Node:
             self.__dict__["_fv"] = fv
         return fv
 
+    @property
+    def key_vars(self) -> tuple[int, ...]:
+        """`free_vars` in a fixed order: the loop bindings that key this node's cache entries."""
+        kv = self.__dict__.get("_kv")
+        if kv is None:
+            kv = self.__dict__["_kv"] = tuple(sorted(self.free_vars))
+        return kv
+
     def compute(self, ev: "Evaluation", env: dict[int, str]) -> Any:  # pragma: no cover
         raise NotImplementedError
 

@@ -208,9 +208,9 @@ class Annealer:
         mine = self._mine()
         if not mine:
             return None
-        bounds = self._bounds()
-        ok = [n for n in mine if not self.state.children(n)
-              and all(b.can_delete for b in bounds if n in b.members)]
+        # an object may go unless a count it belongs to is already at its minimum
+        kept = {n for b in self._bounds() if not b.can_delete for n in b.members}
+        ok = [n for n in mine if not self.state.children(n) and n not in kept]
         if not ok:
             return None
         name = self._pick(ok)

@@ -44,6 +44,7 @@ class AssetCache:
         self._full: dict[tuple, Asset] = {}
         self._hull: dict[tuple, np.ndarray] = {}
         self._convex: dict[tuple, list[fcl.Convex]] = {}
+        self._boxes: dict[tuple, np.ndarray] = {}
         self.builds = 0
 
     def placeholder(self, generator: str, params: dict[str, Any]) -> Asset:
@@ -83,3 +84,14 @@ class AssetCache:
             c = [convex_shape(m) for _, m in self.placeholder(generator, params).collision]
             self._convex[key] = c
         return c
+
+    def placeholder_boxes(self, generator: str, params: dict[str, Any]) -> np.ndarray:
+        """Local bounding boxes (k, 2, 3) of the placeholder's convex pieces, in the order of
+        `placeholder_convex`."""
+        key = params_key(generator, params)
+        b = self._boxes.get(key)
+        if b is None:
+            pieces = self.placeholder(generator, params).collision
+            b = np.array([m.bounds for _, m in pieces], float).reshape(-1, 2, 3)
+            self._boxes[key] = b
+        return b

@@ -21,6 +21,7 @@ from ..constraints.relations import Relation
 from ..floorplan.room import RoomGeometry
 from ..tags import Semantics
 from .assets_cache import AssetCache, convex_shape, mesh_bvh
+from .broadphase import Broadphase, world_boxes
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
@@ -54,6 +55,8 @@ class ObjState:
     context: Any = None
     env: dict = field(default_factory=dict)
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
+    #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
+    boxes: np.ndarray | None = None
 
 
 def rotation(yaw: float) -> np.ndarray:
@@ -62,7 +65,8 @@ def rotation(yaw: float) -> np.ndarray:
 
 
 class State:
-    """Rooms and objects being solved, with an fcl broadphase over placeholder meshes."""
+    """Rooms and objects being solved, with a broadphase per room over the placeholders' solid
+    convex pieces."""
 
     def __init__(self, rooms: dict[str, RoomGeometry], cache: AssetCache):
         self.rooms = rooms
@@ -75,20 +79,20 @@ class State:
         self._children: dict[str, set[str]] = {}
         self._members: dict[tuple[str, str], list[str]] = {}  # (room, stage) -> sorted names
         # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
-        # room's objects and the (shared) architecture; this keeps each tree small in a home
-        self.managers: dict[str, fcl.DynamicAABBTreeCollisionManager] = {}
+        # room's objects and the (shared) architecture; this keeps each query small in a home
         self.static = []
+        static_boxes = []
         for g in rooms.values():
             for m in g.collision_meshes():
                 self.static.append(fcl.CollisionObject(mesh_bvh(m), fcl.Transform()))
+                static_boxes.append(np.asarray(m.bounds, float).ravel())
             for zone in g.door_zones:  # solid keep-out prisms: nothing may stand inside them
                 z0 = float(getattr(g, "elevation", 0.0))  # a home's upper storeys stand higher
                 for piece in keep_out_prisms(zone, z0, z0 + DOOR_ZONE_HEIGHT):
                     self.static.append(fcl.CollisionObject(convex_shape(piece), fcl.Transform()))
-        for room in rooms:
-            m = self.managers[room] = fcl.DynamicAABBTreeCollisionManager()
-            m.registerObjects(self.static)
-            m.setup()
+                    static_boxes.append(np.asarray(piece.bounds, float).ravel())
+        self.broadphase: dict[str, Broadphase] = {
+            room: Broadphase(self.static, np.array(static_boxes).reshape(-1, 6)) for room in rooms}
 
     # -- ObjectView ------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
@@ -219,18 +223,19 @@ class State:
     def _transform(self, ob: ObjState) -> fcl.Transform:
         return fcl.Transform(rotation(ob.yaw), np.asarray(ob.position, float))
 
+    def _boxes(self, ob: ObjState) -> np.ndarray:
+        """World boxes of the object's collision pieces at its current pose."""
+        return world_boxes(ob.boxes, rotation(ob.yaw), np.asarray(ob.position, float))
+
     def _register(self, ob: ObjState) -> None:
         tf = self._transform(ob)
         ob.cobjs = [fcl.CollisionObject(shape, tf)
                     for shape in self.cache.placeholder_convex(ob.generator, ob.params)]
-        manager = self.managers[ob.room]
-        for c in ob.cobjs:
-            manager.registerObject(c)
+        ob.boxes = self.cache.placeholder_boxes(ob.generator, ob.params)
+        self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob))
 
     def _unregister(self, ob: ObjState) -> None:
-        manager = self.managers[ob.room]
-        for c in ob.cobjs:
-            manager.unregisterObject(c)
+        self.broadphase[ob.room].remove(ob.name)
 
     def add(self, ob: ObjState) -> None:
         self.objects[ob.name] = ob
@@ -290,7 +295,7 @@ class State:
         tf = self._transform(ob)
         for c in ob.cobjs:
             c.setTransform(tf)
-        self.managers[ob.room].update(ob.cobjs)
+        self.broadphase[ob.room].move(name, self._boxes(ob))
 
     def set_asset(self, name: str, params: dict[str, Any]) -> None:
         """Swap an object's params (and so its placeholder and collision pieces), keeping its
@@ -305,19 +310,7 @@ class State:
     def collides(self, name: str) -> bool:
         """Does object `name`'s placeholder (its solid convex pieces) overlap anything else:
         other objects of its room, walls, floor, ceiling, door keep-out zones?"""
-        ob = self.objects[name]
-        manager = self.managers[ob.room]
-        self._unregister(ob)
-        try:
-            for c in ob.cobjs:
-                data = fcl.CollisionData(request=fcl.CollisionRequest())
-                manager.collide(c, data, fcl.defaultCollisionCallback)
-                if data.result.is_collision:
-                    return True
-            return False
-        finally:
-            for c in ob.cobjs:
-                manager.registerObject(c)
+        return self.broadphase[self.objects[name].room].collides(name)
 
 
 def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trimesh]:

@@ -1,0 +1,107 @@
+"""Which solid pieces of a room overlap: axis-aligned boxes in numpy, then fcl's narrow phase.
+
+The annealer asks one question thousands of times: does the object just moved collide with
+anything else? python-fcl's broadphase managers answer it, but only for an object that is not
+in the manager itself, and taking one out scans a Python list of every registered piece, so a
+step cost grew with the room's size. Here every object keeps its pieces' world boxes; a query
+tests the moved object's box against all other objects' boxes and the architecture's in a few
+vectorised comparisons, then runs `fcl.collide` on the piece pairs whose boxes overlap.
+"""
+from __future__ import annotations
+
+import fcl
+import numpy as np
+
+#: boxes closer than this count as overlapping (fcl reports touching solids as colliding)
+BOX_TOL = 1e-9
+
+
+def world_boxes(local: np.ndarray, rotation: np.ndarray, translation: np.ndarray) -> np.ndarray:
+    """World boxes (k, 6: min xyz, max xyz) of local boxes `local` (k, 2, 3) under a rigid
+    transform: each rotated box's own bounding box (exact for turns about +Z of upright boxes,
+    conservative otherwise)."""
+    lo, hi = local[:, 0], local[:, 1]
+    centre = (lo + hi) / 2 @ rotation.T + translation
+    half = (hi - lo) / 2 @ np.abs(rotation).T
+    return np.concatenate([centre - half, centre + half], axis=1)
+
+
+def _overlapping(boxes: np.ndarray, box: np.ndarray) -> np.ndarray:
+    """Indices of the rows of `boxes` (n, 6) that overlap `box` (6,)."""
+    if len(boxes) == 0:
+        return np.zeros(0, int)
+    hit = np.all(boxes[:, :3] <= box[3:] + BOX_TOL, axis=1) & \
+        np.all(boxes[:, 3:] >= box[:3] - BOX_TOL, axis=1)
+    return np.nonzero(hit)[0]
+
+
+class Broadphase:
+    """The solid pieces of one room: fixed architecture and keep-out volumes, and movable
+    objects' pieces by object name (state: the pieces and their current world boxes)."""
+
+    def __init__(self, static: list[fcl.CollisionObject], static_boxes: np.ndarray) -> None:
+        self._static = list(static)
+        self._static_boxes = np.asarray(static_boxes, float).reshape(-1, 6)
+        self._pieces: dict[str, tuple[list[fcl.CollisionObject], np.ndarray]] = {}
+        self._names: list[str] = []            # row i of _union belongs to _names[i]
+        self._row: dict[str, int] = {}
+        self._union = np.zeros((0, 6))
+
+    def add(self, name: str, pieces: list[fcl.CollisionObject], boxes: np.ndarray) -> None:
+        """Register object `name` with its pieces (already posed) and their world boxes."""
+        self._pieces[name] = (pieces, boxes)
+        self._row[name] = len(self._names)
+        self._names.append(name)
+        self._union = np.vstack([self._union, _union_box(boxes)])
+
+    def remove(self, name: str) -> None:
+        """Forget object `name` (the last row moves into its place)."""
+        del self._pieces[name]
+        i = self._row.pop(name)
+        last = self._names.pop()
+        if last != name:
+            self._names[i] = last
+            self._row[last] = i
+            self._union[i] = self._union[-1]
+        self._union = self._union[:-1]
+
+    def move(self, name: str, boxes: np.ndarray) -> None:
+        """New world boxes of object `name`'s pieces (their fcl transforms are already set)."""
+        pieces, _ = self._pieces[name]
+        self._pieces[name] = (pieces, boxes)
+        self._union[self._row[name]] = _union_box(boxes)
+
+    def collides(self, name: str) -> bool:
+        """Does any piece of object `name` overlap a piece of another object or of the
+        architecture?"""
+        pieces, boxes = self._pieces[name]
+        if not pieces:
+            return False
+        own = _union_box(boxes)
+        request = fcl.CollisionRequest()
+        for j in _overlapping(self._static_boxes, own):
+            if self._any_hit(pieces, boxes, self._static[j], self._static_boxes[j], request):
+                return True
+        for i in _overlapping(self._union, own):
+            other = self._names[i]
+            if other == name:
+                continue
+            other_pieces, other_boxes = self._pieces[other]
+            for k in _overlapping(other_boxes, own):
+                if self._any_hit(pieces, boxes, other_pieces[k], other_boxes[k], request):
+                    return True
+        return False
+
+    @staticmethod
+    def _any_hit(pieces, boxes, other: fcl.CollisionObject, other_box: np.ndarray,
+                 request: fcl.CollisionRequest) -> bool:
+        for k in _overlapping(boxes, other_box):
+            if fcl.collide(pieces[k], other, request, fcl.CollisionResult()) > 0:
+                return True
+        return False
+
+
+def _union_box(boxes: np.ndarray) -> np.ndarray:
+    if len(boxes) == 0:  # no pieces: a box no query overlaps
+        return np.array([np.inf, np.inf, np.inf, -np.inf, -np.inf, -np.inf])
+    return np.concatenate([boxes[:, :3].min(axis=0), boxes[:, 3:].max(axis=0)])
