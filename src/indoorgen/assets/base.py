@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar, Iterable
 
 import numpy as np
+import shapely
 import shapely.geometry as sg
 import trimesh
 
@@ -98,7 +99,7 @@ class Surface:
     def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> "Surface":
         """A rectangle centred on `center`, extending +-half_u along u and +-half_v along v."""
         return Surface(name, subpart, np.asarray(center, float), _unit(normal), _unit(u),
-                       sg.box(-half_u, -half_v, half_u, half_v))
+                       shapely.box(-half_u, -half_v, half_u, half_v))
 
     def to_world(self, xy: np.ndarray) -> np.ndarray:
         """Map 2D polygon coordinates (N,2) to 3D points in the asset frame."""

@@ -26,13 +26,20 @@ def world_boxes(local: np.ndarray, rotation: np.ndarray, translation: np.ndarray
     return np.concatenate([centre - half, centre + half], axis=1)
 
 
-def _overlapping(boxes: np.ndarray, box: np.ndarray) -> np.ndarray:
-    """Indices of the rows of `boxes` (n, 6) that overlap `box` (6,)."""
-    if len(boxes) == 0:
-        return np.zeros(0, int)
-    hit = np.all(boxes[:, :3] <= box[3:] + BOX_TOL, axis=1) & \
-        np.all(boxes[:, 3:] >= box[:3] - BOX_TOL, axis=1)
-    return np.nonzero(hit)[0]
+def _keys(boxes: np.ndarray) -> np.ndarray:
+    """Boxes (n, 6: min, max) as overlap keys (min, -max): a box overlaps a query box q when
+    its keys are all <= `_query(q)`, one comparison per row (this runs thousands of times a
+    second on a handful of rows, where each numpy call's overhead is what costs)."""
+    return np.concatenate([boxes[:, :3], -boxes[:, 3:]], axis=1)
+
+
+def _query(box: np.ndarray) -> np.ndarray:
+    return np.concatenate([box[3:], -box[:3]]) + BOX_TOL
+
+
+def _overlapping(keys: np.ndarray, query: np.ndarray) -> np.ndarray:
+    """Indices of the rows of `keys` whose boxes overlap the query box."""
+    return np.flatnonzero((keys <= query).all(axis=1))
 
 
 class Broadphase:
@@ -41,18 +48,19 @@ class Broadphase:
 
     def __init__(self, static: list[fcl.CollisionObject], static_boxes: np.ndarray) -> None:
         self._static = list(static)
-        self._static_boxes = np.asarray(static_boxes, float).reshape(-1, 6)
-        self._pieces: dict[str, tuple[list[fcl.CollisionObject], np.ndarray]] = {}
+        self._static_keys = _keys(np.asarray(static_boxes, float).reshape(-1, 6))
+        # name -> (pieces, their boxes, their keys)
+        self._pieces: dict[str, tuple[list[fcl.CollisionObject], np.ndarray, np.ndarray]] = {}
         self._names: list[str] = []            # row i of _union belongs to _names[i]
         self._row: dict[str, int] = {}
-        self._union = np.zeros((0, 6))
+        self._union = np.zeros((0, 6))         # keys of each object's box round all its pieces
 
     def add(self, name: str, pieces: list[fcl.CollisionObject], boxes: np.ndarray) -> None:
         """Register object `name` with its pieces (already posed) and their world boxes."""
-        self._pieces[name] = (pieces, boxes)
+        self._pieces[name] = (pieces, boxes, _keys(boxes))
         self._row[name] = len(self._names)
         self._names.append(name)
-        self._union = np.vstack([self._union, _union_box(boxes)])
+        self._union = np.vstack([self._union, _keys(_union_box(boxes)[None])])
 
     def remove(self, name: str) -> None:
         """Forget object `name` (the last row moves into its place)."""
@@ -67,35 +75,37 @@ class Broadphase:
 
     def move(self, name: str, boxes: np.ndarray) -> None:
         """New world boxes of object `name`'s pieces (their fcl transforms are already set)."""
-        pieces, _ = self._pieces[name]
-        self._pieces[name] = (pieces, boxes)
-        self._union[self._row[name]] = _union_box(boxes)
+        pieces = self._pieces[name][0]
+        self._pieces[name] = (pieces, boxes, _keys(boxes))
+        self._union[self._row[name]] = _keys(_union_box(boxes)[None])[0]
 
     def collides(self, name: str) -> bool:
         """Does any piece of object `name` overlap a piece of another object or of the
         architecture?"""
-        pieces, boxes = self._pieces[name]
+        pieces, boxes, keys = self._pieces[name]
         if not pieces:
             return False
-        own = _union_box(boxes)
+        own = _query(_union_box(boxes))
         request = fcl.CollisionRequest()
-        for j in _overlapping(self._static_boxes, own):
-            if self._any_hit(pieces, boxes, self._static[j], self._static_boxes[j], request):
+        for j in _overlapping(self._static_keys, own):
+            if self._any_hit(pieces, keys, self._static[j], self._static_keys[j], request):
                 return True
         for i in _overlapping(self._union, own):
             other = self._names[i]
             if other == name:
                 continue
-            other_pieces, other_boxes = self._pieces[other]
-            for k in _overlapping(other_boxes, own):
-                if self._any_hit(pieces, boxes, other_pieces[k], other_boxes[k], request):
+            other_pieces, _, other_keys = self._pieces[other]
+            for k in _overlapping(other_keys, own):
+                if self._any_hit(pieces, keys, other_pieces[k], other_keys[k], request):
                     return True
         return False
 
     @staticmethod
-    def _any_hit(pieces, boxes, other: fcl.CollisionObject, other_box: np.ndarray,
+    def _any_hit(pieces, keys, other: fcl.CollisionObject, other_key: np.ndarray,
                  request: fcl.CollisionRequest) -> bool:
-        for k in _overlapping(boxes, other_box):
+        """Does one of `pieces` (overlap keys `keys`) collide with `other` (key `other_key`)?"""
+        query = np.concatenate([-other_key[3:], -other_key[:3]]) + BOX_TOL  # its box, as a query
+        for k in _overlapping(keys, query):
             if fcl.collide(pieces[k], other, request, fcl.CollisionResult()) > 0:
                 return True
         return False
