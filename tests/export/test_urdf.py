@@ -10,13 +10,6 @@ import yourdfpy
 
 #: the deepest a moving part's convex pieces may sink into its body's (m; contact margins)
 PENETRATION_TOL = 0.006
-#: generators whose collision pieces are known to fill their hollows (reported): a moving part
-#: inside the solid hull of a hollow body
-KNOWN_HOLLOW_HULLS = {"fridge": "cabinet body hulled solid: the freezer drawer sits inside it",
-                      "washing_machine": "body hulled solid around the detergent drawer",
-                      "cooking_pot": "pot hulled solid: the lid rim sits inside it"}
-
-
 @pytest.fixture
 def bullet():
     cid = pb.connect(pb.DIRECT)
@@ -95,20 +88,9 @@ def test_pybullet_joints_move_through_their_range_clear_of_the_body(articulated,
         assert len(joints) == len(bundle.assets[obj.name].joints), obj.name
         bad = [(n, round(p, 4)) for n, p in joints if p < -PENETRATION_TOL]
         checked += len(joints)
-        if obj.generator in KNOWN_HOLLOW_HULLS:
-            continue
         if bad:
             problems.append((obj.name, bad))
     assert checked >= len(bundle.objects)
     assert problems == []
 
 
-@pytest.mark.xfail(reason="assets hull hollow bodies solid (reported): "
-                          + "; ".join(f"{k}: {v}" for k, v in KNOWN_HOLLOW_HULLS.items()),
-                   strict=False)
-def test_known_hollow_bodies_clear_their_parts(articulated, bullet):
-    bundle, d = articulated
-    for obj in bundle.objects:
-        if obj.generator in KNOWN_HOLLOW_HULLS:
-            joints = _sweep(str(d / "urdf" / f"{obj.name}.urdf"), bullet)
-            assert all(p >= -PENETRATION_TOL for _, p in joints), (obj.name, joints)

@@ -432,15 +432,104 @@ def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool =
     for link in link_names(parts):
         mine = [p.solid for p in parts if p.link == link and not p.solid.is_empty()]
         if decompose:
-            mine = [piece for solid in mine for piece in convex_split(solid)]
-        if len(mine) > max_pieces:
+            moving = [p.solid for p in parts if p.link != "base" and _carve_worthy(p.solid)]
+            if link == "base":  # keep the body's hulls out of the moving parts' boxes
+                carved = carve_around(mine, [o.bounding_box() for o in moving])
+            else:  # and a moving part's hulls out of the body (a lid's rim inside its pot)
+                body = [p.solid for p in parts if p.link == "base" and not p.solid.is_empty()]
+                big = [s for s in mine if _carve_worthy(s)]
+                rest = [s for s in mine if not _carve_worthy(s)]
+                carved = carve_around(big, [o.bounding_box() for o in body], body) + rest
+            limit = max_pieces if len(carved) == len(mine) else 2 * max_pieces  # keep the cuts
+            mine = [piece for solid in carved for piece in convex_split(solid)]
+        else:
+            limit = max_pieces
+        if len(mine) > limit:
             centres = np.array([(np.asarray(s.bounding_box()[:3]) + s.bounding_box()[3:]) / 2
                                 for s in mine])
-            groups = _group_by_position(centres, max_pieces)
+            groups = _group_by_position(centres, limit)
             mine = [solid_union([mine[i] for i in g]) for g in groups]
         out.extend((link, s.hull()) for s in mine)
     return out
 
+
+def carve_around(solids: list[m3d.Manifold], boxes: Sequence[Sequence[float]],
+                 shapes: Sequence[m3d.Manifold] | None = None) -> list[m3d.Manifold]:
+    """Cut each solid whose convex hull would swallow part of one of `boxes` (the bounding boxes
+    of the object's moving parts at rest: a drawer in its carcass, a bin inside a fridge) along
+    that box's six face planes. The pieces outside the box then have hulls that keep out of it,
+    so a simulator lets the drawer slide; what lies inside the box is usually nothing (the
+    cavity) or thin. With `shapes` (one solid per box), a hull must swallow part of the shape
+    itself, not merely of its box, to be cut."""
+    for i, box in enumerate(boxes):
+        lo, hi = np.asarray(box[:3], float), np.asarray(box[3:], float)
+        if np.any(hi - lo <= 2 * SWALLOW_MARGIN):
+            continue
+        inner = box_between(lo + SWALLOW_MARGIN, hi - SWALLOW_MARGIN)
+        if shapes is not None:
+            inner = inner ^ shapes[i]
+        out = []
+        for solid in solids:
+            if (solid.hull() ^ inner).volume() <= SWALLOW_VOLUME:
+                out.append(solid)
+                continue
+            rest = solid  # what is left on the box's side of every plane cut so far
+            for axis in range(3):
+                for cut, keep_low in ((lo[axis], True), (hi[axis], False)):
+                    beyond, rest = _split(rest, axis, cut, keep_low)
+                    if beyond is not None and beyond.volume() > 1e-9:
+                        out.append(beyond)  # wholly beyond one face of the box: safe whole
+            # inside the box's slab: separate bits go out one by one, and a bit that still
+            # wraps round the moving part (a pot's rim round its lid's skirt) in short pieces
+            for bit in rest.decompose():
+                out.extend(p for p in _unwrap(bit, inner) if p.volume() > 1e-9)
+        solids = out
+    return solids
+
+
+def _unwrap(solid: m3d.Manifold, keep_out: m3d.Manifold, depth: int = 4
+            ) -> list[m3d.Manifold]:
+    """`solid` halved across its longest side until no piece's hull takes more than
+    SWALLOW_VOLUME of `keep_out` (at most 2**depth pieces): a ring cut into short arcs."""
+    if depth == 0 or (solid.hull() ^ keep_out).volume() <= SWALLOW_VOLUME:
+        return [solid]
+    bb = np.asarray(solid.bounding_box(), float)
+    axis = int(np.argmax(bb[3:] - bb[:3]))
+    low, high = _split(solid, axis, (bb[axis] + bb[axis + 3]) / 2, True)
+    if low is None:
+        return [solid]
+    return [p for half in (low, high) for p in _unwrap(half, keep_out, depth - 1)]
+
+
+def _split(solid: m3d.Manifold, axis: int, cut: float, beyond_low: bool
+           ) -> tuple[m3d.Manifold | None, m3d.Manifold]:
+    """(the part of `solid` beyond the plane x_axis = cut, the rest): beyond is the low side
+    when `beyond_low`, else the high side; None when the plane misses the solid."""
+    bb = np.asarray(solid.bounding_box(), float)
+    if not bb[axis] < cut < bb[axis + 3]:
+        return None, solid
+    on_axis = np.arange(3) == axis
+    lo, hi = bb[:3] - 1, bb[3:] + 1
+    low = solid ^ box_between(lo, np.where(on_axis, cut, hi))
+    high = solid ^ box_between(np.where(on_axis, cut, lo), hi)
+    return (low, high) if beyond_low else (high, low)
+
+
+def _carve_worthy(solid: m3d.Manifold) -> bool:
+    """Whether a moving part is big enough to carve collision pieces around (MIN_CARVE across):
+    a jar's cap or a knob is left to the simulator's contact margins."""
+    if solid.is_empty():
+        return False
+    bb = np.asarray(solid.bounding_box(), float)
+    return float(np.max(bb[3:] - bb[:3])) >= MIN_CARVE
+
+
+#: moving parts smaller than this (m) get no carving (see `_carve_worthy`)
+MIN_CARVE = 0.1
+#: a moving part counts as swallowed by a hull that takes more than this of it (m^3, 1 cm^3),
+#: once its box is shrunk by SWALLOW_MARGIN (so that parts merely touching do not count)
+SWALLOW_VOLUME = 1e-6
+SWALLOW_MARGIN = 1e-3
 
 #: a piece whose volume fills at least this share of its convex hull counts as convex
 CONVEX_FILL = 0.85
