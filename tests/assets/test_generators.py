@@ -364,3 +364,31 @@ def test_uvs_and_collision_pieces(name, seed):
     pts = np.vstack([p.vertices for _, p in a.collision])
     lo, hi = a.mesh.bounds
     assert (pts >= lo - 1e-5).all() and (pts <= hi + 1e-5).all()
+
+
+#: generators whose inner support surfaces may still lie inside a collision hull (reported):
+#: stair treads (a flight collides as a ramp; nothing is placed on treads), pallet-rack levels
+#: (beyond 96 pieces neighbouring beams are hulled together)
+COVERED_SUPPORT = {"staircase", "pallet_rack"}
+
+
+@pytest.mark.parametrize("name,seed", [c for c in CASES if c.values[1] < 3])
+def test_space_over_covered_shelves_is_free(name, seed):
+    """Simulators find open space 2 cm over the middle of every shelf or cell that has a board
+    above it (the solver puts objects there): no convex piece of the body fills it."""
+    if name in COVERED_SUPPORT:
+        pytest.skip("reported: " + name)
+    _, _, _, a = build(name, seed)
+    top = a.mesh.bounds[1][2]
+    body = [m for link, m in a.collision if link == "base"]
+    for s in a.surfaces:
+        if s.subpart != Subpart.SupportSurface or s.normal[2] < 0.9 or s.origin[2] > top - 0.01:
+            continue
+        c = s.polygon.representative_point()
+        p = s.to_world(np.array([[c.x, c.y]]))[0]
+        above = trimesh.ray.ray_triangle.RayMeshIntersector(a.mesh).intersects_location(
+            [p + [0, 0, 1e-3]], [[0, 0, 1.0]])[0]
+        if len(above) == 0 or above[:, 2].min() - p[2] < 0.03:
+            continue  # open above (a basin, a tabletop) or too low to hold anything
+        probe = p + [0.0, 0.0, 0.02]
+        assert not any(m.contains([probe])[0] for m in body), (name, seed, s.name)

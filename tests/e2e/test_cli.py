@@ -56,6 +56,10 @@ def test_default_command_writes_a_furnished_home(tmp_path):
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
     v = run("validate", str(out))
     assert v.returncode == 0, v.stdout[-3000:]
+    # and it stands still in MuJoCo: things on shelves, in cubbies and on tables stay put
+    from indoorgen.export.stability import simulate, stability
+    st = stability(simulate(out / "scene.xml"))
+    assert st.free >= 40 and st.passes, st
 
 
 @pytest.mark.slow

@@ -420,21 +420,23 @@ def box_uv(vertices: np.ndarray, faces: np.ndarray, scale: float = 1.0) -> np.nd
     return uv * scale
 
 
-def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool = False
-                  ) -> list[tuple[str, m3d.Manifold]]:
+def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool = False,
+                  keep_free: Sequence[Sequence[float]] = ()) -> list[tuple[str, m3d.Manifold]]:
     """Convex collision pieces (link, hull) for simulators: the convex hull of each part, since
     generators build objects from simple parts. With `decompose`, a part that is far from
     convex (a hollow carcass, a bowl, an L-shaped board) is first cut into nearly convex
     pieces, so that what goes inside it (a drawer, a lid, an apple) is not inside its collision
-    shape. Beyond `max_pieces` per link (foliage, many slats), neighbouring pieces are grouped by
-    their centres and each group hulled."""
+    shape. With `decompose`, the body's hulls also keep out of the `keep_free` boxes (the space
+    over each inner shelf or cell, where the solver puts things). Beyond `max_pieces` per link
+    (foliage, many slats), neighbouring pieces are grouped by their centres and each group
+    hulled."""
     out: list[tuple[str, m3d.Manifold]] = []
     for link in link_names(parts):
         mine = [p.solid for p in parts if p.link == link and not p.solid.is_empty()]
         if decompose:
             moving = [p.solid for p in parts if p.link != "base" and _carve_worthy(p.solid)]
             if link == "base":  # keep the body's hulls out of the moving parts' boxes
-                carved = carve_around(mine, [o.bounding_box() for o in moving])
+                carved = carve_around(mine, [o.bounding_box() for o in moving] + list(keep_free))
             else:  # and a moving part's hulls out of the body (a lid's rim inside its pot)
                 body = [p.solid for p in parts if p.link == "base" and not p.solid.is_empty()]
                 big = [s for s in mine if _carve_worthy(s)]
@@ -490,9 +492,12 @@ def carve_around(solids: list[m3d.Manifold], boxes: Sequence[Sequence[float]],
 def _unwrap(solid: m3d.Manifold, keep_out: m3d.Manifold, depth: int = 4
             ) -> list[m3d.Manifold]:
     """`solid` halved across its longest side until no piece's hull takes more than
-    SWALLOW_VOLUME of `keep_out` (at most 2**depth pieces): a ring cut into short arcs."""
-    if depth == 0 or (solid.hull() ^ keep_out).volume() <= SWALLOW_VOLUME:
-        return [solid]
+    SWALLOW_VOLUME of `keep_out` or the piece is nearly convex (at most 2**depth pieces): a
+    ring cut into short arcs."""
+    hull = solid.hull()
+    if depth == 0 or solid.volume() >= CONVEX_FILL * hull.volume() or \
+            (hull ^ keep_out).volume() <= SWALLOW_VOLUME:
+        return [solid]  # (a convex bit inside the box, a post, stays whole: cutting won't help)
     bb = np.asarray(solid.bounding_box(), float)
     axis = int(np.argmax(bb[3:] - bb[:3]))
     low, high = _split(solid, axis, (bb[axis] + bb[axis + 3]) / 2, True)
@@ -513,6 +518,26 @@ def _split(solid: m3d.Manifold, axis: int, cut: float, beyond_low: bool
     low = solid ^ box_between(lo, np.where(on_axis, cut, hi))
     high = solid ^ box_between(np.where(on_axis, cut, lo), hi)
     return (low, high) if beyond_low else (high, low)
+
+
+def free_space_above(solids: Sequence[m3d.Manifold], rect: Sequence[float], z: float,
+                     top: float) -> list[float] | None:
+    """The box (x0, y0, z0, x1, y1, z1) of open space over the horizontal rectangle
+    rect = (x0, y0, x1, y1) at height z, up to the first solid above the rectangle's middle
+    (below `top`): a shelf or cell under a board. None where nothing covers it (a basin, a
+    plate: open above, where a hull over the rim is what simulators expect) or less than 1 cm
+    is free."""
+    x0, y0, x1, y1 = (float(v) for v in rect)
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    column = box_between((cx - 1e-3, cy - 1e-3, z + 1e-3), (cx + 1e-3, cy + 1e-3, top + 1.0))
+    ceiling = top
+    for solid in solids:
+        hit = solid ^ column
+        if not hit.is_empty():
+            ceiling = min(ceiling, float(hit.bounding_box()[2]))
+    if ceiling >= top - 1e-3 or ceiling - z < 0.01 or x1 - x0 < 0.01 or y1 - y0 < 0.01:
+        return None
+    return [x0 + 2e-3, y0 + 2e-3, z + 1e-3, x1 - 2e-3, y1 - 2e-3, ceiling - 1e-3]
 
 
 def _carve_worthy(solid: m3d.Manifold) -> bool:

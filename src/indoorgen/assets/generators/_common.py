@@ -17,8 +17,8 @@ import shapely.geometry as sg
 
 from ...tags import Subpart
 from ..base import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
-from ..parts import (DoorJoint, Part, box_uv, concat, convex_pieces, manifold_to_trimesh,
-                     union_links)
+from ..parts import (DoorJoint, Part, box_uv, concat, convex_pieces, free_space_above,
+                     manifold_to_trimesh, union_links)
 
 
 def default_value(p: Param) -> Any:
@@ -114,9 +114,32 @@ class PartsFactory(AssetFactory):
         asset.links, asset.face_links = links, face_links
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.corner_uv = box_uv(asset.mesh.vertices, asset.mesh.faces)
+        free = self._free_boxes(asset, parts, offset)
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
-                           for link, h in convex_pieces(parts, decompose=True)]
+                           for link, h in convex_pieces(parts, decompose=True, keep_free=free)]
         return asset
+
+    @staticmethod
+    def _free_boxes(asset: Asset, parts: list[Part], offset: np.ndarray) -> list[list[float]]:
+        """Open space over each upward support surface below the object's top (a shelf, a
+        cube-storage cell), in the parts' frame, reaching out through the front and the back
+        (X: where shelves open, and what stands on them may overhang): simulators must find it
+        empty, since the solver puts things there."""
+        body = [p.solid for p in parts if p.link == "base" and not p.solid.is_empty()]
+        top = float(asset.mesh.bounds[1][2])
+        back = float(asset.mesh.bounds[0][0] - offset[0]) - 0.01
+        front = float(asset.mesh.bounds[1][0] - offset[0]) + 0.01
+        out = []
+        for s in asset.surfaces:
+            if s.subpart != Subpart.SupportSurface or s.normal[2] < 0.9 or \
+                    s.origin[2] > top - 0.01:
+                continue
+            xy = s.corners()[:, :2] - offset[:2]
+            box = free_space_above(body, (*xy.min(axis=0), *xy.max(axis=0)),
+                                   float(s.origin[2] - offset[2]), top - float(offset[2]))
+            if box is not None:
+                out.append([min(box[0], back), *box[1:3], max(box[3], front), *box[4:]])
+        return out
 
 
 def make_joint(name: str, moving: DoorJoint, lower: float, upper: float) -> Joint:
