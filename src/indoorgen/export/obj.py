@@ -74,6 +74,22 @@ def mtl_text(materials: dict[str, MatRef], textures: TextureStore, mtl_dir: Path
     return "".join(out)
 
 
+_STL_RECORD = np.dtype([("normal", "<f4", 3), ("vertices", "<f4", (3, 3)), ("attr", "<u2")])
+
+
+def write_stl(path: Path, mesh) -> None:
+    """`mesh` as a binary STL file: thousands of small collision pieces go out per scene, and
+    one buffer written at once is about twice as fast as `trimesh.Trimesh.export`."""
+    tri = np.asarray(mesh.vertices, float)[np.asarray(mesh.faces)]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-18)
+    rec = np.zeros(len(tri), _STL_RECORD)
+    rec["normal"], rec["vertices"] = n, tri
+    with open(path, "wb") as f:
+        f.write(b"indoorgen convex piece".ljust(80, b" ") + np.uint32(len(tri)).tobytes()
+                + rec.tobytes())
+
+
 @dataclass
 class VisualFile:
     """One visual mesh file: its path (relative to the export root), material and slot."""
@@ -139,7 +155,7 @@ class MeshFiles:
         out = []
         for i, (link, piece) in enumerate(asset.collision):
             p = d / f"{link}_{i}.stl"
-            piece.export(p, file_type="stl")
+            write_stl(p, piece)
             out.append((link, f"{MESH_DIR}/{d.name}/{p.name}"))
         self._collision[key] = out
         return out
@@ -160,7 +176,7 @@ class MeshFiles:
         col = []
         for i, piece in enumerate(self.bundle.element_pieces(el)):
             p = d / f"{ident}_collision_{i}.stl"
-            piece.export(p, file_type="stl")
+            write_stl(p, piece)
             col.append(f"{MESH_DIR}/architecture/{p.name}")
         self._arch[el.path] = (vis, col)
         return vis, col
