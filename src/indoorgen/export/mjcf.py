@@ -25,7 +25,7 @@ import numpy as np
 
 from .bundle import ExportBundle
 from .meshes import joint_frames
-from .obj import MeshFiles
+from .obj import CollisionGeom, MeshFiles
 from .physics import Inertial, matrix_to_quat
 
 log = logging.getLogger(__name__)
@@ -94,6 +94,16 @@ def _inertial(body: ET.Element, inertial: Inertial, frame: np.ndarray) -> None:
                   mass=f"{inertial.mass:.6g}", diaginertia=_f(moments))
 
 
+def _collision_geom(assets: "_Assets", geom: CollisionGeom, offset: np.ndarray) -> ET.Element:
+    """A collision <geom>: a box (half sizes) or a convex mesh, moved by `offset`."""
+    if geom.is_box:
+        return ET.Element("geom", {"class": "collision", "type": "box",
+                                   "size": _f(np.asarray(geom.size) / 2),
+                                   "pos": _f(np.asarray(geom.center) + offset)})
+    return ET.Element("geom", {"class": "collision", "mesh": assets.mesh(geom.path),
+                               "pos": _f(offset)})
+
+
 def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link: str,
            frame: np.ndarray) -> None:
     pos = _f(-frame)
@@ -103,10 +113,9 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
                                          "material": assets.material(
                                              vf.material, vf.slot in ("emissive", "bulb")),
                                          "pos": pos})
-    for plink, path in files.collisions(name):
+    for plink, geom in files.collisions(name):
         if plink == link:
-            ET.SubElement(body, "geom", {"class": "collision", "mesh": assets.mesh(path),
-                                         "pos": pos})
+            body.append(_collision_geom(assets, geom, -frame))
 
 
 def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files: MeshFiles,
@@ -178,8 +187,8 @@ def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
         for vf in vis_files:
             ET.SubElement(world, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                           "material": assets.material(vf.material)})
-        for path in col_files:
-            ET.SubElement(world, "geom", {"class": "collision", "mesh": assets.mesh(path)})
+        for geom in col_files:
+            world.append(_collision_geom(assets, geom, np.zeros(3)))
     contact = ET.Element("contact")
     for obj in bundle.objects:
         names = _object_body(world, assets, bundle, files, obj.name)

@@ -90,6 +90,50 @@ def write_stl(path: Path, mesh) -> None:
                 + rec.tobytes())
 
 
+@dataclass(frozen=True)
+class CollisionGeom:
+    """One convex collision piece as exporters write it: an axis-aligned box primitive
+    (`center`, `size`, in the frame the piece was given in) where the piece is one, which
+    simulators collide fastest and need no file for, else a binary STL `path` (relative to the
+    export root)."""
+
+    path: str = ""
+    center: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    size: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+    @property
+    def is_box(self) -> bool:
+        return not self.path
+
+
+def _box_of(piece) -> CollisionGeom | None:
+    """The box primitive of `piece` if it is an axis-aligned box (8 corners filling their
+    bounds), else None."""
+    v = np.asarray(piece.vertices, float)
+    if len(v) != 8:
+        return None
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    size = hi - lo
+    # a convex solid inside its bounds that fills them is those bounds
+    if np.any(size <= 0) or abs(abs(piece.volume) - np.prod(size)) > 1e-9 + 1e-6 * np.prod(size):
+        return None
+    return CollisionGeom("", tuple(((lo + hi) / 2).tolist()), tuple(size.tolist()))
+
+
+def collision_geoms(pieces, directory: Path, stem: str, rel: str) -> list[CollisionGeom]:
+    """Box primitives for the box-shaped pieces, STL files `directory/<stem>_<i>.stl` (paths
+    `rel/<stem>_<i>.stl`) for the rest."""
+    out = []
+    for i, piece in enumerate(pieces):
+        box = _box_of(piece)
+        if box is None:
+            p = directory / f"{stem}_{i}.stl"
+            write_stl(p, piece)
+            box = CollisionGeom(f"{rel}/{p.name}")
+        out.append(box)
+    return out
+
+
 @dataclass
 class VisualFile:
     """One visual mesh file: its path (relative to the export root), material and slot."""
@@ -107,8 +151,8 @@ class MeshFiles:
     def __init__(self, bundle: ExportBundle, root: Path, textures: TextureStore) -> None:
         self.bundle, self.root, self.textures = bundle, Path(root), textures
         self._visual: dict[tuple, list[VisualFile]] = {}
-        self._collision: dict[str, list[tuple[str, str]]] = {}
-        self._arch: dict[tuple, tuple[list[VisualFile], list[str]]] = {}
+        self._collision: dict[str, list[tuple[str, CollisionGeom]]] = {}
+        self._arch: dict[tuple, tuple[list[VisualFile], list[CollisionGeom]]] = {}
         self._ids: dict[tuple, str] = {}
 
     def proto_id(self, name: str) -> str:
@@ -144,8 +188,8 @@ class MeshFiles:
         (d / f"{stem}.mtl").write_text(
             mtl_text({ref.key: ref}, self.textures, d, {ref.key} if emissive else set()))
 
-    def collisions(self, name: str) -> list[tuple[str, str]]:
-        """(link, STL path relative to the root) of each convex piece of object `name`."""
+    def collisions(self, name: str) -> list[tuple[str, CollisionGeom]]:
+        """(link, geometry in the asset frame) of each convex piece of object `name`."""
         key = self.bundle.mesh_key(name)
         if key in self._collision:
             return self._collision[key]
@@ -154,14 +198,13 @@ class MeshFiles:
         d.mkdir(parents=True, exist_ok=True)
         out = []
         for i, (link, piece) in enumerate(asset.collision):
-            p = d / f"{link}_{i}.stl"
-            write_stl(p, piece)
-            out.append((link, f"{MESH_DIR}/{d.name}/{p.name}"))
+            (geom,) = collision_geoms([piece], d, f"{link}_{i}", f"{MESH_DIR}/{d.name}")
+            out.append((link, geom))
         self._collision[key] = out
         return out
 
-    def architecture(self, el: ArchElement) -> tuple[list[VisualFile], list[str]]:
-        """Visual OBJ files and collision STL pieces of an element (world coordinates)."""
+    def architecture(self, el: ArchElement) -> tuple[list[VisualFile], list[CollisionGeom]]:
+        """Visual OBJ files and collision pieces of an element (world coordinates)."""
         if el.path in self._arch:
             return self._arch[el.path]
         ident = "_".join(el.path)
@@ -173,11 +216,8 @@ class MeshFiles:
             self._write_visual(d, stem, mesh_piece(part.mesh), part.material, False)
             vis.append(VisualFile(f"{MESH_DIR}/architecture/{stem}.obj", part.material,
                                   part.slot, "base"))
-        col = []
-        for i, piece in enumerate(self.bundle.element_pieces(el)):
-            p = d / f"{ident}_collision_{i}.stl"
-            write_stl(p, piece)
-            col.append(f"{MESH_DIR}/architecture/{p.name}")
+        col = collision_geoms(self.bundle.element_pieces(el), d, f"{ident}_collision",
+                              f"{MESH_DIR}/architecture")
         self._arch[el.path] = (vis, col)
         return vis, col
 

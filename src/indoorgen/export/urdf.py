@@ -21,7 +21,7 @@ import numpy as np
 
 from .bundle import ExportBundle
 from .meshes import joint_frames
-from .obj import MeshFiles
+from .obj import CollisionGeom, MeshFiles
 from .physics import Inertial
 
 log = logging.getLogger(__name__)
@@ -62,13 +62,22 @@ def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, 
         mat = ET.SubElement(vis, "material", name=vf.material.key)
         r, g, b = files.textures.info(vf.material).mean_color
         ET.SubElement(mat, "color", rgba=f"{r:.4f} {g:.4f} {b:.4f} 1")
-    for k, (plink, path) in enumerate(files.collisions(obj_name)):
-        if plink != link:
-            continue
-        col = ET.SubElement(el, "collision", name=f"{link}_collision_{k}")
-        _origin(col, -frame)
-        geo = ET.SubElement(col, "geometry")
-        ET.SubElement(geo, "mesh", filename=rel + path)
+    for k, (plink, geom) in enumerate(files.collisions(obj_name)):
+        if plink == link:
+            _collision(el, f"{link}_collision_{k}", geom, -frame, rel)
+
+
+def _collision(link: ET.Element, name: str, geom: CollisionGeom, offset: np.ndarray,
+               rel: str) -> None:
+    """A <collision>: a <box> primitive or an STL <mesh>, moved by `offset`."""
+    col = ET.SubElement(link, "collision", name=name)
+    geo = ET.SubElement(col, "geometry")
+    if geom.is_box:
+        _origin(col, np.asarray(geom.center) + offset)
+        ET.SubElement(geo, "box", size=_f(geom.size))
+    else:
+        _origin(col, offset)
+        ET.SubElement(geo, "mesh", filename=rel + geom.path)
 
 
 def _object_links(robot: ET.Element, bundle: ExportBundle, files: MeshFiles, name: str,
@@ -103,10 +112,8 @@ def _architecture_link(robot: ET.Element, name: str, bundle: ExportBundle, files
             v = ET.SubElement(el, "visual", name=f"{'_'.join(e.path)}_{vf.slot}")
             geo = ET.SubElement(v, "geometry")
             ET.SubElement(geo, "mesh", filename=rel + vf.path)
-        for k, path in enumerate(col):
-            c = ET.SubElement(el, "collision", name=f"{'_'.join(e.path)}_collision_{k}")
-            geo = ET.SubElement(c, "geometry")
-            ET.SubElement(geo, "mesh", filename=rel + path)
+        for k, geom in enumerate(col):
+            _collision(el, f"{'_'.join(e.path)}_collision_{k}", geom, np.zeros(3), rel)
 
 
 def _write(robot: ET.Element, path: Path) -> None:
