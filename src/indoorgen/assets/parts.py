@@ -433,19 +433,12 @@ def convex_pieces(parts: Sequence[Part], max_pieces: int = 48, decompose: bool =
     out: list[tuple[str, m3d.Manifold]] = []
     for link in link_names(parts):
         mine = [p.solid for p in parts if p.link == link and not p.solid.is_empty()]
+        limit = max_pieces
         if decompose:
-            moving = [p.solid for p in parts if p.link != "base" and _carve_worthy(p.solid)]
-            if link == "base":  # keep the body's hulls out of the moving parts' boxes
-                carved = carve_around(mine, [o.bounding_box() for o in moving] + list(keep_free))
-            else:  # and a moving part's hulls out of the body (a lid's rim inside its pot)
-                body = [p.solid for p in parts if p.link == "base" and not p.solid.is_empty()]
-                big = [s for s in mine if _carve_worthy(s)]
-                rest = [s for s in mine if not _carve_worthy(s)]
-                carved = carve_around(big, [o.bounding_box() for o in body], body) + rest
-            limit = max_pieces if len(carved) == len(mine) else 2 * max_pieces  # keep the cuts
+            carved = _carve_link(link, mine, parts, keep_free)
+            if len(carved) != len(mine):
+                limit = 2 * max_pieces  # grouping would hull the cuts back together
             mine = [piece for solid in carved for piece in convex_split(solid)]
-        else:
-            limit = max_pieces
         if len(mine) > limit:
             centres = np.array([(np.asarray(s.bounding_box()[:3]) + s.bounding_box()[3:]) / 2
                                 for s in mine])
@@ -555,6 +548,20 @@ MIN_CARVE = 0.1
 #: once its box is shrunk by SWALLOW_MARGIN (so that parts merely touching do not count)
 SWALLOW_VOLUME = 1e-6
 SWALLOW_MARGIN = 1e-3
+
+def _carve_link(link: str, solids: list[m3d.Manifold], parts: Sequence[Part],
+                keep_free: Sequence[Sequence[float]]) -> list[m3d.Manifold]:
+    """One link's solids cut so that their hulls keep clear of the other side: the body's out
+    of the moving parts' boxes and the `keep_free` boxes, a moving part's (when big enough)
+    out of the body (a lid's rim inside its pot)."""
+    if link == "base":
+        moving = [p.solid for p in parts if p.link != "base" and _carve_worthy(p.solid)]
+        return carve_around(solids, [m.bounding_box() for m in moving] + list(keep_free))
+    body = [p.solid for p in parts if p.link == "base" and not p.solid.is_empty()]
+    big = [s for s in solids if _carve_worthy(s)]
+    return carve_around(big, [b.bounding_box() for b in body], body) + \
+        [s for s in solids if not _carve_worthy(s)]
+
 
 #: a piece whose volume fills at least this share of its convex hull counts as convex
 CONVEX_FILL = 0.85
