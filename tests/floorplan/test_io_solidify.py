@@ -177,9 +177,16 @@ def test_scene_room_json_is_unchanged_for_single_rooms():
     assert Room.from_json(up.to_json()) == up and Room.from_json(r.to_json()) == r
 
 
-def test_catalogue_doors_windows_and_stairs(two_storeys):
+@pytest.fixture(scope="module")
+def catalogue_arch(two_storeys):
+    """The two-storey plan solidified with catalogue doors, windows and stairs."""
+    return solidify(two_storeys[0], seed=5)
+
+
+@pytest.mark.xdist_group("catalogue_arch")  # one worker builds the fixture for both tests
+def test_catalogue_doors_windows_and_stairs(two_storeys, catalogue_arch):
     fp, _ = two_storeys
-    arch = solidify(fp, seed=5)
+    arch = catalogue_arch
     gens = {(e.kind, e.generator) for e in arch.elements}
     assert {("door", "interior_door"), ("door", "exterior_door"), ("window", "window"),
             ("stair", "staircase"), ("railing", "stair_railing")} <= gens
@@ -194,13 +201,12 @@ def test_catalogue_doors_windows_and_stairs(two_storeys):
     assert prim.GetAttribute("indoorgen:generator").Get() == "interior_door"
 
 
-def test_catalogue_elements_carry_their_own_collision_pieces(two_storeys):
+@pytest.mark.xdist_group("catalogue_arch")
+def test_catalogue_elements_carry_their_own_collision_pieces(catalogue_arch):
     """Doors, windows and stairs from the catalogue bring the asset's convex pieces (placed in
     the world like the mesh), so exporters never decompose them; each piece is convex and lies
     within the element's mesh bounds."""
-    fp, _ = two_storeys
-    arch = solidify(fp, seed=5)
-    for e in arch.elements:
+    for e in catalogue_arch.elements:
         if not e.generator:
             continue
         assert e.collision, e.name
@@ -208,4 +214,5 @@ def test_catalogue_elements_carry_their_own_collision_pieces(two_storeys):
         lo, hi = mesh.bounds
         for piece in e.collision:
             assert piece.is_watertight and piece.is_convex, e.name
-            assert np.all(piece.bounds[0] >= lo - 0.02) and np.all(piece.bounds[1] <= hi + 0.02), e.name
+            assert np.all(piece.bounds[0] >= lo - 0.02), e.name
+            assert np.all(piece.bounds[1] <= hi + 0.02), e.name
