@@ -12,7 +12,7 @@ from indoorgen.assets.base import get_factory
 from indoorgen.assets.generators.architecture import opening_size
 from indoorgen.assets.generators.stairs import RISER_MAX, RISER_MIN, riser_count
 from indoorgen.tags import Semantics, Subpart
-from support.assetcheck import build
+from support.assetcheck import build, make
 
 DOORS = ["interior_door", "sliding_door", "exterior_door"]
 WINDOWS = ["window", "bay_window"]
@@ -20,14 +20,6 @@ OPENINGS = DOORS + WINDOWS
 ALL = OPENINGS + ["staircase", "stair_railing"]
 SEEDS = range(8)
 TOL = 1e-3
-
-
-def make(name: str, seed: int, **overrides):
-    """A generator's params for `seed` with some overridden, and the detailed asset."""
-    f = get_factory(name)
-    p = f.sample_params(np.random.default_rng(seed))
-    p.update(overrides)
-    return f, p, f.create(p)
 
 
 def link_vertices(asset, link: str, values: dict | None = None) -> np.ndarray:

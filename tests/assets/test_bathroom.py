@@ -10,21 +10,13 @@ import shapely.geometry as sg
 
 from indoorgen.assets.base import get_factory
 from indoorgen.tags import Semantics, Subpart
-from support.assetcheck import build, distances, sample_polygon
+from support.assetcheck import build, distances, make, sample_polygon
 
 FIXTURES = ["bathroom_sink_pedestal", "vanity", "countertop_basin", "bathtub_alcove",
             "bathtub_freestanding", "bathtub_corner", "toilet", "shower_enclosure"]
 WALL = ["towel_bar", "towel_ring", "toilet_roll_holder", "robe_hook", "bathroom_mirror_cabinet"]
 SEEDS = range(6)
 TOL = 1e-3
-
-
-def make(name: str, seed: int, **overrides):
-    """A generator's params for `seed`, with some overridden, and the built asset."""
-    f = get_factory(name)
-    p = f.sample_params(np.random.default_rng(seed))
-    p.update(overrides)
-    return f, p, f.create(p)
 
 
 def on_mesh(asset, surface) -> float:

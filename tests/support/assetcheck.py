@@ -17,6 +17,14 @@ def build(name: str, seed: int):
     return f, p, f.placeholder(p), f.create(p)
 
 
+def make(name: str, seed: int, **overrides):
+    """A generator's params for `seed` with some overridden, and the detailed asset."""
+    f = get_factory(name)
+    p = f.sample_params(np.random.default_rng(seed))
+    p.update(overrides)
+    return f, p, f.create(p)
+
+
 def distances(mesh: trimesh.Trimesh, pts: np.ndarray) -> np.ndarray:
     """Exact distance from each point to the mesh surface (brute force over nearby triangles)."""
     tris = mesh.triangles
