@@ -15,18 +15,18 @@ import time
 import numpy as np
 
 from indoorgen import GenerateConfig, generate
+from indoorgen.assets import get_factory
+from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints import Problem, rotational_asymmetry, scene
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.floorplan.room import build_room, rectangle
+from indoorgen.model.scene import Room
+from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.common import at_table, on_floor
-from indoorgen.scene import Room
 from indoorgen.solver.anneal import AnnealConfig, Annealer
-from indoorgen.solver.assets_cache import AssetCache
 from indoorgen.solver.greedy import make_namer
 from indoorgen.solver.placement import solve_pose
 from indoorgen.solver.state import ObjState, Placement, State
-from indoorgen.assets import get_factory
-from indoorgen.tags import Semantics as S
 
 
 def end_to_end(seeds: int, room: str) -> None:

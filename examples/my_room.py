@@ -7,10 +7,16 @@ walls holding books. Run it with the CLI:
 
 or from Python: `indoorgen.GenerateConfig(program=round_table_room, size=(6.5, 5.5))`.
 """
-from indoorgen.constraints import (Problem, accessibility_cost, angle_alignment_cost, focus_score,
-                                   rotational_asymmetry, scene)
+from indoorgen.constraints import (
+    Problem,
+    accessibility_cost,
+    angle_alignment_cost,
+    focus_score,
+    rotational_asymmetry,
+    scene,
+)
+from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.common import against_wall, at_table, on_floor, on_top
-from indoorgen.tags import Semantics as S
 
 
 def round_table_room(room) -> Problem:

@@ -5,15 +5,15 @@ from __future__ import annotations
 
 from typing import Any
 
-from .floorplan.room import RoomGeometry, build_room
-from .scene import Scene
+from indoorgen.floorplan.room import RoomGeometry, build_room
+from indoorgen.model.scene import Scene
 
 
 def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Any]:
     """(room geometry by room name, the solidified home or None for a single room)."""
     if scene.floorplan is not None:
-        from .floorplan.io import from_json
-        from .floorplan.solidify import room_geometries, solidify
+        from indoorgen.floorplan.io import from_json
+        from indoorgen.floorplan.solidify import room_geometries, solidify
         arch = solidify(from_json(scene.floorplan), seed=scene.seed)
         return room_geometries(arch), arch
     return {n: build_room(r) for n, r in scene.rooms.items()}, None

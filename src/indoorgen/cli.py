@@ -11,7 +11,7 @@ import logging
 import sys
 from pathlib import Path
 
-from .errors import ConfigError, IndoorGenError
+from indoorgen.errors import ConfigError, IndoorGenError
 
 
 def _load_program(spec: str):
@@ -34,9 +34,9 @@ def _load_program(spec: str):
 
 
 def _cmd_generate(args) -> int:
-    from .export import parse_formats
-    from .outputs import check_writable
-    from .pipeline import generate, generate_home, write_scene_dir
+    from indoorgen.export import parse_formats
+    from indoorgen.outputs import check_writable
+    from indoorgen.pipeline import generate, generate_home, write_scene_dir
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out)
     formats = parse_formats(args.formats)
@@ -63,7 +63,7 @@ def _cmd_generate(args) -> int:
 
 
 def _room_config(args):
-    from .pipeline import GenerateConfig
+    from indoorgen.pipeline import GenerateConfig
     cfg = GenerateConfig(room_type=args.room or "living_room",
                          size=tuple(args.size) if args.size else None,
                          program=_load_program(args.program) if args.program else None,
@@ -78,7 +78,7 @@ def _room_config(args):
 
 
 def _home_config(args):
-    from .pipeline import HomeConfig
+    from indoorgen.pipeline import HomeConfig
     plan = None
     if args.floorplan:
         try:
@@ -94,14 +94,14 @@ def _home_config(args):
 
 
 def _cmd_validate(args) -> int:
-    from .validate import validate_scene_dir
+    from indoorgen.validate import validate_scene_dir
     rep = validate_scene_dir(Path(args.scene))
     print(json.dumps(rep, indent=1, sort_keys=True))
     return 0 if rep["ok"] else 1
 
 
 def _cmd_assets_list(args) -> int:
-    from .assets import factory_names, get_factory
+    from indoorgen.assets import factory_names, get_factory
     rows = []
     for n in factory_names():
         f = get_factory(n)
@@ -135,9 +135,9 @@ def _joint_names(factory) -> list[str]:
 def _cmd_assets_sheet(args) -> int:
     from tqdm import tqdm
 
-    from .assets import factory_names, get_factory
-    from .outputs import atomic_file
-    from .render.preview import contact_sheet
+    from indoorgen.assets import factory_names, get_factory
+    from indoorgen.outputs import atomic_file
+    from indoorgen.render.preview import contact_sheet
     names = factory_names()
     if args.only:
         names = [get_factory(n).name for n in args.only]  # unknown names: one-line error

@@ -12,7 +12,7 @@ import tempfile
 from pathlib import Path
 from typing import Iterator
 
-from .errors import OutputError
+from indoorgen.errors import OutputError
 
 
 def check_writable(out: Path, directory: bool = True) -> None:

@@ -14,22 +14,22 @@ from typing import Any, Callable
 
 import numpy as np
 
-from .assets import Asset
-from .constraints.evaluator import Result
-from .constraints.expressions import Problem
-from .constraints.expressions import scene as scene_set
-from .errors import ConfigError, InvalidGeometryError
-from .floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
-from .outputs import atomic_dir
-from .programs import get_program
-from .rng import stream
-from .scene import Pose, RelationInstance, Room, Scene, SceneObject
-from .solver.anneal import AnnealConfig
-from .solver.assets_cache import AssetCache
-from .solver.finalize import full_mesh_check
-from .solver.greedy import solve
-from .solver.state import State
-from .tags import Semantics
+from indoorgen.assets import Asset
+from indoorgen.assets.cache import AssetCache
+from indoorgen.constraints.evaluator import Result
+from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.expressions import scene as scene_set
+from indoorgen.errors import ConfigError, InvalidGeometryError
+from indoorgen.floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
+from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
+from indoorgen.model.tags import Semantics
+from indoorgen.outputs import atomic_dir
+from indoorgen.programs import get_program
+from indoorgen.rng import stream
+from indoorgen.solver.anneal import AnnealConfig
+from indoorgen.solver.finalize import full_mesh_check
+from indoorgen.solver.greedy import solve
+from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 
@@ -96,7 +96,7 @@ class Generated:
 
 
 def _make_room(seed: int, cfg: GenerateConfig) -> Room:
-    from .programs import ROOM_PROGRAMS
+    from indoorgen.programs import ROOM_PROGRAMS
     if cfg.program is None and cfg.room_type not in ROOM_PROGRAMS:
         get_program(cfg.room_type)  # raises UnknownRoomTypeError
     rng = stream(seed, "room", "architecture")
@@ -169,11 +169,11 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
                   ) -> Generated:
     """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
     furnished by its program. Same seed + config + version => same scene."""
-    from .floorplan.generate import FloorplanConfig, generate_floorplan
-    from .floorplan.io import check_predefined, from_json
-    from .floorplan.io import to_json as floorplan_json
-    from .floorplan.solidify import room_geometries, solidify
-    from .programs import ROOM_PROGRAMS
+    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+    from indoorgen.floorplan.io import check_predefined, from_json
+    from indoorgen.floorplan.io import to_json as floorplan_json
+    from indoorgen.floorplan.solidify import room_geometries, solidify
+    from indoorgen.programs import ROOM_PROGRAMS
     cfg = config or HomeConfig()
     t0 = time.perf_counter()
     if cfg.floorplan is not None:
@@ -255,9 +255,9 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
     """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
     mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
     directory that is renamed into place when complete."""
-    from .export import write_formats
-    from .export.bundle import bundle_from_generated
-    from .render.plan import draw_plan
+    from indoorgen.export import write_formats
+    from indoorgen.export.bundle import bundle_from_generated
+    from indoorgen.render.plan import draw_plan
 
     out = Path(out)
     with atomic_dir(out) as tmp:

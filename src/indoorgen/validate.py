@@ -21,12 +21,12 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from .assets import get_factory
-from .constraints.relations import CONTACT_GAP, parse_relation
-from .errors import ConfigError
-from .architecture import scene_architecture
-from .scene import Scene
-from .tags import Semantics
+from indoorgen.architecture import scene_architecture
+from indoorgen.assets import get_factory
+from indoorgen.constraints.relations import CONTACT_GAP, parse_relation
+from indoorgen.errors import ConfigError
+from indoorgen.model.scene import Scene
+from indoorgen.model.tags import Semantics
 
 PENETRATION_TOL = 0.001
 SUPPORT_TOL = 0.005
@@ -162,11 +162,11 @@ def _footprint_below(obj, asset, floor_z: float, top: float):
 
 def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
     """Each room's built-in program evaluated fully (a fresh evaluator) on the saved scene."""
-    from .constraints.evaluator import Evaluator
-    from .constraints.expressions import scene as scene_set
-    from .programs import ROOM_PROGRAMS
-    from .solver.assets_cache import AssetCache
-    from .solver.state import state_from_scene
+    from indoorgen.assets.cache import AssetCache
+    from indoorgen.constraints.evaluator import Evaluator
+    from indoorgen.constraints.expressions import scene as scene_set
+    from indoorgen.programs import ROOM_PROGRAMS
+    from indoorgen.solver.state import state_from_scene
     state = state_from_scene(scene, rooms, AssetCache())
     out = {}
     for rn, room in scene.rooms.items():

@@ -10,7 +10,7 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets.base import get_factory
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 
 GROUP = ["fridge", "beverage_fridge", "dishwasher", "microwave", "oven", "cooktop", "range",

@@ -11,7 +11,7 @@ import pytest
 from indoorgen.assets.base import get_factory
 from indoorgen.assets.generators.architecture import opening_size
 from indoorgen.assets.generators.stairs import RISER_MAX, RISER_MIN, riser_count
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make
 
 DOORS = ["interior_door", "sliding_door", "exterior_door"]

@@ -9,7 +9,7 @@ import pytest
 import shapely.geometry as sg
 
 from indoorgen.assets.base import get_factory
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, make, sample_polygon
 
 FIXTURES = ["bathroom_sink_pedestal", "vanity", "countertop_basin", "bathtub_alcove",

@@ -9,7 +9,7 @@ import pytest
 import trimesh
 
 from indoorgen.assets.base import get_factory
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 
 GROUP = ["rug_round", "canvas_art", "mirror", "floor_mirror", "potted_plant", "tabletop_plant",

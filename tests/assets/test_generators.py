@@ -12,7 +12,7 @@ import trimesh
 from indoorgen.assets.base import Param, factory_names, get_factory
 from indoorgen.assets.parts import union
 from indoorgen.errors import ParameterError
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, inert_params, sample_polygon, to_local
 
 EXPECTED = {

@@ -10,7 +10,7 @@ import trimesh
 
 from indoorgen.assets.base import factories_with, get_factory
 from indoorgen.assets.generators import food, tableware_more
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 
 MINE = ["bowl", "mug", "wineglass", "glass_tumbler", "wine_bottle", "beer_bottle", "soda_bottle",

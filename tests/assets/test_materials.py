@@ -9,9 +9,18 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from indoorgen.assets.materials import (FAMILIES, SLOT_CHOICES, MaterialMaps, bake,
-                                        choose_materials, get_material, material_names,
-                                        materials_in_family, normal_from_height, save_maps)
+from indoorgen.assets.materials import (
+    FAMILIES,
+    SLOT_CHOICES,
+    MaterialMaps,
+    bake,
+    choose_materials,
+    get_material,
+    material_names,
+    materials_in_family,
+    normal_from_height,
+    save_maps,
+)
 from indoorgen.assets.materials import noise as nz
 from indoorgen.errors import ParameterError, UnknownGeneratorError
 

@@ -10,8 +10,8 @@ import pytest
 import trimesh
 
 from indoorgen.assets.base import get_factory
-from indoorgen.tags import Semantics as S
-from indoorgen.tags import Subpart
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from support.assetcheck import build, distances, sample_polygon
 
 TOL = 1e-3

@@ -12,7 +12,7 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets.base import get_factory
-from indoorgen.tags import Semantics, Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 
 STORAGE = ["cabinet", "wardrobe", "dresser", "nightstand", "cell_shelf", "wall_shelf",

@@ -4,14 +4,28 @@ import math
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.constraints import (Not, Problem, StableAgainst, accessibility_cost,
-                                   angle_alignment_cost, area, center_of_support_distance,
-                                   distance, focus_score, freespace_2d, height, min_distance,
-                                   reflectional_asymmetry, rotational_asymmetry, scene, volume)
+from indoorgen.constraints import (
+    Not,
+    Problem,
+    StableAgainst,
+    accessibility_cost,
+    angle_alignment_cost,
+    area,
+    center_of_support_distance,
+    distance,
+    focus_score,
+    freespace_2d,
+    height,
+    min_distance,
+    reflectional_asymmetry,
+    rotational_asymmetry,
+    scene,
+    volume,
+)
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.errors import ConstraintError, UnknownGeneratorError
-from indoorgen.tags import Semantics as S, Subpart
-
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from support.fakeview import FakeView
 
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)

@@ -3,14 +3,21 @@ touches; plus cardinality bounds."""
 import math
 
 import numpy as np
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from indoorgen.constraints import (Problem, StableAgainst, accessibility_cost, focus_score,
-                                   rotational_asymmetry, scene)
+from indoorgen.constraints import (
+    Problem,
+    StableAgainst,
+    accessibility_cost,
+    focus_score,
+    rotational_asymmetry,
+    scene,
+)
 from indoorgen.constraints.bounds import find_bounds
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.tags import Semantics as S, Subpart
-
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from support.fakeview import FakeView
 
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)

@@ -10,8 +10,8 @@ from indoorgen.assets import get_factory
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
 from indoorgen.floorplan.room import rectangle
+from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.pipeline import GenerateConfig
-from indoorgen.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 
 #: texture size used by the tests (small: baking is not what they check)
 TEX = 128

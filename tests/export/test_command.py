@@ -40,7 +40,7 @@ def test_export_reexports_a_saved_scene(exported, tmp_path):
     for o in bundle.objects:
         assert f'name="{o.name}"' in text
     from indoorgen.export.bundle import bundle_from_scene
-    from indoorgen.scene import Scene
+    from indoorgen.model.scene import Scene
     again = bundle_from_scene(Scene.from_json(json.loads((out / "scene.json").read_text())))
     assert again.materials == bundle.materials
     assert {"assets", "mjcf", "glb"} <= set(timings)

@@ -7,7 +7,7 @@ import trimesh
 from indoorgen.assets import get_factory
 from indoorgen.export.bundle import object_materials
 from indoorgen.export.physics import density_of, link_inertials, piece_slots, volume_integrals
-from indoorgen.scene import Pose, SceneObject
+from indoorgen.model.scene import Pose, SceneObject
 
 
 def _props(mesh: trimesh.Trimesh) -> tuple[float, np.ndarray, np.ndarray]:

@@ -12,7 +12,7 @@ from indoorgen.assets.base import Asset, box_surfaces
 from indoorgen.errors import OutputError
 from indoorgen.export.usd import sanitize_name, write_usd
 from indoorgen.floorplan.room import build_room, rectangle
-from indoorgen.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
+from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 
 
 def _box_asset(depth: float, width: float, height: float) -> Asset:

@@ -5,8 +5,13 @@ import networkx as nx
 import pytest
 
 from indoorgen.errors import ConfigError, UnknownRoomTypeError
-from indoorgen.floorplan.graph import (HomeGraph, graph_from_spec, graph_problems,
-                                       privacy_problems, sample_home_graph)
+from indoorgen.floorplan.graph import (
+    HomeGraph,
+    graph_from_spec,
+    graph_problems,
+    privacy_problems,
+    sample_home_graph,
+)
 from indoorgen.floorplan.rooms import parse_room_counts, room_type_of
 from indoorgen.rng import stream
 

@@ -5,11 +5,11 @@ import numpy as np
 import pytest
 import shapely
 import shapely.geometry as sg
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.contour import (GRID, bevelled_rectangle, make_contour, upper_contour,
-                                         user_contour)
+from indoorgen.floorplan.contour import GRID, bevelled_rectangle, make_contour, upper_contour, user_contour
 from indoorgen.floorplan.grid import make_grid, opening, room_polygon, runs, trace
 from indoorgen.floorplan.subdivide import merge, mondrian
 

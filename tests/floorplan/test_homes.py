@@ -58,13 +58,13 @@ def test_fixed_area_and_contour():
 
 @pytest.mark.slow
 def test_existing_object_solver_furnishes_an_upper_storey_room():
+    from indoorgen.assets.cache import AssetCache
     from indoorgen.constraints.expressions import scene
     from indoorgen.floorplan.solidify import solidify
+    from indoorgen.model.tags import Semantics
     from indoorgen.programs import get_program
-    from indoorgen.solver.assets_cache import AssetCache
     from indoorgen.solver.greedy import solve
     from indoorgen.solver.state import State
-    from indoorgen.tags import Semantics
 
     fp = generate_floorplan(1, FloorplanConfig(floors=2,
                                                anneal=AnnealConfig(steps_per_storey=60)))

@@ -17,8 +17,8 @@ from indoorgen.floorplan.room import RoomGeometry
 from indoorgen.floorplan.solidify import HomeRoomGeometry, solidify
 from indoorgen.floorplan.solve import AnnealConfig
 from indoorgen.floorplan.usd import build_architecture_stage
-from indoorgen.scene import Room
-from indoorgen.tags import Subpart
+from indoorgen.model.scene import Room
+from indoorgen.model.tags import Subpart
 
 #: A hand-drawn five-room apartment with doors, an open kitchen, windows and a front door.
 APARTMENT = json.loads((Path(__file__).parent / "data" / "apartment.json").read_text())

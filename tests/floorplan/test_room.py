@@ -7,9 +7,15 @@ import shapely.geometry as sg
 
 from indoorgen.errors import InvalidGeometryError
 from indoorgen.floorplan.room import (
-    RoomGeometry, build_room, l_shape, place_door, rectangle, validate_polygon)
-from indoorgen.scene import Door, Room
-from indoorgen.tags import Subpart
+    RoomGeometry,
+    build_room,
+    l_shape,
+    place_door,
+    rectangle,
+    validate_polygon,
+)
+from indoorgen.model.scene import Door, Room
+from indoorgen.model.tags import Subpart
 
 
 def _rect_room(**kw) -> Room:

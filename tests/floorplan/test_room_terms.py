@@ -7,14 +7,22 @@ import shapely.geometry as sg
 
 from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.constraints.room_terms import (RoomView, aspect_ratio, convexity, exterior_length,
-                                              narrow_area, ratio_mismatch, room_area, rooms_of,
-                                              wall_count)
+from indoorgen.constraints.room_terms import (
+    RoomView,
+    aspect_ratio,
+    convexity,
+    exterior_length,
+    narrow_area,
+    ratio_mismatch,
+    room_area,
+    rooms_of,
+    wall_count,
+)
 from indoorgen.floorplan.generate import FloorplanConfig, build_plan, generate_floorplan
 from indoorgen.floorplan.solve import AnnealConfig, anneal
+from indoorgen.model.tags import Semantics
 from indoorgen.programs.floorplan import floorplan
 from indoorgen.rng import stream
-from indoorgen.tags import Semantics
 
 
 class PolygonView(RoomView):

@@ -8,8 +8,8 @@ import numpy as np
 import shapely.affinity as sa
 import shapely.geometry as sg
 
+from indoorgen.model.scene import Door, Pose, Room, Scene, SceneObject
 from indoorgen.render.plan import draw_plan, object_class, short_label
-from indoorgen.scene import Door, Pose, Room, Scene, SceneObject
 
 
 def _footprint(x: float, y: float, yaw: float, depth: float, width: float) -> sg.Polygon:

@@ -7,7 +7,7 @@ import trimesh
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from indoorgen.solver.assets_cache import convex_shape, mesh_bvh
+from indoorgen.assets.cache import convex_shape, mesh_bvh
 from indoorgen.solver.broadphase import Broadphase, world_boxes
 from indoorgen.solver.state import rotation
 

@@ -7,7 +7,7 @@ import numpy as np
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.tags import Semantics
+from indoorgen.model.tags import Semantics
 
 
 class FakeView:

@@ -19,8 +19,8 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from ..errors import ParameterError, UnknownGeneratorError
-from ..tags import Semantics, Subpart
+from indoorgen.errors import ParameterError, UnknownGeneratorError
+from indoorgen.model.tags import Semantics, Subpart
 
 
 @dataclass(frozen=True)
@@ -285,7 +285,7 @@ def register(cls: type[AssetFactory]) -> type[AssetFactory]:
 
 
 def _ensure_loaded() -> None:
-    from . import generators  # noqa: F401  (importing registers every generator)
+    from indoorgen.assets import generators  # noqa: F401  (importing registers every generator)
 
 
 def get_factory(name: str) -> AssetFactory:

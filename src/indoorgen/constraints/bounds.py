@@ -11,11 +11,24 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..tags import Semantics, Subpart
-from .evaluator import Evaluator
-from .expressions import (BinOp, BoolOp, Compare, Count, ForAll, FromGenerator, InRange, Node, Problem,
-                          RelatedTo, SceneSet, Tagged, Var)
-from .relations import Relation
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.constraints.expressions import (
+    BinOp,
+    BoolOp,
+    Compare,
+    Count,
+    ForAll,
+    FromGenerator,
+    InRange,
+    Node,
+    Problem,
+    RelatedTo,
+    SceneSet,
+    Tagged,
+    Var,
+)
+from indoorgen.constraints.relations import Relation
+from indoorgen.model.tags import Semantics, Subpart
 
 
 @dataclass(frozen=True)

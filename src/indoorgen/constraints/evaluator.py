@@ -23,7 +23,7 @@ from typing import Any, Iterable, Protocol
 import numpy as np
 import shapely.geometry as sg
 
-from .expressions import Node, Problem
+from indoorgen.constraints.expressions import Node, Problem
 
 log = logging.getLogger(__name__)
 

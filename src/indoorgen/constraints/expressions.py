@@ -18,12 +18,12 @@ from typing import TYPE_CHECKING, Any, Callable, Iterable
 
 import numpy as np
 
-from ..errors import ConstraintError
-from ..tags import Semantics
-from .relations import Relation
+from indoorgen.constraints.relations import Relation
+from indoorgen.errors import ConstraintError
+from indoorgen.model.tags import Semantics
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .evaluator import Evaluation
+    from indoorgen.constraints.evaluator import Evaluation
 
 _ids = itertools.count()
 
@@ -96,7 +96,7 @@ class ObjSet(Node):
 
     def of_generator(self, name: str) -> "ObjSet":
         """Members made by generator `name` (checked now: an unknown name is an error)."""
-        from ..assets import get_factory
+        from indoorgen.assets import get_factory
         get_factory(name)
         return FromGenerator(self, name)
 
@@ -441,7 +441,7 @@ class Volume(GeometricTerm):
         self.dims = dims
 
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         (s,) = self.members(ev, env)
         if not s:
             return 0.0
@@ -450,7 +450,7 @@ class Volume(GeometricTerm):
 
 class Area(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         (s,) = self.members(ev, env)
         if not s:
             return 0.0
@@ -471,7 +471,7 @@ class Distance(GeometricTerm):
 
 class MinDistance(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         a, b = self.members(ev, env)
         best = math.inf
         for x in sorted(a):
@@ -495,7 +495,7 @@ def _nearest(ev, o: str, candidates: Iterable[str]) -> str | None:
 
 class AngleAlignment(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         a, ref = self.members(ev, env)
         total = 0.0
         for o in sorted(a):
@@ -510,7 +510,7 @@ class AngleAlignment(GeometricTerm):
 
 class Focus(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         a, ref = self.members(ev, env)
         total = 0.0
         for o in sorted(a):
@@ -528,7 +528,7 @@ class Accessibility(GeometricTerm):
         self.fast = fast
 
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         a, b = self.members(ev, env)
         v = ev.view
         total = 0.0
@@ -551,7 +551,7 @@ class Accessibility(GeometricTerm):
 
 class RotationalAsymmetry(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         (s,) = self.members(ev, env)
         if len(s) < 2:
             return 0.0
@@ -562,7 +562,7 @@ class RotationalAsymmetry(GeometricTerm):
 
 class ReflectionalAsymmetry(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         s, ref = self.members(ev, env)
         if not s or not ref:
             return 0.0
@@ -577,7 +577,7 @@ class ReflectionalAsymmetry(GeometricTerm):
 
 class Freespace2D(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         a, b = self.members(ev, env)
         return geometry.freespace_2d([ev.view.footprint(o) for o in sorted(a)],
                                      [ev.view.footprint(o) for o in sorted(b - a)])
@@ -585,7 +585,7 @@ class Freespace2D(GeometricTerm):
 
 class CenterOfSupport(GeometricTerm):
     def compute(self, ev, env):
-        from . import geometry
+        from indoorgen.constraints import geometry
         (s,) = self.members(ev, env)
         total = 0.0
         for o in sorted(s):

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..tags import Subpart
+from indoorgen.model.tags import Subpart
 
 #: Gap the solver leaves between surfaces declared in contact, so that touching placeholders are
 #: never reported as colliding. Validators accept up to 5 mm.
@@ -137,7 +137,8 @@ class NegatedRelation(Relation):
 def parse_relation(text: str) -> Relation:
     """Read back a relation from its `repr` (as stored in scene.json)."""
     import re
-    from ..errors import ConfigError
+
+    from indoorgen.errors import ConfigError
     t = text.strip()
     if t.startswith("~"):
         return NegatedRelation(parse_relation(t[1:]))

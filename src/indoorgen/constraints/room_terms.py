@@ -29,8 +29,8 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from ..tags import Semantics
-from .expressions import GeometricTerm, ObjSet, Scalar, _scalar
+from indoorgen.constraints.expressions import GeometricTerm, ObjSet, Scalar, _scalar
+from indoorgen.model.tags import Semantics
 
 #: Tag of storey objects; the id of the staircase placeholder (watched by the staircase terms).
 STOREY = "storey"

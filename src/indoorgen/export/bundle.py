@@ -27,9 +27,9 @@ from typing import Any, Iterable
 import numpy as np
 import trimesh
 
-from ..assets.base import Asset
-from ..assets.materials import choose_materials
-from ..scene import Scene, SceneObject
+from indoorgen.assets.base import Asset
+from indoorgen.assets.materials import choose_materials
+from indoorgen.model.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
 
@@ -95,7 +95,7 @@ class ExportBundle:
 
     def inertials(self, name: str) -> dict:
         """Per-link `physics.Inertial` of object `name` (computed once per distinct look)."""
-        from .physics import link_inertials
+        from indoorgen.export.physics import link_inertials
         key = ("inertial", self.proto_key(name))
         if key not in self._memo:
             self._memo[key] = link_inertials(self.assets[name], self.materials[name])
@@ -103,7 +103,7 @@ class ExportBundle:
 
     def element_pieces(self, element: "ArchElement") -> list[trimesh.Trimesh]:
         """Convex collision pieces (world coordinates) of an architectural element."""
-        from .convex import convex_parts
+        from indoorgen.export.convex import convex_parts
         key = ("pieces", element.path)
         if key not in self._memo:
             self._memo[key] = list(element.collision) or [
@@ -170,7 +170,7 @@ def object_materials(obj: SceneObject, asset: Asset, variants: int = 1) -> dict[
     """One `MatRef` per slot of `asset`, deterministic from `obj.seed`: the material name from
     `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices)`, the texture
     variant from the same stream (`variants` distinct textures per material in a scene)."""
-    from ..assets import get_factory
+    from indoorgen.assets import get_factory
     try:
         overrides = get_factory(obj.generator).material_choices
     except Exception:  # an unregistered generator: library defaults
@@ -284,8 +284,8 @@ def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
     (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
     from their generators (through `cache`, an `AssetCache`, so identical objects are built
     once)."""
-    from ..architecture import scene_architecture
-    from ..solver.assets_cache import AssetCache
+    from indoorgen.architecture import scene_architecture
+    from indoorgen.assets.cache import AssetCache
     cache = cache or AssetCache()
     arch = None
     if rooms is None:

@@ -19,8 +19,8 @@ import time
 from pathlib import Path
 from typing import Any
 
-from ..errors import ConfigError, OutputError, ParameterError
-from .formats import DEFAULT_FORMATS, FORMATS, parse_formats
+from indoorgen.errors import ConfigError, OutputError, ParameterError
+from indoorgen.export.formats import DEFAULT_FORMATS, FORMATS, parse_formats
 
 log = logging.getLogger(__name__)
 
@@ -61,7 +61,7 @@ def add_export_parsers(subparsers) -> None:
 def read_scene(path: Path):
     """The `Scene` stored in `path` (a scene.json or a directory holding one); SceneFileError
     if it is missing or corrupt."""
-    from ..scene import Scene
+    from indoorgen.model.scene import Scene
     path = Path(path)
     if path.is_dir():
         path = path / "scene.json"
@@ -82,9 +82,9 @@ def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
     """Re-export a saved scene into `out` (default: its own directory), atomically. scene.json
     is copied along, and plan.png / report.json too when they sit beside it. Returns the
     directory and the seconds per stage."""
-    from ..outputs import atomic_dir, check_writable
-    from .bundle import bundle_from_scene
-    from .formats import write_formats
+    from indoorgen.export.bundle import bundle_from_scene
+    from indoorgen.export.formats import write_formats
+    from indoorgen.outputs import atomic_dir, check_writable
     fmts = parse_formats(formats)
     scene, src = read_scene(scene_path)
     out = Path(out) if out else src.parent
@@ -140,11 +140,11 @@ def write_asset(name: str, seed: int, out: Path, overrides: dict[str, Any] | Non
     textures go to `textures/` beside it (.glb embeds them, .usdz packages them)."""
     import numpy as np
 
-    from ..assets import get_factory
-    from ..outputs import atomic_file, check_writable
-    from ..scene import Pose, Scene, SceneObject
-    from .bundle import make_bundle
-    from .textures import TextureStore
+    from indoorgen.assets import get_factory
+    from indoorgen.export.bundle import make_bundle
+    from indoorgen.export.textures import TextureStore
+    from indoorgen.model.scene import Pose, Scene, SceneObject
+    from indoorgen.outputs import atomic_file, check_writable
 
     out = Path(out)
     ext = out.suffix.lower()
@@ -170,13 +170,13 @@ def write_asset(name: str, seed: int, out: Path, overrides: dict[str, Any] | Non
         with atomic_file(out) as tmp:
             staged = tmp_root / f"{out.stem}{ext}"
             if ext in (".usd", ".usda", ".usdc", ".usdz"):
-                from .usd import write_usd_bundle
+                from indoorgen.export.usd import write_usd_bundle
                 write_usd_bundle(bundle, staged, textures)
             elif ext == ".glb":
-                from .gltf import write_glb
+                from indoorgen.export.gltf import write_glb
                 write_glb(bundle, staged, textures)
             else:
-                from .obj import write_obj_format
+                from indoorgen.export.obj import write_obj_format
                 write_obj_format(bundle, tmp_root, textures)
                 staged = tmp_root / "obj" / f"{name}.obj"
                 text = staged.read_text().replace(f"mtllib {name}.mtl", f"mtllib {out.stem}.mtl")

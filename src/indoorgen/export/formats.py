@@ -22,9 +22,9 @@ import time
 from pathlib import Path
 from typing import Iterable
 
-from ..errors import ConfigError
-from .bundle import ExportBundle
-from .textures import TextureStore
+from indoorgen.errors import ConfigError
+from indoorgen.export.bundle import ExportBundle
+from indoorgen.export.textures import TextureStore
 
 log = logging.getLogger(__name__)
 
@@ -67,11 +67,11 @@ def write_formats(bundle: ExportBundle, out_dir: Path, formats: str | Iterable[s
     """Write `formats` of `bundle` into the existing directory `out_dir` (the caller makes it
     atomic, e.g. with `outputs.atomic_dir`). Returns the main files per format; seconds per
     format go into `timings` when given."""
-    from .gltf import write_glb
-    from .mjcf import write_mjcf
-    from .obj import MeshFiles, write_obj_format
-    from .urdf import write_urdf
-    from .usd import write_usd_bundle
+    from indoorgen.export.gltf import write_glb
+    from indoorgen.export.mjcf import write_mjcf
+    from indoorgen.export.obj import MeshFiles, write_obj_format
+    from indoorgen.export.urdf import write_urdf
+    from indoorgen.export.usd import write_usd_bundle
 
     fmts = parse_formats(formats)
     out_dir = Path(out_dir)

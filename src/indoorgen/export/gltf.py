@@ -18,9 +18,9 @@ from PIL import Image
 from trimesh.visual.material import PBRMaterial
 from trimesh.visual.texture import TextureVisuals
 
-from .bundle import ExportBundle, MatRef
-from .meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
-from .textures import TextureStore
+from indoorgen.export.bundle import ExportBundle, MatRef
+from indoorgen.export.meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
+from indoorgen.export.textures import TextureStore
 
 log = logging.getLogger(__name__)
 

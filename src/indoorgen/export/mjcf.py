@@ -23,10 +23,10 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from .bundle import ExportBundle
-from .meshes import joint_frames
-from .obj import CollisionGeom, MeshFiles
-from .physics import Inertial, matrix_to_quat
+from indoorgen.export.bundle import ExportBundle
+from indoorgen.export.meshes import joint_frames
+from indoorgen.export.obj import CollisionGeom, MeshFiles
+from indoorgen.export.physics import Inertial, matrix_to_quat
 
 log = logging.getLogger(__name__)
 

@@ -14,10 +14,9 @@ from pathlib import Path
 
 import numpy as np
 
-
-from .bundle import ArchElement, ExportBundle, MatRef
-from .meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
-from .textures import TextureStore
+from indoorgen.export.bundle import ArchElement, ExportBundle, MatRef
+from indoorgen.export.meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
+from indoorgen.export.textures import TextureStore
 
 log = logging.getLogger(__name__)
 

@@ -12,9 +12,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..assets.base import Asset
-from .bundle import MatRef
-from .meshes import face_slot_names
+from indoorgen.assets.base import Asset
+from indoorgen.export.bundle import MatRef
+from indoorgen.export.meshes import face_slot_names
 
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros
 MIN_MASS = 1e-3
@@ -42,7 +42,7 @@ class Inertial:
 
 def density_of(material: str) -> float:
     """kg/m^3 of a registered material (1000 if unknown)."""
-    from ..assets.materials import get_material
+    from indoorgen.assets.materials import get_material
     try:
         return float(get_material(material).density)
     except Exception:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import ConfigError
+from indoorgen.errors import ConfigError
 
 
 @dataclass

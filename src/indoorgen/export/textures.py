@@ -21,7 +21,7 @@ from typing import Iterable
 
 import numpy as np
 
-from .bundle import MatRef
+from indoorgen.export.bundle import MatRef
 
 log = logging.getLogger(__name__)
 
@@ -60,7 +60,7 @@ def default_cache_dir() -> Path | None:
 def _library_fingerprint() -> str:
     """Hash of the material library's sources, so a changed material never reuses a stale
     cached texture."""
-    from ..assets import materials
+    from indoorgen.assets import materials
     h = hashlib.sha1()
     for p in sorted(Path(materials.__file__).parent.glob("*.py")):
         h.update(p.read_bytes())
@@ -113,7 +113,7 @@ class TextureStore:
         self._paths[ref], self._info[ref] = self._build(ref)
 
     def _build(self, ref: MatRef) -> tuple[dict[str, Path], MaterialInfo]:
-        from ..assets.materials import bake, get_material
+        from indoorgen.assets.materials import bake, get_material
         if self._cache is not None:
             hit = self._from_cache(ref)
             if hit is not None:

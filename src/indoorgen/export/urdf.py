@@ -19,10 +19,10 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from .bundle import ExportBundle
-from .meshes import joint_frames
-from .obj import CollisionGeom, MeshFiles
-from .physics import Inertial
+from indoorgen.export.bundle import ExportBundle
+from indoorgen.export.meshes import joint_frames
+from indoorgen.export.obj import CollisionGeom, MeshFiles
+from indoorgen.export.physics import Inertial
 
 log = logging.getLogger(__name__)
 

@@ -38,13 +38,13 @@ import numpy as np
 import trimesh
 from pxr import Gf, Sdf, Sdr, Tf, Usd, UsdGeom, UsdLux, UsdPhysics, UsdSemantics, UsdShade, Vt
 
-from ..assets.base import Asset
-from ..errors import OutputError
-from ..scene import Scene, SceneObject
-from .bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
-from .meshes import corner_normals, corner_uv, face_slot_names, mesh_uv
-from .physics import Inertial, matrix_to_quat, quat_between
-from .textures import TextureStore
+from indoorgen.assets.base import Asset
+from indoorgen.errors import OutputError
+from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
+from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names, mesh_uv
+from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
+from indoorgen.export.textures import TextureStore
+from indoorgen.model.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
 
@@ -67,7 +67,7 @@ def write_usd(scene: Scene, path: str | PathLike, *, object_assets: dict[str, As
     from its assets and room geometry (a convenience over `bundle.make_bundle` +
     `write_usd_bundle`). Objects missing from `object_assets` are written as Xforms with their
     attributes but no mesh. Raises OutputError for an unknown extension or an unwritable place."""
-    from .bundle import elements_from_rooms, make_bundle
+    from indoorgen.export.bundle import elements_from_rooms, make_bundle
     path = _check_path(path)
     bundle = make_bundle(scene, {n: a for n, a in object_assets.items() if n in scene.objects},
                          elements_from_rooms(scene, rooms))

@@ -19,10 +19,10 @@ import math
 import networkx as nx
 import numpy as np
 
-from ..constraints.room_terms import MIN_DOOR_WALL
-from .grid import OUTSIDE, Grid, room_polygon, runs
-from .view import polygon_exterior_runs
-from .rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
+from indoorgen.constraints.room_terms import MIN_DOOR_WALL
+from indoorgen.floorplan.grid import OUTSIDE, Grid, room_polygon, runs
+from indoorgen.floorplan.rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
+from indoorgen.floorplan.view import polygon_exterior_runs
 
 
 def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):

@@ -13,11 +13,18 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from .graph import privacy_problems
-from .plan import Floorplan
-from .rooms import (BATHROOM, KITCHEN, LIVING, MIN_CLOSET_WIDTH, MIN_WIDTH, NARROW_OK_TYPES,
-                    STAIRCASE)
-from .solidify import stair_rooms
+from indoorgen.floorplan.graph import privacy_problems
+from indoorgen.floorplan.plan import Floorplan
+from indoorgen.floorplan.rooms import (
+    BATHROOM,
+    KITCHEN,
+    LIVING,
+    MIN_CLOSET_WIDTH,
+    MIN_WIDTH,
+    NARROW_OK_TYPES,
+    STAIRCASE,
+)
+from indoorgen.floorplan.solidify import stair_rooms
 
 MIN_DOOR_WIDTH = 0.8
 

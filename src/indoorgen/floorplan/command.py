@@ -8,8 +8,8 @@ import sys
 import time
 from pathlib import Path
 
-from ..errors import ConfigError
-from ..outputs import atomic_dir, check_writable
+from indoorgen.errors import ConfigError
+from indoorgen.outputs import atomic_dir, check_writable
 
 
 def add_floorplan_parser(subparsers) -> None:
@@ -56,13 +56,13 @@ def _read_contour(path: str) -> list:
 
 def run_floorplan(args) -> int:
     """The command: validate arguments, generate or read, solidify, write, report one line."""
-    from .draw import draw_floorplan
-    from .generate import FloorplanConfig, generate_floorplan, storey_pitch
-    from .io import read_floorplan, write_floorplan
-    from .solidify import solidify
-    from .solve import AnnealConfig
-    from .usd import write_architecture_usd
-    from .walls import WallThickness
+    from indoorgen.floorplan.draw import draw_floorplan
+    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
+    from indoorgen.floorplan.io import read_floorplan, write_floorplan
+    from indoorgen.floorplan.solidify import solidify
+    from indoorgen.floorplan.solve import AnnealConfig
+    from indoorgen.floorplan.usd import write_architecture_usd
+    from indoorgen.floorplan.walls import WallThickness
 
     t0 = time.perf_counter()
     if args.seed < 0:

@@ -15,8 +15,8 @@ import shapely
 import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
-from ..errors import InvalidGeometryError
-from .room import validate_polygon
+from indoorgen.errors import InvalidGeometryError
+from indoorgen.floorplan.room import validate_polygon
 
 #: The planning grid (m): every split, extrusion and rectangular bevel lies on it.
 GRID = 0.5

@@ -8,10 +8,10 @@ from os import PathLike
 import numpy as np
 import shapely.geometry as sg
 
-from .plan import Floorplan, StairSpec, Storey
-from .rooms import COLORS
-from .solidify import room_depths
-from .walls import WallThickness, door_frame, entrance_frame, wall_footprint, window_frame
+from indoorgen.floorplan.plan import Floorplan, StairSpec, Storey
+from indoorgen.floorplan.rooms import COLORS
+from indoorgen.floorplan.solidify import room_depths
+from indoorgen.floorplan.walls import WallThickness, door_frame, entrance_frame, wall_footprint, window_frame
 
 WALL_COLOR = "#3a3a3a"
 WINDOW_COLOR = "#4aa3df"
@@ -23,7 +23,8 @@ def draw_floorplan(fp: Floorplan, path: str | PathLike, walls: WallThickness | N
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Arc, FancyArrow, Polygon as MplPolygon
+    from matplotlib.patches import Arc, FancyArrow
+    from matplotlib.patches import Polygon as MplPolygon
 
     t = walls or WallThickness()
     n = len(fp.storeys)

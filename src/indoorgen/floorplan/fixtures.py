@@ -18,8 +18,8 @@ from typing import Any
 import numpy as np
 import trimesh
 
-from ..errors import IndoorGenError
-from ..rng import stream
+from indoorgen.errors import IndoorGenError
+from indoorgen.rng import stream
 
 log = logging.getLogger(__name__)
 
@@ -40,7 +40,7 @@ def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
     """Sample `generator`'s params from (seed, path), pin `fixed`, check and build; None if the
     generator does not exist or rejects the values."""
     try:
-        from ..assets import get_factory
+        from indoorgen.assets import get_factory
         f = get_factory(generator)
         params = f.sample_params(stream(seed, "architecture", *path))
         params.update(fixed)
@@ -80,7 +80,7 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
     if got is None:
         return None
     f, params, asset = got
-    from ..assets.generators.architecture import opening_size
+    from indoorgen.assets.generators.architecture import opening_size
     c = np.asarray(center, float)
     return _fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
                     opening_size(params))
@@ -94,7 +94,7 @@ def window(seed: int, name: str, center, inward: np.ndarray, width: float, heigh
     if got is None:
         return None
     f, params, asset = got
-    from ..assets.generators.architecture import opening_size
+    from indoorgen.assets.generators.architecture import opening_size
     c = np.asarray(center, float)
     return _fixture("window", params, asset, inward,
                     np.array([c[0], c[1], elevation + sill]), opening_size(params))

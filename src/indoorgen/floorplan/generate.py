@@ -19,20 +19,20 @@ from typing import Callable
 import numpy as np
 import shapely.geometry as sg
 
-from ..constraints.expressions import Problem
-from ..errors import ConfigError, InvalidGeometryError
-from ..rng import stream
-from .assign import assign, relabel
-from .contour import GRID, make_contour, upper_contour, user_contour
-from .graph import HomeGraph, graph_from_spec, sample_home_graph
-from .grid import OUTSIDE, make_grid
-from .openings import place_doors, place_entrance, place_stairs, place_windows
-from .plan import Floorplan, RoomSpec, Storey
-from .rooms import MIN_AREA, TYPICAL_AREA, parse_room_counts, room_type_of
-from .rules import room_problems
-from .solve import AnnealConfig, AnnealStats, anneal
-from .subdivide import grow_hub, merge, mondrian
-from .view import GridPlan
+from indoorgen.constraints.expressions import Problem
+from indoorgen.errors import ConfigError, InvalidGeometryError
+from indoorgen.floorplan.assign import assign, relabel
+from indoorgen.floorplan.contour import GRID, make_contour, upper_contour, user_contour
+from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
+from indoorgen.floorplan.grid import OUTSIDE, make_grid
+from indoorgen.floorplan.openings import place_doors, place_entrance, place_stairs, place_windows
+from indoorgen.floorplan.plan import Floorplan, RoomSpec, Storey
+from indoorgen.floorplan.rooms import MIN_AREA, TYPICAL_AREA, parse_room_counts, room_type_of
+from indoorgen.floorplan.rules import room_problems
+from indoorgen.floorplan.solve import AnnealConfig, AnnealStats, anneal
+from indoorgen.floorplan.subdivide import grow_hub, merge, mondrian
+from indoorgen.floorplan.view import GridPlan
+from indoorgen.rng import stream
 
 log = logging.getLogger(__name__)
 
@@ -93,7 +93,7 @@ def _place_stair(rng: np.random.Generator, grid) -> tuple[int, int, int, int] | 
     """A random placeholder rectangle of full cells, each side either on the outline's bounding
     box or at least MIN_SIDE cells (a room's width) clear of it, with a cell of full cells
     around it inside the outline."""
-    from .subdivide import MIN_SIDE
+    from indoorgen.floorplan.subdivide import MIN_SIDE
     full = grid.full
     ny, nx = full.shape
     shapes = [STAIR_CELLS, STAIR_CELLS[::-1]]
@@ -236,7 +236,7 @@ def build_plan(seed: int, cfg: FloorplanConfig) -> GridPlan:
 
 def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floorplan:
     """Generate a home's floorplan from `seed`. Same seed + config + version => same plan."""
-    from ..programs.floorplan import floorplan as default_program
+    from indoorgen.programs.floorplan import floorplan as default_program
     cfg = config or FloorplanConfig()
     t0 = time.perf_counter()
     plan = build_plan(seed, cfg)

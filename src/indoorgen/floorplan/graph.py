@@ -24,9 +24,23 @@ from typing import Callable
 import networkx as nx
 import numpy as np
 
-from ..errors import ConfigError
-from .rooms import (BALCONY, BATHROOM, BEDROOM, CLOSET, DINING, GARAGE, HALLWAY, KITCHEN, LIVING,
-                    STAIRCASE, TYPICAL_AREA, UTILITY, check_room_type, room_type_of)
+from indoorgen.errors import ConfigError
+from indoorgen.floorplan.rooms import (
+    BALCONY,
+    BATHROOM,
+    BEDROOM,
+    CLOSET,
+    DINING,
+    GARAGE,
+    HALLWAY,
+    KITCHEN,
+    LIVING,
+    STAIRCASE,
+    TYPICAL_AREA,
+    UTILITY,
+    check_room_type,
+    room_type_of,
+)
 
 log = logging.getLogger(__name__)
 

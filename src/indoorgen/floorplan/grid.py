@@ -16,7 +16,7 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from .contour import GRID
+from indoorgen.floorplan.contour import GRID
 
 OUTSIDE = -1
 

@@ -31,9 +31,9 @@ import shapely
 import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
-from ..errors import ConfigError, InvalidGeometryError
-from .plan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
-from .rooms import check_room_type
+from indoorgen.errors import ConfigError, InvalidGeometryError
+from indoorgen.floorplan.plan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
+from indoorgen.floorplan.rooms import check_room_type
 
 
 def _r(x: float) -> float:

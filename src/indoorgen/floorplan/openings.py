@@ -16,10 +16,18 @@ from __future__ import annotations
 import numpy as np
 import shapely.geometry as sg
 
-from .plan import DoorSpec, Entrance, StairSpec, WindowSpec
-from .rooms import (DEFAULT_DOOR_WIDTH, DOOR_HEIGHT, DOOR_WIDTH, ENTRANCE_DOOR_WIDTH,
-                    OPEN_PAIRS, STAIRCASE, WINDOWS, room_type_of)
-from .view import GridPlan, longest_run
+from indoorgen.floorplan.plan import DoorSpec, Entrance, StairSpec, WindowSpec
+from indoorgen.floorplan.rooms import (
+    DEFAULT_DOOR_WIDTH,
+    DOOR_HEIGHT,
+    DOOR_WIDTH,
+    ENTRANCE_DOOR_WIDTH,
+    OPEN_PAIRS,
+    STAIRCASE,
+    WINDOWS,
+    room_type_of,
+)
+from indoorgen.floorplan.view import GridPlan, longest_run
 
 #: Clear wall kept between a door or window and the end of its wall run (m).
 END_MARGIN = 0.15

@@ -20,10 +20,10 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from ..assets.base import Surface
-from ..errors import InvalidGeometryError
-from ..scene import Door, Room
-from ..tags import Subpart
+from indoorgen.assets.base import Surface
+from indoorgen.errors import InvalidGeometryError
+from indoorgen.model.scene import Door, Room
+from indoorgen.model.tags import Subpart
 
 log = logging.getLogger(__name__)
 

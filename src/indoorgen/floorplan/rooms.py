@@ -6,8 +6,8 @@ Room types are the string values of `tags.RoomType`; rooms are named ``<type>_<k
 """
 from __future__ import annotations
 
-from ..errors import UnknownRoomTypeError
-from ..tags import RoomType
+from indoorgen.errors import UnknownRoomTypeError
+from indoorgen.model.tags import RoomType
 
 LIVING = RoomType.LivingRoom.value
 DINING = RoomType.DiningRoom.value
@@ -103,7 +103,7 @@ def parse_room_counts(spec: str | dict | None) -> dict[str, int]:
 
     Raises UnknownRoomTypeError for an unknown type and ConfigError for a malformed entry or a
     negative count."""
-    from ..errors import ConfigError
+    from indoorgen.errors import ConfigError
     if spec is None or spec == "":
         return {}
     if isinstance(spec, dict):

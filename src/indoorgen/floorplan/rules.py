@@ -6,10 +6,17 @@ breaks them for a room it touched before the program is even evaluated.
 """
 from __future__ import annotations
 
-from ..constraints.room_terms import MIN_DOOR_WALL
-from .rooms import (EXTERIOR_TYPES, MIN_AREA, MIN_CLOSET_WIDTH, MIN_WIDTH, NARROW_OK_TYPES,
-                    STAIRCASE, room_type_of)
-from .view import GridPlan
+from indoorgen.constraints.room_terms import MIN_DOOR_WALL
+from indoorgen.floorplan.rooms import (
+    EXTERIOR_TYPES,
+    MIN_AREA,
+    MIN_CLOSET_WIDTH,
+    MIN_WIDTH,
+    NARROW_OK_TYPES,
+    STAIRCASE,
+    room_type_of,
+)
+from indoorgen.floorplan.view import GridPlan
 
 
 def room_problems(plan: GridPlan, o: str) -> list[str]:

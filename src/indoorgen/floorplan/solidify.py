@@ -32,15 +32,30 @@ import shapely.geometry as sg
 import trimesh
 from shapely.geometry.polygon import orient
 
-from ..assets.base import Surface
-from ..errors import InvalidGeometryError
-from ..scene import Door, Room
-from . import fixtures
-from .plan import DoorSpec, Floorplan, StairSpec, Storey
-from .room import (SLAB_THICKNESS, RoomGeometry, _ceiling_surface, _floor_surface, _to_trimesh,
-                   _wall_surfaces)
-from .walls import (WallFrame, WallThickness, door_frame, entrance_frame, free_polygon,
-                    outer_outline, room_region, wall_footprint, window_frame)
+from indoorgen.assets.base import Surface
+from indoorgen.errors import InvalidGeometryError
+from indoorgen.floorplan import fixtures
+from indoorgen.floorplan.plan import DoorSpec, Floorplan, StairSpec, Storey
+from indoorgen.floorplan.room import (
+    SLAB_THICKNESS,
+    RoomGeometry,
+    _ceiling_surface,
+    _floor_surface,
+    _to_trimesh,
+    _wall_surfaces,
+)
+from indoorgen.floorplan.walls import (
+    WallFrame,
+    WallThickness,
+    door_frame,
+    entrance_frame,
+    free_polygon,
+    outer_outline,
+    room_region,
+    wall_footprint,
+    window_frame,
+)
+from indoorgen.model.scene import Door, Room
 
 #: Depth of the keep-out zone on the side a door swings into, and on the other side (m).
 SWING_DEPTH = 1.0

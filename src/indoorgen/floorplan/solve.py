@@ -25,12 +25,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..constraints.evaluator import Evaluator, Result
-from ..constraints.expressions import Problem
-from ..constraints.room_terms import STAIR_PLACEHOLDER
-from .grid import OUTSIDE
-from .rules import breaks_rules
-from .view import GridPlan
+from indoorgen.constraints.evaluator import Evaluator, Result
+from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.room_terms import STAIR_PLACEHOLDER
+from indoorgen.floorplan.grid import OUTSIDE
+from indoorgen.floorplan.rules import breaks_rules
+from indoorgen.floorplan.view import GridPlan
 
 log = logging.getLogger(__name__)
 

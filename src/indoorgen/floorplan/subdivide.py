@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import ndimage
 
-from .grid import OUTSIDE, Grid, opening
+from indoorgen.floorplan.grid import OUTSIDE, Grid, opening
 
 #: Narrowest space (cells) a split may leave: 3 cells = 1.5 m.
 MIN_SIDE = 3

@@ -20,9 +20,9 @@ from pathlib import Path
 
 from pxr import Tf, Usd, UsdGeom
 
-from ..errors import OutputError
-from ..export.usd import _define_mesh, _tag_prim, sanitize_name
-from .solidify import Architecture
+from indoorgen.errors import OutputError
+from indoorgen.export.usd import _define_mesh, _tag_prim, sanitize_name
+from indoorgen.floorplan.solidify import Architecture
 
 
 def build_architecture_stage(arch: Architecture) -> Usd.Stage:

@@ -15,11 +15,10 @@ import numpy as np
 import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
-from ..constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
-from .graph import HomeGraph
-from .grid import OUTSIDE, Grid, opening, room_polygon, trace
-from .rooms import MIN_AREA, TYPICAL_AREA, room_type_of
-
+from indoorgen.constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
+from indoorgen.floorplan.graph import HomeGraph
+from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
+from indoorgen.floorplan.rooms import MIN_AREA, TYPICAL_AREA, room_type_of
 
 _TURN = math.radians(20.0)
 

@@ -15,8 +15,8 @@ import shapely
 import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
-from ..errors import InvalidGeometryError
-from .plan import DoorSpec, Entrance, Storey, WindowSpec
+from indoorgen.errors import InvalidGeometryError
+from indoorgen.floorplan.plan import DoorSpec, Entrance, Storey, WindowSpec
 
 
 @dataclass(frozen=True)

@@ -3,16 +3,16 @@ from __future__ import annotations
 
 from typing import Callable
 
-from ..constraints import Problem
-from ..errors import UnknownRoomTypeError
-from .bathroom import bathroom
-from .bedroom import bedroom
-from .dining_room import dining_room
-from .kitchen import kitchen
-from .living_room import living_room
-from .office import office
-from .small_rooms import balcony, closet, garage, hallway, staircase_room, utility
-from .warehouse import warehouse
+from indoorgen.constraints import Problem
+from indoorgen.errors import UnknownRoomTypeError
+from indoorgen.programs.bathroom import bathroom
+from indoorgen.programs.bedroom import bedroom
+from indoorgen.programs.dining_room import dining_room
+from indoorgen.programs.kitchen import kitchen
+from indoorgen.programs.living_room import living_room
+from indoorgen.programs.office import office
+from indoorgen.programs.small_rooms import balcony, closet, garage, hallway, staircase_room, utility
+from indoorgen.programs.warehouse import warehouse
 
 ROOM_PROGRAMS: dict[str, Callable[..., Problem]] = {
     "living_room": living_room,

@@ -1,8 +1,8 @@
 """A bathroom: a toilet, a basin with a mirror above it, a bath or shower in a corner, and the
 rails, hooks and holders that go on its walls."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
-from ..tags import Semantics as S
-from .common import against_wall, on_ceiling, on_floor, on_top, on_wall, side_to_wall
+from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, on_ceiling, on_floor, on_top, on_wall, side_to_wall
 
 
 def bathroom(room) -> Problem:

@@ -1,9 +1,15 @@
 """A bedroom: a bed against a wall with nightstands either side, storage for clothes, a rug,
 lamps and pictures, and a few things on the surfaces."""
-from ..constraints import (Problem, accessibility_cost, angle_alignment_cost, height,
-                           reflectional_asymmetry, scene)
-from ..tags import Semantics as S
-from .common import against_wall, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.constraints import (
+    Problem,
+    accessibility_cost,
+    angle_alignment_cost,
+    height,
+    reflectional_asymmetry,
+    scene,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, on_ceiling, on_floor, on_top, on_wall
 
 
 def bedroom(room) -> Problem:

@@ -1,6 +1,6 @@
 """Relations every room program uses, named for what they mean in a room."""
-from ..constraints import StableAgainst, SupportedBy
-from ..tags import Subpart
+from indoorgen.constraints import StableAgainst, SupportedBy
+from indoorgen.model.tags import Subpart
 
 #: standing on the room's floor
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)

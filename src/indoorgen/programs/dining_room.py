@@ -1,9 +1,15 @@
 """A dining room: one table with chairs evenly around it and places laid, art on the walls."""
-from ..constraints import (Problem, accessibility_cost, angle_alignment_cost,
-                           center_of_support_distance, height,
-                           rotational_asymmetry, scene)
-from ..tags import Semantics as S
-from .common import against_wall, at_table, on_floor, on_top, on_wall
+from indoorgen.constraints import (
+    Problem,
+    accessibility_cost,
+    angle_alignment_cost,
+    center_of_support_distance,
+    height,
+    rotational_asymmetry,
+    scene,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, at_table, on_floor, on_top, on_wall
 
 
 def dining_room(room) -> Problem:

@@ -4,13 +4,32 @@ The hard constraints are what every accepted plan keeps; the twelve score terms 
 objective. Write your own with the same terms (`indoorgen.constraints.room_terms`) and pass it
 as `FloorplanConfig(program=...)`.
 """
-from ..constraints import Problem, scene
-from ..constraints.room_terms import (
-    STOREY, aspect_ratio, convexity, exterior_corners, exterior_length, ideal_area,
-    longest_exterior_wall, min_area, missing_doors, narrow_area, on_storey, outline_corners,
-    outline_length, path_directness, ratio_mismatch, room_area, rooms_of, stair_coverage,
-    stair_iou, storey_area, wall_count, wall_lines)
-from ..tags import Semantics
+from indoorgen.constraints import Problem, scene
+from indoorgen.constraints.room_terms import (
+    STOREY,
+    aspect_ratio,
+    convexity,
+    exterior_corners,
+    exterior_length,
+    ideal_area,
+    longest_exterior_wall,
+    min_area,
+    missing_doors,
+    narrow_area,
+    on_storey,
+    outline_corners,
+    outline_length,
+    path_directness,
+    ratio_mismatch,
+    room_area,
+    rooms_of,
+    stair_coverage,
+    stair_iou,
+    storey_area,
+    wall_count,
+    wall_lines,
+)
+from indoorgen.model.tags import Semantics
 
 
 def floorplan() -> Problem:

@@ -1,8 +1,8 @@
 """A kitchen: cabinet runs along the walls with a fridge and a cooker, wall cabinets above,
 maybe an island with stools, and kitchenware on the counters."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
-from ..tags import Semantics as S
-from .common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
 
 
 def kitchen(room) -> Problem:

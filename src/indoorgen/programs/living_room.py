@@ -1,8 +1,14 @@
 """A living room: seating facing a TV, a coffee table, bookcases full of books, lamps and art."""
-from ..constraints import (Problem, accessibility_cost, angle_alignment_cost, focus_score, height,
-                           scene)
-from ..tags import Semantics as S
-from .common import against_wall, fully_on, on_floor, on_top, on_wall
+from indoorgen.constraints import (
+    Problem,
+    accessibility_cost,
+    angle_alignment_cost,
+    focus_score,
+    height,
+    scene,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, fully_on, on_floor, on_top, on_wall
 
 
 def living_room(room) -> Problem:

@@ -1,7 +1,7 @@
 """A home office or study: a desk with a chair and a screen, shelves of books and files."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
-from ..tags import Semantics as S
-from .common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
 
 
 def office(room) -> Problem:

@@ -1,9 +1,9 @@
 """The small and service rooms of a home: closet, hallway, utility room, staircase room, garage
 and balcony. Each is short: what stands along the walls, what hangs on them, and what sits on
 the shelves."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
-from ..tags import Semantics as S
-from .common import against_wall, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, on_ceiling, on_floor, on_top, on_wall
 
 
 def _ceiling_light(room, lo: int = 1, hi: int = 1):

@@ -1,8 +1,8 @@
 """A warehouse bay: pallet racks in rows along the walls and across the floor, pallets on the
 floor and on the racks' levels, boxes on the pallets, aisles kept clear."""
-from ..constraints import Problem, accessibility_cost, angle_alignment_cost, scene
-from ..tags import Semantics as S
-from .common import against_wall, on_floor, on_top
+from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import against_wall, on_floor, on_top
 
 
 def warehouse(room) -> Problem:

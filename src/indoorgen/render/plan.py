@@ -12,16 +12,16 @@ import re
 from os import PathLike
 from typing import Iterable
 
+import matplotlib.patheffects as pe
 import numpy as np
 import shapely.geometry as sg
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Arc, FancyArrow, Patch, PathPatch
 from matplotlib.path import Path
-import matplotlib.patheffects as pe
 
-from ..scene import Room, Scene, SceneObject
-from ..tags import Semantics
+from indoorgen.model.scene import Room, Scene, SceneObject
+from indoorgen.model.tags import Semantics
 
 log = logging.getLogger(__name__)
 

@@ -19,7 +19,7 @@ import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from ..assets.base import Asset, get_factory  # noqa: E402
+from indoorgen.assets.base import Asset, get_factory  # noqa: E402
 
 log = logging.getLogger(__name__)
 
@@ -32,7 +32,7 @@ FILL_LIGHT = np.array([1.0, -0.8, 0.3])
 def slot_colors(asset: Asset, seed: int = 0) -> np.ndarray:
     """An RGB colour per material slot of `asset`: the mean colour of the material the slot
     draws from the material library for `seed`."""
-    from ..assets.materials import bake, choose_materials
+    from indoorgen.assets.materials import bake, choose_materials
     rng = np.random.default_rng(seed)
     chosen = choose_materials(list(asset.slots), rng)
     return np.array([bake(chosen[s], seed, 32).mean_color for s in asset.slots], float)

@@ -16,13 +16,13 @@ from typing import Callable
 
 import numpy as np
 
-from ..assets import factories_with, get_factory
-from ..constraints.bounds import STAGE_ORDER, Bound, find_bounds, term_stage
-from ..constraints.evaluator import Evaluator, Result
-from ..constraints.expressions import Problem
-from ..rng import child_seed
-from .placement import placements_hold, sample_point, solve_pose
-from .state import ObjState, Placement, State, rotation
+from indoorgen.assets import factories_with, get_factory
+from indoorgen.constraints.bounds import STAGE_ORDER, Bound, find_bounds, term_stage
+from indoorgen.constraints.evaluator import Evaluator, Result
+from indoorgen.constraints.expressions import Problem
+from indoorgen.rng import child_seed
+from indoorgen.solver.placement import placements_hold, sample_point, solve_pose
+from indoorgen.solver.state import ObjState, Placement, State, rotation
 
 log = logging.getLogger(__name__)
 

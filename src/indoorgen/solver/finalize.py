@@ -10,8 +10,8 @@ import logging
 
 import fcl
 
-from .assets_cache import mesh_bvh
-from .state import State, rotation
+from indoorgen.assets.cache import mesh_bvh
+from indoorgen.solver.state import State, rotation
 
 log = logging.getLogger(__name__)
 

@@ -7,11 +7,11 @@ from typing import Callable
 
 from tqdm import tqdm
 
-from ..constraints.evaluator import Evaluator, Result
-from ..constraints.expressions import Problem
-from ..rng import stream
-from .anneal import AnnealConfig, Annealer, StageStats
-from .state import State
+from indoorgen.constraints.evaluator import Evaluator, Result
+from indoorgen.constraints.expressions import Problem
+from indoorgen.rng import stream
+from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
+from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 

@@ -15,9 +15,9 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from ..assets import Asset, Surface
-from ..constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst
-from .state import Placement, State, rotation
+from indoorgen.assets import Asset, Surface
+from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst
+from indoorgen.solver.state import Placement, State, rotation
 
 
 @dataclass(frozen=True)

@@ -16,12 +16,12 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from ..assets import Asset, Surface
-from ..constraints.relations import Relation
-from ..floorplan.room import RoomGeometry
-from ..tags import Semantics
-from .assets_cache import AssetCache, convex_shape, mesh_bvh
-from .broadphase import Broadphase, world_boxes
+from indoorgen.assets import Asset, Surface
+from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh
+from indoorgen.constraints.relations import Relation
+from indoorgen.floorplan.room import RoomGeometry
+from indoorgen.model.tags import Semantics
+from indoorgen.solver.broadphase import Broadphase, world_boxes
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
@@ -331,8 +331,8 @@ def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trim
 def state_from_scene(scene, rooms: dict[str, RoomGeometry], cache: AssetCache) -> State:
     """Rebuild a solver state (placeholders, poses, relations) from a saved Scene, so a scene
     can be re-evaluated or validated without re-solving."""
-    from ..assets import get_factory
-    from ..constraints.relations import parse_relation
+    from indoorgen.assets import get_factory
+    from indoorgen.constraints.relations import parse_relation
     st = State(rooms, cache)
     for o in scene.objects.values():
         fac = get_factory(o.generator)

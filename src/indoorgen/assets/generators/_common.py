@@ -15,10 +15,18 @@ from typing import Any, ClassVar
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Subpart
-from ..base import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
-from ..parts import (DoorJoint, Part, box_uv, concat, convex_pieces, free_space_above,
-                     manifold_to_trimesh, union_links)
+from indoorgen.assets.base import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
+from indoorgen.assets.parts import (
+    DoorJoint,
+    Part,
+    box_uv,
+    concat,
+    convex_pieces,
+    free_space_above,
+    manifold_to_trimesh,
+    union_links,
+)
+from indoorgen.model.tags import Subpart
 
 
 def default_value(p: Param) -> Any:

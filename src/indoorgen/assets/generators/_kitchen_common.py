@@ -14,12 +14,23 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from ...tags import Subpart
-from ..base import Joint, Surface
-from ..parts import (MOVING_GAP, DoorJoint, Front, Part, box_between, carcass, frame, knob, rod,
-                     solid_union)
-from ..parts import hinge_motion, slide_motion  # noqa: F401 - the appliance generators' motions
-from ._common import make_joint
+from indoorgen.assets.base import Joint, Surface
+from indoorgen.assets.generators._common import make_joint
+from indoorgen.assets.parts import (  # noqa: F401 - the appliance generators' motions
+    MOVING_GAP,
+    DoorJoint,
+    Front,
+    Part,
+    box_between,
+    carcass,
+    frame,
+    hinge_motion,
+    knob,
+    rod,
+    slide_motion,
+    solid_union,
+)
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 #: how far a bar handle's outer face stands in front of the leaf it is mounted on (m)

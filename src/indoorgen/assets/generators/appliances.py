@@ -14,13 +14,24 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import MOVING_GAP, DoorJoint, Part, bevel_box, box_between, cylinder
-from ._common import PartsFactory, bottom_rect, support_rect
-from ._kitchen_common import (HANDLE_PROUD, OVERLAP, hinge_motion, interior_rect, joint_for,
-                              open_shell, pull_bar, rack_surface, slide_motion, slotted_plate,
-                              window_leaf, wire_rack)
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_rect
+from indoorgen.assets.generators._kitchen_common import (
+    HANDLE_PROUD,
+    OVERLAP,
+    hinge_motion,
+    interior_rect,
+    joint_for,
+    open_shell,
+    pull_bar,
+    rack_surface,
+    slide_motion,
+    slotted_plate,
+    window_leaf,
+    wire_rack,
+)
+from indoorgen.assets.parts import MOVING_GAP, DoorJoint, Part, bevel_box, box_between, cylinder
+from indoorgen.model.tags import Semantics as S
 
 #: insulated wall thickness of cold appliances (m)
 COLD_WALL = 0.04

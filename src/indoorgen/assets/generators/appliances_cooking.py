@@ -10,14 +10,35 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ..base import Param, Surface, register
-from ..parts import (MOVING_GAP, Part, bevel_box, box, box_between, cylinder, knob, lathe,
-                     solid_union)
-from ._common import PartsFactory, bottom_rect, support_polygon, support_rect
-from ._kitchen_common import (OVERLAP, back_surface, hinge_motion, interior_rect, joint_for,
-                              open_shell, pull_bar, rack_surface, rects_polygon, slide_motion,
-                              slotted_plate, window_leaf, wire_rack)
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_polygon, support_rect
+from indoorgen.assets.generators._kitchen_common import (
+    OVERLAP,
+    back_surface,
+    hinge_motion,
+    interior_rect,
+    joint_for,
+    open_shell,
+    pull_bar,
+    rack_surface,
+    rects_polygon,
+    slide_motion,
+    slotted_plate,
+    window_leaf,
+    wire_rack,
+)
+from indoorgen.assets.parts import (
+    MOVING_GAP,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    cylinder,
+    knob,
+    lathe,
+    solid_union,
+)
+from indoorgen.model.tags import Semantics as S
 
 #: per burner count: burners (u, v, size class) and their grate cells (u0, u1, v0, v1), in
 #: fractions of the burner area's half extents (u along X, v along Y)

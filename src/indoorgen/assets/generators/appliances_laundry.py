@@ -5,11 +5,17 @@ from typing import Any
 
 import manifold3d as m3d
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import MOVING_GAP, Part, box, box_between, cylinder, lathe, rod
-from ._common import PartsFactory, support_rect
-from ._kitchen_common import OVERLAP, hinge_motion, joint_for, open_shell, slide_motion
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_rect
+from indoorgen.assets.generators._kitchen_common import (
+    OVERLAP,
+    hinge_motion,
+    joint_for,
+    open_shell,
+    slide_motion,
+)
+from indoorgen.assets.parts import MOVING_GAP, Part, box, box_between, cylinder, lathe, rod
+from indoorgen.model.tags import Semantics as S
 
 
 # ------------------------------------------------------------------------ washing machine

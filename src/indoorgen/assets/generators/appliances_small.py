@@ -7,12 +7,27 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import MOVING_GAP, Part, bevel_box, box, box_between, circle_polygon, cylinder, knob
-from ._common import PartsFactory, support_polygon, support_rect
-from ._kitchen_common import OVERLAP, hinge_motion, joint_for, pull_bar, window_leaf
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
+from indoorgen.assets.generators._kitchen_common import (
+    OVERLAP,
+    hinge_motion,
+    joint_for,
+    pull_bar,
+    window_leaf,
+)
+from indoorgen.assets.parts import (
+    MOVING_GAP,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    circle_polygon,
+    cylinder,
+    knob,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 
 # ------------------------------------------------------------------------------ microwave

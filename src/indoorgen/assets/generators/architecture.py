@@ -23,9 +23,9 @@ from typing import Any, Sequence
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Subpart
-from ..base import Surface
-from ..parts import Part, bevel_box, box, box_between, lathe, rod, solid_union
+from indoorgen.assets.base import Surface
+from indoorgen.assets.parts import Part, bevel_box, box, box_between, lathe, rod, solid_union
+from indoorgen.model.tags import Subpart
 
 #: how far touching pieces overlap so that each link unions into one shell (m)
 OVERLAP = 0.001

@@ -17,12 +17,24 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import (FRONT_PROUD, MOVING_GAP, Front, Part, box_between, cabinet_fronts, carcass,
-                     circle_polygon, cylinder, lathe, legs, solid_union)
-from ._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.parts import (
+    FRONT_PROUD,
+    MOVING_GAP,
+    Front,
+    Part,
+    box_between,
+    cabinet_fronts,
+    carcass,
+    circle_polygon,
+    cylinder,
+    lathe,
+    legs,
+    solid_union,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OV = 0.002  # overlap between touching pieces so that each link unions into one shell
 GAP = MOVING_GAP

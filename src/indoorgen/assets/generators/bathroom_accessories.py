@@ -13,12 +13,12 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import Front, Part, box_between, cabinet_fronts, carcass
-from ._common import PartsFactory, make_joint, support_rect
-from .bathroom import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_rect
+from indoorgen.assets.generators.bathroom import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
+from indoorgen.assets.parts import Front, Part, box_between, cabinet_fronts, carcass
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 PLATE = 0.012  # thickness of a wall plate or rosette (m)
 TOWEL = 0.01  # thickness of a folded towel's layer (m)

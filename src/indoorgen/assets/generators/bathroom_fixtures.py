@@ -12,14 +12,28 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import DoorJoint, Part, box_between, cylinder, lathe, rod
-from ._common import PartsFactory, make_joint, support_polygon
-from .bathroom import (FIXTURE_MATERIALS, GAP, OV, Prim, ellipse, faucet, hollow, hull_stack,
-                       outline_points, outline_polygon, polygon_pieces, prim_bounds, prim_parts,
-                       prim_solid, rounded_rect)
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.generators.bathroom import (
+    FIXTURE_MATERIALS,
+    GAP,
+    OV,
+    Prim,
+    ellipse,
+    faucet,
+    hollow,
+    hull_stack,
+    outline_points,
+    outline_polygon,
+    polygon_pieces,
+    prim_bounds,
+    prim_parts,
+    prim_solid,
+    rounded_rect,
+)
+from indoorgen.assets.parts import DoorJoint, Part, box_between, cylinder, lathe, rod
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 
 # ------------------------------------------------------------------------------ bathtubs

@@ -13,11 +13,11 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import FRONT_PROUD, DoorJoint, Part, bevel_box, box_between, drawer, solid_union
-from ._common import PartsFactory, make_joint, support_rect
-from .seating_more import rod_between
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_rect
+from indoorgen.assets.generators.seating_more import rod_between
+from indoorgen.assets.parts import FRONT_PROUD, DoorJoint, Part, bevel_box, box_between, drawer, solid_union
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 

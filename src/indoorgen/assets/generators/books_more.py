@@ -16,12 +16,12 @@ import numpy as np
 import shapely.affinity as sa
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import Part
-from ._common import PartsFactory, support_polygon
-from .books import Book
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon
+from indoorgen.assets.generators.books import Book
+from indoorgen.assets.parts import Part
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 #: how far neighbouring books sink into each other (m)
 SINK = 0.001

@@ -7,11 +7,11 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import Part, box, box_between, circle_polygon, frame, lathe
-from ._common import PartsFactory, support_polygon
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon
+from indoorgen.assets.parts import Part, box, box_between, circle_polygon, frame, lathe
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 

@@ -14,12 +14,25 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import (FRONT_PROUD, Front, Part, bevel_box, box, box_between, cabinet_fronts,
-                     carcass, circle_polygon, cylinder, lathe, rod, torus)
-from ._common import PartsFactory, make_joint, support_polygon, support_rect
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
+from indoorgen.assets.parts import (
+    FRONT_PROUD,
+    Front,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    cabinet_fronts,
+    carcass,
+    circle_polygon,
+    cylinder,
+    lathe,
+    rod,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 O1 = 0.001  # 1 mm overlap between touching pieces

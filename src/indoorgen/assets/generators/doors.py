@@ -14,13 +14,32 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import (DoorJoint, Part, bar_handle, box, box_between, hinge_motion, rod, solid_union,
-                     torus)
-from ._common import PartsFactory, make_joint
-from .architecture import (GAP, GLASS, OVERLAP, casing, grid_cells, hull, lever, opening_surface,
-                           round_knob, slab)
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint
+from indoorgen.assets.generators.architecture import (
+    GAP,
+    GLASS,
+    OVERLAP,
+    casing,
+    grid_cells,
+    hull,
+    lever,
+    opening_surface,
+    round_knob,
+    slab,
+)
+from indoorgen.assets.parts import (
+    DoorJoint,
+    Part,
+    bar_handle,
+    box,
+    box_between,
+    hinge_motion,
+    rod,
+    solid_union,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
 
 #: how far a handle's front stands off the leaf face (m)
 STANDOFF = 0.065

@@ -1,10 +1,10 @@
 """Electronics: a flat-screen TV on a stand foot (it rests on a TV stand's top). Screen faces +X."""
 from __future__ import annotations
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import Part, bevel_box, box, box_between
-from ._common import PartsFactory
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory
+from indoorgen.assets.parts import Part, bevel_box, box, box_between
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002
 ASPECTS = {"16:9": 9 / 16, "21:9": 9 / 21}

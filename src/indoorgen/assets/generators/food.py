@@ -15,12 +15,19 @@ from typing import Any, Callable
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import Part, bevel_box, box_between, cylinder, lathe, rod, solid_union
-from ._common import PartsFactory, support_rect
-from .tableware_more import (SECTIONS, bowl_base_radius, bowl_params, bowl_vessel, cheap_cylinder,
-                             round_bottom, solid_revolve)
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_rect
+from indoorgen.assets.generators.tableware_more import (
+    SECTIONS,
+    bowl_base_radius,
+    bowl_params,
+    bowl_vessel,
+    cheap_cylinder,
+    round_bottom,
+    solid_revolve,
+)
+from indoorgen.assets.parts import Part, bevel_box, box_between, cylinder, lathe, rod, solid_union
+from indoorgen.model.tags import Semantics as S
 
 #: how far touching pieces sink into each other so that their union is one shell (m)
 SINK = 0.0015

@@ -14,13 +14,29 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Joint, Param, register
-from ..parts import (MOVING_GAP, DoorJoint, Part, bevel_box, box, box_between, circle_polygon,
-                     cylinder, lathe, torus)
-from ._common import PartsFactory, bottom_rect, make_joint, support_polygon, support_rect
-from .plants import loft
+from indoorgen.assets.base import Joint, Param, register
+from indoorgen.assets.generators._common import (
+    PartsFactory,
+    bottom_rect,
+    make_joint,
+    support_polygon,
+    support_rect,
+)
+from indoorgen.assets.generators.plants import loft
+from indoorgen.assets.parts import (
+    MOVING_GAP,
+    DoorJoint,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    circle_polygon,
+    cylinder,
+    lathe,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 O1 = 0.001  # 1 mm overlap between touching pieces
 

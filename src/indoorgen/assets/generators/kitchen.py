@@ -13,11 +13,17 @@ from typing import Any
 import manifold3d as m3d
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ..base import Param, Surface, register
-from ..parts import Part, bevel_box, box, box_between, cylinder, lathe, rod, torus
-from ._common import PartsFactory, bottom_rect, support_polygon, support_rect
-from ._kitchen_common import DOOR_OPEN, OVERLAP, Unit, rounded_rect_prism, unit_parts
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_polygon, support_rect
+from indoorgen.assets.generators._kitchen_common import (
+    DOOR_OPEN,
+    OVERLAP,
+    Unit,
+    rounded_rect_prism,
+    unit_parts,
+)
+from indoorgen.assets.parts import Part, bevel_box, box, box_between, cylinder, lathe, rod, torus
+from indoorgen.model.tags import Semantics as S
 
 HANDLES = ("bar", "knob", "none")
 FRONT_STYLES = ("flat", "shaker")

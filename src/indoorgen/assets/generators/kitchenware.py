@@ -15,14 +15,28 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import (DoorJoint, Part, bevel_box, box_between, cylinder, lathe, solid_union,
-                     torus)
-from ._common import PartsFactory, make_joint, support_polygon
-from .tableware_more import (SECTIONS, Vessel, cheap_cylinder, interior_floor, revolve_vessel,
-                             round_bottom)
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.generators.tableware_more import (
+    SECTIONS,
+    Vessel,
+    cheap_cylinder,
+    interior_floor,
+    revolve_vessel,
+    round_bottom,
+)
+from indoorgen.assets.parts import (
+    DoorJoint,
+    Part,
+    bevel_box,
+    box_between,
+    cylinder,
+    lathe,
+    solid_union,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 #: how far touching pieces sink into each other so that their union is one shell (m)
 SINK = 0.001

@@ -4,14 +4,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from ...tags import Semantics as S
-from ..base import Param, register
 from manifold3d import Manifold
 
-from ...tags import Subpart
-from ..parts import Part, circle_polygon, cylinder, lathe, rod
-from ._common import PartsFactory, support_polygon
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon
+from indoorgen.assets.parts import Part, circle_polygon, cylinder, lathe, rod
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 

@@ -16,11 +16,11 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import DoorJoint, Part, box_between, circle_polygon, cylinder, lathe, rod
-from ._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.parts import DoorJoint, Part, box_between, circle_polygon, cylinder, lathe, rod
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 LIGHT_SLOTS = ["metal", "shade", "glass", "emissive", "wax", "ceramic", "plastic"]

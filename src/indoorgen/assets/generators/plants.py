@@ -18,11 +18,11 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import Part, box_between, circle_polygon, cylinder, lathe
-from ._common import PartsFactory, support_polygon
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon
+from indoorgen.assets.parts import Part, box_between, circle_polygon, cylinder, lathe
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))

@@ -6,10 +6,10 @@ from typing import Any
 
 import numpy as np
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import Part, bevel_box, box, box_between, legs
-from ._common import PartsFactory, support_rect
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_rect
+from indoorgen.assets.parts import Part, bevel_box, box, box_between, legs
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002
 

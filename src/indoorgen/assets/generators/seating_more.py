@@ -14,11 +14,21 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ..base import Joint, Param, Surface, register
-from ..parts import (Part, bevel_box, box, box_between, circle_polygon, cylinder, frame, lathe,
-                     legs, torus)
-from ._common import PartsFactory, support_polygon, support_rect
+from indoorgen.assets.base import Joint, Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
+from indoorgen.assets.parts import (
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    circle_polygon,
+    cylinder,
+    frame,
+    lathe,
+    legs,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 

@@ -17,12 +17,20 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import Part, box_between, cylinder, rod
-from ._common import PartsFactory, support_rect
-from .architecture import OVERLAP, baluster, baluster_positions, handrail, hull, post, prism
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, support_rect
+from indoorgen.assets.generators.architecture import (
+    OVERLAP,
+    baluster,
+    baluster_positions,
+    handrail,
+    hull,
+    post,
+    prism,
+)
+from indoorgen.assets.parts import Part, box_between, cylinder, rod
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 RISER_MIN, RISER_MAX = 0.15, 0.20
 #: newel post size (m)

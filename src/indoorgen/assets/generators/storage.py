@@ -4,12 +4,21 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import (FRONT_PROUD, Front, Part, bevel_box, box, box_between, cabinet_fronts, carcass,
-                     legs)
-from ._common import PartsFactory, bottom_rect, make_joint, support_rect
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, bottom_rect, make_joint, support_rect
+from indoorgen.assets.parts import (
+    FRONT_PROUD,
+    Front,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    cabinet_fronts,
+    carcass,
+    legs,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002
 MIN_SHELF_CLEARANCE = 0.25  # books up to ~24 cm tall fit on every shelf

@@ -17,12 +17,29 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Joint, Param, Surface, register
-from ..parts import (MOVING_GAP, DoorJoint, Part, bevel_box, box, box_between, drawer, frame,
-                     hinged_door, legs, rod)
-from ._common import PartsFactory, bottom_rect, make_joint, support_polygon, support_rect
+from indoorgen.assets.base import Joint, Param, Surface, register
+from indoorgen.assets.generators._common import (
+    PartsFactory,
+    bottom_rect,
+    make_joint,
+    support_polygon,
+    support_rect,
+)
+from indoorgen.assets.parts import (
+    MOVING_GAP,
+    DoorJoint,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    drawer,
+    frame,
+    hinged_door,
+    legs,
+    rod,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002   # how far touching boards interpenetrate so each link is one shell
 REVEAL = 0.002    # gap left around every front (so neighbouring fronts never touch)

@@ -9,12 +9,16 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import (Part, box, box_between, circle_polygon, cylinder, lathe, legs)
-from ._common import (PartsFactory, polygon_side_surfaces, rect_side_surfaces, support_polygon,
-                      support_rect)
-from ..parts import bevel_box
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import (
+    PartsFactory,
+    polygon_side_surfaces,
+    rect_side_surfaces,
+    support_polygon,
+    support_rect,
+)
+from indoorgen.assets.parts import Part, bevel_box, box, box_between, circle_polygon, cylinder, lathe, legs
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far joined pieces interpenetrate so the union is one shell
 LEG_STYLES = ("straight", "tapered", "round")

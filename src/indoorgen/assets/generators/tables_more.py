@@ -15,14 +15,25 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import (FRONT_PROUD, Front, Part, bevel_box, box, box_between, cabinet_fronts, carcass,
-                     cylinder, lathe, legs)
-from ._common import PartsFactory, make_joint, support_polygon, support_rect
-from .seating_more import rounded_rect_polygon, rounded_slab
-from .tables import rect_table_parts
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
+from indoorgen.assets.generators.seating_more import rounded_rect_polygon, rounded_slab
+from indoorgen.assets.generators.tables import rect_table_parts
+from indoorgen.assets.parts import (
+    FRONT_PROUD,
+    Front,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    cabinet_fronts,
+    carcass,
+    cylinder,
+    lathe,
+    legs,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
 

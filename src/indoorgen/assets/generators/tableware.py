@@ -1,13 +1,11 @@
 """Tableware: lathed plates and cups (a cup is a closed solid with an open cavity)."""
 from __future__ import annotations
 
-
-
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, register
-from ..parts import Part, box_between, circle_polygon, cylinder, lathe, torus
-from ._common import PartsFactory, support_polygon
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon
+from indoorgen.assets.parts import Part, box_between, circle_polygon, cylinder, lathe, torus
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 
 @register

@@ -15,12 +15,21 @@ from typing import Any, Sequence
 import manifold3d as m3d
 import numpy as np
 
-from ...tags import Semantics as S
-from ...tags import Subpart
-from ..base import Param, Surface, register
-from ..parts import (DoorJoint, Part, bevel_box, box_between, circle_polygon, cylinder, lathe,
-                     solid_union, torus)
-from ._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.base import Param, Surface, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
+from indoorgen.assets.parts import (
+    DoorJoint,
+    Part,
+    bevel_box,
+    box_between,
+    circle_polygon,
+    cylinder,
+    lathe,
+    solid_union,
+    torus,
+)
+from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 #: lathe sections of detailed vessels (a multiple of 4: vertices on the +-X/+-Y axes)
 SECTIONS = 32

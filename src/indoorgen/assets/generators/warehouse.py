@@ -7,10 +7,10 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import Part, bevel_box, box, box_between, rod
-from ._common import PartsFactory, support_polygon, support_rect
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
+from indoorgen.assets.parts import Part, bevel_box, box, box_between, rod
+from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002
 MAX_RACK_HEIGHT = 6.0  # levels are dropped beyond this (m)

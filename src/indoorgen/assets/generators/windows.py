@@ -15,11 +15,20 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from ...tags import Semantics as S
-from ..base import Param, register
-from ..parts import DoorJoint, Part, bar_handle, box_between, rod, solid_union
-from ._common import PartsFactory, make_joint, support_polygon, support_rect
-from .architecture import (GAP, OVERLAP, casing, glazed_sash, hull, opening_surface, prism, ring)
+from indoorgen.assets.base import Param, register
+from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
+from indoorgen.assets.generators.architecture import (
+    GAP,
+    OVERLAP,
+    casing,
+    glazed_sash,
+    hull,
+    opening_surface,
+    prism,
+    ring,
+)
+from indoorgen.assets.parts import DoorJoint, Part, bar_handle, box_between, rod, solid_union
+from indoorgen.model.tags import Semantics as S
 
 #: lining board thickness (m)
 LINING = 0.015

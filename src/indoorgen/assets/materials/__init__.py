@@ -12,10 +12,20 @@ Modules: `base` (protocol, registry, bake, save_maps), `noise` (periodic buildin
 `metal`, `stone`, `tiles` (tile, brick), `textile` (fabric, leather, carpet), `surfaces`
 (ceramic, glass, plastic, rubber, cork, plaster) and `paper` (paper, wallpaper).
 """
-from . import metal, paper, stone, surfaces, textile, tiles, wood  # noqa: F401  (registers)
-from .base import (FAMILIES, MaterialGenerator, MaterialMaps, bake, get_material, material_names,
-                   materials_in_family, normal_from_height, register, save_maps)
-from .slots import SLOT_CHOICES, choose_materials
+from indoorgen.assets.materials import metal, paper, stone, surfaces, textile, tiles, wood  # noqa: F401  (registers)
+from indoorgen.assets.materials.base import (
+           FAMILIES,
+           MaterialGenerator,
+           MaterialMaps,
+           bake,
+           get_material,
+           material_names,
+           materials_in_family,
+           normal_from_height,
+           register,
+           save_maps,
+)
+from indoorgen.assets.materials.slots import SLOT_CHOICES, choose_materials
 
 __all__ = ["FAMILIES", "MaterialGenerator", "MaterialMaps", "SLOT_CHOICES", "bake",
            "choose_materials", "get_material", "material_names", "materials_in_family",

@@ -18,8 +18,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import ParameterError, UnknownGeneratorError
-from ..base import Param
+from indoorgen.assets.base import Param
+from indoorgen.errors import ParameterError, UnknownGeneratorError
 
 log = logging.getLogger(__name__)
 

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...errors import UnknownGeneratorError
-from .base import material_names
+from indoorgen.assets.materials.base import material_names
+from indoorgen.errors import UnknownGeneratorError
 
 _WOODS = {"oak": 3.0, "walnut": 2.0, "pine_planks": 1.0, "plywood": 1.0, "painted_wood": 1.5}
 _METALS = {"brushed_steel": 3.0, "chrome": 1.5, "painted_metal": 2.0, "brass": 1.0,

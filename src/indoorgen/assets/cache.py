@@ -12,7 +12,7 @@ import fcl
 import numpy as np
 import trimesh
 
-from ..assets import Asset, get_factory
+from indoorgen.assets import Asset, get_factory
 
 
 def params_key(generator: str, params: dict[str, Any]) -> tuple:

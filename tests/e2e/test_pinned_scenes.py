@@ -1,0 +1,50 @@
+"""scene.json digests pinned for fixed seeds: a refactor must not change what is generated.
+
+A change that means to alter the output regenerates the digests with
+`python tests/e2e/test_pinned_scenes.py` and says so in its commit.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+from indoorgen import GenerateConfig, HomeConfig, generate, generate_home
+
+DIGESTS = Path(__file__).resolve().parents[1] / "data" / "scene_digests.json"
+ROOM_TYPES = ("living_room", "kitchen", "bedroom")
+SEEDS = range(5)
+
+
+def scene_digest(key: str) -> str:
+    """sha256 of the scene.json generated for a key such as 'kitchen/3' or 'home2/0'."""
+    kind, seed = key.split("/")
+    if kind.startswith("home"):
+        gen = generate_home(int(seed), HomeConfig(floors=int(kind[-1])))
+    else:
+        gen = generate(int(seed), GenerateConfig(room_type=kind))
+    return hashlib.sha256(gen.scene.dumps().encode()).hexdigest()
+
+
+ROOM_KEYS = [f"{t}/{s}" for t in ROOM_TYPES for s in SEEDS]
+HOME_KEYS = [f"home{f}/{s}" for f in (1, 2) for s in SEEDS]
+
+
+@pytest.mark.parametrize("key", ROOM_KEYS)
+def test_room_scene_json_is_pinned(key):
+    assert scene_digest(key) == json.loads(DIGESTS.read_text())[key]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", HOME_KEYS)
+def test_home_scene_json_is_pinned(key):
+    assert scene_digest(key) == json.loads(DIGESTS.read_text())[key]
+
+
+if __name__ == "__main__":
+    digests = {k: scene_digest(k) for k in ROOM_KEYS + HOME_KEYS}
+    DIGESTS.write_text(json.dumps(digests, indent=1, sort_keys=True) + "\n")
+    sys.exit(0)
