@@ -10,7 +10,6 @@ box, front facing +X.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Iterable
 
@@ -308,8 +307,3 @@ def factories_with(tags: Iterable[Semantics], without: Iterable[Semantics] = ())
     _ensure_loaded()
     need, avoid = set(tags), set(without)
     return sorted(n for n, c in _REGISTRY.items() if need <= c.tags and not (avoid & c.tags))
-
-
-def yaw_matrix(yaw: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])

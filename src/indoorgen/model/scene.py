@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from indoorgen.model.frames import yaw_matrix
+
 SCENE_FORMAT_VERSION = 1
 
 
@@ -39,8 +41,8 @@ class Pose:
         return m
 
     def rotation(self) -> np.ndarray:
-        c, s = math.cos(self.yaw), math.sin(self.yaw)
-        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+        """3x3 rotation of this pose (about +Z)."""
+        return yaw_matrix(self.yaw)
 
     def apply(self, points: np.ndarray) -> np.ndarray:
         """Transform local points (N,3) to world."""

@@ -20,9 +20,10 @@ from indoorgen.assets import factories_with, get_factory
 from indoorgen.constraints.bounds import STAGE_ORDER, Bound, find_bounds, term_stage
 from indoorgen.constraints.evaluator import Evaluator, Result
 from indoorgen.constraints.expressions import Problem
+from indoorgen.model.frames import yaw_matrix
 from indoorgen.rng import child_seed
 from indoorgen.solver.placement import placements_hold, sample_point, solve_pose
-from indoorgen.solver.state import ObjState, Placement, State, rotation
+from indoorgen.solver.state import ObjState, Placement, State
 
 log = logging.getLogger(__name__)
 
@@ -123,7 +124,7 @@ class Annealer:
             if res is None:
                 return []
             if abs(res[1] - yaw) > 1e-9:  # a wall or table side fixed the yaw: aim again
-                res = solve_pose(st, ob.asset, ob.placements, q - rotation(res[1]) @ child.origin,
+                res = solve_pose(st, ob.asset, ob.placements, q - yaw_matrix(res[1]) @ child.origin,
                                  res[1])
                 if res is None:
                     return []
@@ -241,7 +242,7 @@ class Annealer:
         moved = [name]
         rest = st.descendants(name)
         if rest:
-            turn = rotation(yaw - old_yaw)
+            turn = yaw_matrix(yaw - old_yaw)
             for d in rest:
                 child = st.objects[d]
                 st.set_pose(d, turn @ (child.position - old_pos) + np.asarray(position, float),

@@ -11,7 +11,8 @@ import logging
 import fcl
 
 from indoorgen.assets.cache import mesh_bvh
-from indoorgen.solver.state import State, rotation
+from indoorgen.model.frames import yaw_matrix
+from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 
@@ -31,7 +32,7 @@ def full_mesh_check(state: State) -> list[str]:
             removed.append(n)
             continue
         full = state.cache.full(ob.generator, ob.params)
-        co = fcl.CollisionObject(mesh_bvh(full.mesh), fcl.Transform(rotation(ob.yaw), ob.position))
+        co = fcl.CollisionObject(mesh_bvh(full.mesh), fcl.Transform(yaw_matrix(ob.yaw), ob.position))
         data = fcl.CollisionData(request=fcl.CollisionRequest())
         manager.collide(co, data, fcl.defaultCollisionCallback)
         if data.result.is_collision:

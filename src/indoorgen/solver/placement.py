@@ -17,7 +17,8 @@ import shapely.geometry as sg
 
 from indoorgen.assets import Asset, Surface
 from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst
-from indoorgen.solver.state import Placement, State, rotation
+from indoorgen.model.frames import yaw_matrix
+from indoorgen.solver.state import Placement, State
 
 
 @dataclass(frozen=True)
@@ -64,7 +65,7 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
         rows.append((ps.normal, float(np.dot(ps.origin, ps.normal)) + offset, cs.origin))
     if fixed_yaw is not None:
         yaw = math.atan2(math.sin(fixed_yaw), math.cos(fixed_yaw))
-    r = rotation(yaw)
+    r = yaw_matrix(yaw)
     if not rows:
         return np.asarray(position, float), yaw, DoF(np.eye(3), True)
     n = np.array([row[0] for row in rows])
@@ -103,7 +104,7 @@ def placements_hold(state: State, name: str, tol: float = 1e-4) -> bool:
     """Does each of the object's relations hold geometrically: no overhang where the relation
     forbids it, and the child's centroid over the parent surface otherwise?"""
     ob = state.objects[name]
-    r = rotation(ob.yaw)
+    r = yaw_matrix(ob.yaw)
     for p in ob.placements:
         parent = state.surface_world(p.parent, p.parent_surface)
         child = ob.asset.surface(p.child_surface).transformed(r, ob.position)

@@ -20,6 +20,7 @@ from indoorgen.assets import Asset, Surface
 from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh
 from indoorgen.constraints.relations import Relation
 from indoorgen.floorplan.room import RoomGeometry
+from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Semantics
 from indoorgen.solver.broadphase import Broadphase, world_boxes
 
@@ -57,11 +58,6 @@ class ObjState:
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
     #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
     boxes: np.ndarray | None = None
-
-
-def rotation(yaw: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 class State:
@@ -128,7 +124,7 @@ class State:
         def f():
             ob = self.objects[o]
             b = ob.asset.mesh.bounds
-            return rotation(ob.yaw) @ ((b[0] + b[1]) / 2) + ob.position
+            return yaw_matrix(ob.yaw) @ ((b[0] + b[1]) / 2) + ob.position
         return self._cached(o, "center", f)
 
     def front(self, o: str) -> np.ndarray:
@@ -148,7 +144,7 @@ class State:
             return self.center(o)
         ob = self.objects[o]
         b = ob.asset.mesh.bounds
-        return rotation(ob.yaw) @ np.array([b[1][0], 0.0, (b[0][2] + b[1][2]) / 2]) + ob.position
+        return yaw_matrix(ob.yaw) @ np.array([b[1][0], 0.0, (b[0][2] + b[1][2]) / 2]) + ob.position
 
     def floor_z(self, o: str) -> float:
         """Height of the floor of the room `o` is in (or is): a home's upper storeys stand
@@ -174,7 +170,7 @@ class State:
         def f():
             ob = self.objects[o]
             hull = self.cache.hull_2d(ob.generator, ob.params)
-            r = rotation(ob.yaw)[:2, :2]
+            r = yaw_matrix(ob.yaw)[:2, :2]
             return sg.Polygon(hull @ r.T + ob.position[:2])
         return self._cached(o, "footprint", f)
 
@@ -188,7 +184,7 @@ class State:
             ob = self.objects[o]
             m = ob.asset.mesh.copy()
             t = np.eye(4)
-            t[:3, :3] = rotation(ob.yaw)
+            t[:3, :3] = yaw_matrix(ob.yaw)
             t[:3, 3] = ob.position
             m.apply_transform(t)
             return m
@@ -210,22 +206,22 @@ class State:
         if o in self.rooms:
             return list(self._room_surfaces[o].values())
         ob = self.objects[o]
-        r = rotation(ob.yaw)
+        r = yaw_matrix(ob.yaw)
         return [s.transformed(r, ob.position) for s in ob.asset.surfaces]
 
     def surface_world(self, o: str, name: str) -> Surface:
         if o in self.rooms:
             return self._room_surfaces[o][name]
         ob = self.objects[o]
-        return ob.asset.surface(name).transformed(rotation(ob.yaw), ob.position)
+        return ob.asset.surface(name).transformed(yaw_matrix(ob.yaw), ob.position)
 
     # -- mutation ---------------------------------------------------------------------------
     def _transform(self, ob: ObjState) -> fcl.Transform:
-        return fcl.Transform(rotation(ob.yaw), np.asarray(ob.position, float))
+        return fcl.Transform(yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
     def _boxes(self, ob: ObjState) -> np.ndarray:
         """World boxes of the object's collision pieces at its current pose."""
-        return world_boxes(ob.boxes, rotation(ob.yaw), np.asarray(ob.position, float))
+        return world_boxes(ob.boxes, yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
     def _register(self, ob: ObjState) -> None:
         tf = self._transform(ob)
