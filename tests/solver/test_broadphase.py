@@ -8,8 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from indoorgen.assets.cache import convex_shape, mesh_bvh
+from indoorgen.model.frames import yaw_matrix as rotation
 from indoorgen.solver.broadphase import Broadphase, world_boxes
-from indoorgen.solver.state import rotation
 
 
 def _pieces(rng: np.random.Generator) -> list[trimesh.Trimesh]:
