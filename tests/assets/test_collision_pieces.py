@@ -2,7 +2,8 @@
 a lid's skirt in its pot), so a simulator can open them."""
 from __future__ import annotations
 
-from indoorgen.assets.parts import Part, box_between, convex_pieces, cylinder
+from indoorgen.assets.shapes.collision import convex_pieces
+from indoorgen.assets.shapes.primitives import Part, box_between, cylinder
 
 
 def _overlap(a, b) -> float:

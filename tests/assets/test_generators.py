@@ -10,7 +10,7 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets.base import Param, factory_names, get_factory
-from indoorgen.assets.parts import union
+from indoorgen.assets.shapes.mesh import union
 from indoorgen.errors import ParameterError
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, inert_params, sample_polygon, to_local
@@ -308,7 +308,7 @@ def test_cup_is_hollow():
 
 
 def test_union_keeps_part_slots():
-    from indoorgen.assets.parts import Part, box
+    from indoorgen.assets.shapes.primitives import Part, box
 
     parts = [Part(box((1, 1, 1), (0, 0, 0.5)), "wood"), Part(box((0.2, 0.2, 2), (0, 0, 1)), "metal")]
     mesh, fs, slots = union(parts)

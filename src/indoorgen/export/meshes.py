@@ -8,7 +8,7 @@ import numpy as np
 import trimesh
 
 from indoorgen.assets.base import Asset
-from indoorgen.assets.parts import box_uv
+from indoorgen.assets.shapes.mesh import box_uv
 
 #: corners whose vertex normal deviates more than this from the face normal get the face normal
 CREASE_DEG = 35.0

@@ -15,21 +15,18 @@ import shapely
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Joint, Surface
-from indoorgen.assets.generators._common import make_joint
-from indoorgen.assets.parts import (  # noqa: F401 - the appliance generators' motions
+from indoorgen.assets.parts_factory import make_joint
+from indoorgen.assets.shapes.frames import carcass, frame
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import (
     MOVING_GAP,
     DoorJoint,
     Front,
-    Part,
-    box_between,
-    carcass,
-    frame,
     hinge_motion,
     knob,
-    rod,
     slide_motion,
-    solid_union,
 )
+from indoorgen.assets.shapes.primitives import Part, box_between, rod
 from indoorgen.model.tags import Subpart
 
 OVERLAP = 0.002

@@ -15,7 +15,6 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_rect
 from indoorgen.assets.generators._kitchen_common import (
     HANDLE_PROUD,
     OVERLAP,
@@ -30,7 +29,10 @@ from indoorgen.assets.generators._kitchen_common import (
     window_leaf,
     wire_rack,
 )
-from indoorgen.assets.parts import MOVING_GAP, DoorJoint, Part, bevel_box, box_between, cylinder
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 
 #: insulated wall thickness of cold appliances (m)

@@ -11,7 +11,6 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_polygon, support_rect
 from indoorgen.assets.generators._kitchen_common import (
     OVERLAP,
     back_surface,
@@ -27,17 +26,11 @@ from indoorgen.assets.generators._kitchen_common import (
     window_leaf,
     wire_rack,
 )
-from indoorgen.assets.parts import (
-    MOVING_GAP,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    cylinder,
-    knob,
-    lathe,
-    solid_union,
-)
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, knob
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
 #: per burner count: burners (u, v, size class) and their grate cells (u0, u1, v0, v1), in

@@ -6,7 +6,6 @@ from typing import Any
 import manifold3d as m3d
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_rect
 from indoorgen.assets.generators._kitchen_common import (
     OVERLAP,
     hinge_motion,
@@ -14,7 +13,10 @@ from indoorgen.assets.generators._kitchen_common import (
     open_shell,
     slide_motion,
 )
-from indoorgen.assets.parts import MOVING_GAP, Part, box, box_between, cylinder, lathe, rod
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP
+from indoorgen.assets.shapes.primitives import Part, box, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
 

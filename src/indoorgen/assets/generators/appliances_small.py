@@ -8,7 +8,6 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
 from indoorgen.assets.generators._kitchen_common import (
     OVERLAP,
     hinge_motion,
@@ -16,16 +15,10 @@ from indoorgen.assets.generators._kitchen_common import (
     pull_bar,
     window_leaf,
 )
-from indoorgen.assets.parts import (
-    MOVING_GAP,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    circle_polygon,
-    cylinder,
-    knob,
-)
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, knob
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, circle_polygon, cylinder
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -24,7 +24,8 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Surface
-from indoorgen.assets.parts import Part, bevel_box, box, box_between, lathe, rod, solid_union
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, lathe, rod
 from indoorgen.model.tags import Subpart
 
 #: how far touching pieces overlap so that each link unions into one shell (m)

@@ -18,21 +18,12 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
-from indoorgen.assets.parts import (
-    FRONT_PROUD,
-    MOVING_GAP,
-    Front,
-    Part,
-    box_between,
-    cabinet_fronts,
-    carcass,
-    circle_polygon,
-    cylinder,
-    lathe,
-    legs,
-    solid_union,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import carcass, legs
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, MOVING_GAP, Front, cabinet_fronts
+from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -14,9 +14,12 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_rect
 from indoorgen.assets.generators.bathroom import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
-from indoorgen.assets.parts import Front, Part, box_between, cabinet_fronts, carcass
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import carcass
+from indoorgen.assets.shapes.moving_parts import Front, cabinet_fronts
+from indoorgen.assets.shapes.primitives import Part, box_between
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

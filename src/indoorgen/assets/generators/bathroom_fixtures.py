@@ -13,7 +13,6 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
 from indoorgen.assets.generators.bathroom import (
     FIXTURE_MATERIALS,
     GAP,
@@ -31,7 +30,10 @@ from indoorgen.assets.generators.bathroom import (
     prim_solid,
     rounded_rect,
 )
-from indoorgen.assets.parts import DoorJoint, Part, box_between, cylinder, lathe, rod
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -14,9 +14,12 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_rect
 from indoorgen.assets.generators.seating_more import rod_between
-from indoorgen.assets.parts import FRONT_PROUD, DoorJoint, Part, bevel_box, box_between, drawer, solid_union
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell

@@ -17,9 +17,10 @@ import shapely.affinity as sa
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon
 from indoorgen.assets.generators.books import Book
-from indoorgen.assets.parts import Part
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -15,22 +15,21 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
-from indoorgen.assets.parts import (
-    FRONT_PROUD,
-    Front,
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import carcass
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.primitives import (
     Part,
     bevel_box,
     box,
     box_between,
-    cabinet_fronts,
-    carcass,
     circle_polygon,
     cylinder,
     lathe,
     rod,
     torus,
 )
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

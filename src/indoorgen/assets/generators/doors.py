@@ -15,7 +15,6 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint
 from indoorgen.assets.generators.architecture import (
     GAP,
     GLASS,
@@ -28,17 +27,10 @@ from indoorgen.assets.generators.architecture import (
     round_knob,
     slab,
 )
-from indoorgen.assets.parts import (
-    DoorJoint,
-    Part,
-    bar_handle,
-    box,
-    box_between,
-    hinge_motion,
-    rod,
-    solid_union,
-    torus,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle, hinge_motion
+from indoorgen.assets.shapes.primitives import Part, box, box_between, rod, torus
 from indoorgen.model.tags import Semantics as S
 
 #: how far a handle's front stands off the leaf face (m)

@@ -2,8 +2,8 @@
 from __future__ import annotations
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory
-from indoorgen.assets.parts import Part, bevel_box, box, box_between
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002

@@ -16,7 +16,6 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_rect
 from indoorgen.assets.generators.tableware_more import (
     SECTIONS,
     bowl_base_radius,
@@ -26,7 +25,10 @@ from indoorgen.assets.generators.tableware_more import (
     round_bottom,
     solid_revolve,
 )
-from indoorgen.assets.parts import Part, bevel_box, box_between, cylinder, lathe, rod, solid_union
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
 #: how far touching pieces sink into each other so that their union is one shell (m)

@@ -15,17 +15,10 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Joint, Param, register
-from indoorgen.assets.generators._common import (
-    PartsFactory,
-    bottom_rect,
-    make_joint,
-    support_polygon,
-    support_rect,
-)
 from indoorgen.assets.generators.plants import loft
-from indoorgen.assets.parts import (
-    MOVING_GAP,
-    DoorJoint,
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.primitives import (
     Part,
     bevel_box,
     box,
@@ -35,6 +28,7 @@ from indoorgen.assets.parts import (
     lathe,
     torus,
 )
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

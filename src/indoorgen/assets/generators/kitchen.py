@@ -14,7 +14,6 @@ import manifold3d as m3d
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, bottom_rect, support_polygon, support_rect
 from indoorgen.assets.generators._kitchen_common import (
     DOOR_OPEN,
     OVERLAP,
@@ -22,7 +21,9 @@ from indoorgen.assets.generators._kitchen_common import (
     rounded_rect_prism,
     unit_parts,
 )
-from indoorgen.assets.parts import Part, bevel_box, box, box_between, cylinder, lathe, rod, torus
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe, rod, torus
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
 HANDLES = ("bar", "knob", "none")

@@ -16,7 +16,6 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
 from indoorgen.assets.generators.tableware_more import (
     SECTIONS,
     Vessel,
@@ -25,16 +24,11 @@ from indoorgen.assets.generators.tableware_more import (
     revolve_vessel,
     round_bottom,
 )
-from indoorgen.assets.parts import (
-    DoorJoint,
-    Part,
-    bevel_box,
-    box_between,
-    cylinder,
-    lathe,
-    solid_union,
-    torus,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, torus
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -7,8 +7,9 @@ import numpy as np
 from manifold3d import Manifold
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon
-from indoorgen.assets.parts import Part, circle_polygon, cylinder, lathe, rod
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

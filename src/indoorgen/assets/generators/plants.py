@@ -19,8 +19,9 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon
-from indoorgen.assets.parts import Part, box_between, circle_polygon, cylinder, lathe
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -7,8 +7,10 @@ from typing import Any
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_rect
-from indoorgen.assets.parts import Part, bevel_box, box, box_between, legs
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.frames import legs
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002

@@ -15,19 +15,19 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Joint, Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
-from indoorgen.assets.parts import (
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.frames import frame, legs
+from indoorgen.assets.shapes.primitives import (
     Part,
     bevel_box,
     box,
     box_between,
     circle_polygon,
     cylinder,
-    frame,
     lathe,
-    legs,
     torus,
 )
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell

@@ -18,7 +18,6 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, support_rect
 from indoorgen.assets.generators.architecture import (
     OVERLAP,
     baluster,
@@ -28,7 +27,9 @@ from indoorgen.assets.generators.architecture import (
     post,
     prism,
 )
-from indoorgen.assets.parts import Part, box_between, cylinder, rod
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, rod
+from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -5,18 +5,11 @@ import math
 from typing import Any
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, bottom_rect, make_joint, support_rect
-from indoorgen.assets.parts import (
-    FRONT_PROUD,
-    Front,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    cabinet_fronts,
-    carcass,
-    legs,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import carcass, legs
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

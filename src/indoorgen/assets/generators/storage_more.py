@@ -18,26 +18,11 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Joint, Param, Surface, register
-from indoorgen.assets.generators._common import (
-    PartsFactory,
-    bottom_rect,
-    make_joint,
-    support_polygon,
-    support_rect,
-)
-from indoorgen.assets.parts import (
-    MOVING_GAP,
-    DoorJoint,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    drawer,
-    frame,
-    hinged_door,
-    legs,
-    rod,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import frame, legs
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, drawer, hinged_door
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -10,14 +10,23 @@ import math
 from typing import Any
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import (
-    PartsFactory,
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.frames import legs
+from indoorgen.assets.shapes.primitives import (
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    circle_polygon,
+    cylinder,
+    lathe,
+)
+from indoorgen.assets.shapes.surfaces import (
     polygon_side_surfaces,
     rect_side_surfaces,
     support_polygon,
     support_rect,
 )
-from indoorgen.assets.parts import Part, bevel_box, box, box_between, circle_polygon, cylinder, lathe, legs
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002  # how far joined pieces interpenetrate so the union is one shell

@@ -16,22 +16,13 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
 from indoorgen.assets.generators.seating_more import rounded_rect_polygon, rounded_slab
 from indoorgen.assets.generators.tables import rect_table_parts
-from indoorgen.assets.parts import (
-    FRONT_PROUD,
-    Front,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    cabinet_fronts,
-    carcass,
-    cylinder,
-    lathe,
-    legs,
-)
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.frames import carcass, legs
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

@@ -16,18 +16,19 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon
-from indoorgen.assets.parts import (
-    DoorJoint,
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.primitives import (
     Part,
     bevel_box,
     box_between,
     circle_polygon,
     cylinder,
     lathe,
-    solid_union,
     torus,
 )
+from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 

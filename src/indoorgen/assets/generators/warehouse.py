@@ -8,8 +8,9 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, support_polygon, support_rect
-from indoorgen.assets.parts import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
 OVERLAP = 0.002

@@ -16,7 +16,6 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._common import PartsFactory, make_joint, support_polygon, support_rect
 from indoorgen.assets.generators.architecture import (
     GAP,
     OVERLAP,
@@ -27,7 +26,11 @@ from indoorgen.assets.generators.architecture import (
     prism,
     ring,
 )
-from indoorgen.assets.parts import DoorJoint, Part, bar_handle, box_between, rod, solid_union
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle
+from indoorgen.assets.shapes.primitives import Part, box_between, rod
+from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
 #: lining board thickness (m)
