@@ -10,7 +10,7 @@ import trimesh
 
 from indoorgen.errors import IndoorGenError
 from indoorgen.export import parse_formats, write_formats
-from indoorgen.export.command import export_scene
+from indoorgen.export.scene_files import export_scene
 
 CLI = [sys.executable, "-m", "indoorgen.cli"]
 

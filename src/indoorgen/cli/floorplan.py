@@ -3,16 +3,24 @@
 directory renamed into place when complete)."""
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 import time
 from pathlib import Path
 
 from indoorgen.errors import ConfigError
+from indoorgen.floorplan.draw import draw_floorplan
+from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
+from indoorgen.floorplan.io import read_floorplan, write_floorplan
+from indoorgen.floorplan.solidify import solidify
+from indoorgen.floorplan.solve import AnnealConfig
+from indoorgen.floorplan.usd import write_architecture_usd
+from indoorgen.floorplan.walls import WallThickness
 from indoorgen.outputs import atomic_dir, check_writable
 
 
-def add_floorplan_parser(subparsers) -> None:
+def add_parser(subparsers: argparse._SubParsersAction) -> None:
     """Register the `floorplan` subcommand on an argparse subparsers object."""
     p = subparsers.add_parser(
         "floorplan", help="generate a multi-room, multi-storey home's floorplan and architecture",
@@ -54,15 +62,8 @@ def _read_contour(path: str) -> list:
     return data
 
 
-def run_floorplan(args) -> int:
+def run_floorplan(args: argparse.Namespace) -> int:
     """The command: validate arguments, generate or read, solidify, write, report one line."""
-    from indoorgen.floorplan.draw import draw_floorplan
-    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
-    from indoorgen.floorplan.io import read_floorplan, write_floorplan
-    from indoorgen.floorplan.solidify import solidify
-    from indoorgen.floorplan.solve import AnnealConfig
-    from indoorgen.floorplan.usd import write_architecture_usd
-    from indoorgen.floorplan.walls import WallThickness
 
     t0 = time.perf_counter()
     if args.seed < 0:

@@ -1,0 +1,6 @@
+"""`python -m indoorgen.cli`: the same as the `indoorgen` command."""
+import sys
+
+from indoorgen.cli import main
+
+sys.exit(main())

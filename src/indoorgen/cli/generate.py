@@ -1,0 +1,117 @@
+"""`indoorgen generate`: a furnished home, or one room, into a directory."""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+from indoorgen.constraints.expressions import Problem
+from indoorgen.errors import ConfigError, IndoorGenError
+from indoorgen.export import parse_formats
+from indoorgen.outputs import check_writable
+from indoorgen.pipeline import GenerateConfig, HomeConfig, generate, generate_home, write_scene_dir
+
+
+def add_parser(subparsers: argparse._SubParsersAction) -> None:
+    """Register `generate` on the top-level subparsers."""
+    g = subparsers.add_parser("generate", help="generate a furnished home (or one room) into a directory")
+    g.add_argument("--seed", type=int, default=0)
+    home = g.add_argument_group("a whole home (the default)")
+    home.add_argument("--floors", type=int, help="storeys, 1-3 (default 1)")
+    home.add_argument("--rooms", help="room counts, e.g. bedroom=2,bathroom=1")
+    home.add_argument("--area", type=float, help="ground-floor area in m^2")
+    home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
+    g.add_argument("--room",
+                   help="one room of this type instead of a home: living_room, dining_room, "
+                        "bedroom, kitchen, bathroom, office, closet, hallway, utility, "
+                        "staircase_room, garage, balcony, warehouse")
+    g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
+    g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
+    g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")
+    g.add_argument("--out", help="output directory (default ./scene_SEED)")
+    g.add_argument("--usd-format", choices=["usda", "usdc"], default="usdc",
+                   help="binary .usdc (default) or text .usda")
+    g.add_argument("--formats", default="usd,urdf,mjcf",
+                   help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
+    g.add_argument("--check", action="store_true",
+                   help="verify incremental constraint evaluation against full (slow)")
+    g.add_argument("-q", "--quiet", action="store_true")
+    g.set_defaults(func=run_generate)
+
+
+def _load_program(spec: str) -> Callable[..., Problem]:
+    """`path/to/file.py:function` -> the function (a user's own constraint program)."""
+    path, _, func = spec.partition(":")
+    if not func or not Path(path).is_file():
+        raise ConfigError(f"--program {spec!r}: expected FILE.py:FUNCTION with an existing file")
+    mod_spec = importlib.util.spec_from_file_location(Path(path).stem, path)
+    mod = importlib.util.module_from_spec(mod_spec)
+    try:
+        mod_spec.loader.exec_module(mod)
+    except IndoorGenError:
+        raise
+    except Exception as e:  # a user's file that does not import
+        raise ConfigError(f"--program {spec!r} failed to load: {type(e).__name__}: {e}") from None
+    fn = getattr(mod, func, None)
+    if not callable(fn):
+        raise ConfigError(f"--program {spec!r}: {path} has no function {func!r}")
+    return fn
+
+
+def run_generate(args: argparse.Namespace) -> int:
+    """`indoorgen generate`: a furnished home (default) or one room, written atomically."""
+    out = Path(args.out or f"scene_{args.seed}")
+    check_writable(out)
+    formats = parse_formats(args.formats)
+    if args.seed < 0:
+        raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    progress = not args.quiet and sys.stderr.isatty()
+    room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
+    home_opts = [o for o in ("floors", "rooms", "area", "floorplan")
+                 if getattr(args, o) is not None]
+    if room_opts and home_opts:
+        raise ConfigError(f"--{room_opts[0]} makes a single room and --{home_opts[0]} a whole "
+                          "home; give options of one kind only")
+    if room_opts:
+        gen = generate(args.seed, _room_config(args), progress=progress)
+    else:
+        gen = generate_home(args.seed, _home_config(args), progress=progress)
+    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats)
+    if not args.quiet:
+        rep = gen.report
+        viol = sum(r["n_violated"] for r in rep["rooms"].values())
+        print(f"{out}: {len(gen.scene.rooms)} room(s), {rep['objects']} objects, {viol} hard "
+              f"constraints violated, {rep['timings_s']['total']:.2f} s")
+    return 0
+
+
+def _room_config(args: argparse.Namespace) -> GenerateConfig:
+    cfg = GenerateConfig(room_type=args.room or "living_room",
+                         size=tuple(args.size) if args.size else None,
+                         program=_load_program(args.program) if args.program else None,
+                         check=args.check)
+    if args.polygon:
+        try:
+            cfg.polygon = [tuple(map(float, p)) for p in json.loads(args.polygon)]
+        except (ValueError, TypeError):
+            raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
+                              f"{args.polygon!r}") from None
+    return cfg
+
+
+def _home_config(args: argparse.Namespace) -> HomeConfig:
+    plan = None
+    if args.floorplan:
+        try:
+            plan = json.loads(Path(args.floorplan).read_text())
+        except FileNotFoundError:
+            raise ConfigError(f"--floorplan {args.floorplan}: no such file") from None
+        except (ValueError, OSError) as e:
+            raise ConfigError(f"--floorplan {args.floorplan} is not a floorplan.json "
+                              f"({type(e).__name__}: {e})") from None
+    return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
+                      area=args.area,
+                      floorplan=plan, check=args.check)
