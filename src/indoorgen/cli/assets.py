@@ -13,6 +13,7 @@ import numpy as np
 from tqdm import tqdm
 
 from indoorgen.assets import AssetFactory, factory_names, get_factory
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.errors import ParameterError
 from indoorgen.export.asset_file import ASSET_EXTENSIONS, write_asset
 from indoorgen.outputs import atomic_file
@@ -45,7 +46,7 @@ def add_parsers(subparsers: argparse._SubParsersAction) -> None:
 
 def run_list(args: argparse.Namespace) -> int:
     """`indoorgen assets list`: every generator, its tags, parameters and joints."""
-    rows = []
+    rows: list[dict[str, Any]] = []
     for n in factory_names():
         f = get_factory(n)
         joints = _joint_names(f)
@@ -65,6 +66,8 @@ def run_list(args: argparse.Namespace) -> int:
 def _joint_names(factory: AssetFactory) -> list[str]:
     """The joint kinds a generator can have: the union over 12 sampled parameter sets of
     its joints' names with the numbers stripped (door_0_joint, door_1_joint -> door_joint)."""
+    if not isinstance(factory, PartsFactory):
+        return []
     names: set[str] = set()
     for seed in range(12):
         p = factory.resolve(factory.sample_params(np.random.default_rng(seed)))

@@ -48,6 +48,8 @@ def _load_program(spec: str) -> Callable[..., Problem]:
     if not func or not Path(path).is_file():
         raise ConfigError(f"--program {spec!r}: expected FILE.py:FUNCTION with an existing file")
     mod_spec = importlib.util.spec_from_file_location(Path(path).stem, path)
+    if mod_spec is None or mod_spec.loader is None:
+        raise ConfigError(f"--program {spec!r}: {path} is not a loadable Python file")
     mod = importlib.util.module_from_spec(mod_spec)
     try:
         mod_spec.loader.exec_module(mod)
@@ -95,7 +97,7 @@ def _room_config(args: argparse.Namespace) -> GenerateConfig:
                          check=args.check)
     if args.polygon:
         try:
-            cfg.polygon = [tuple(map(float, p)) for p in json.loads(args.polygon)]
+            cfg.polygon = [(float(x), float(y)) for x, y in json.loads(args.polygon)]
         except (ValueError, TypeError):
             raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
                               f"{args.polygon!r}") from None
