@@ -24,8 +24,8 @@ from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.common import at_table, on_floor
 from indoorgen.solver.anneal import AnnealConfig, Annealer
-from indoorgen.solver.greedy import make_namer
 from indoorgen.solver.placement import solve_pose
+from indoorgen.solver.stages import make_namer
 from indoorgen.solver.state import ObjState, Placement, State
 
 
