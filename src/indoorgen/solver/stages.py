@@ -3,7 +3,7 @@ medium, then the small; each stage sees earlier stages' objects as fixed."""
 from __future__ import annotations
 
 import logging
-from typing import Callable
+from collections.abc import Callable
 
 from tqdm import tqdm
 
