@@ -85,7 +85,7 @@ class MoveOutcome:
 
 
 #: a move: applies one proposal to the context's state, or returns None (nothing changed)
-MoveFn = Callable[[MoveContext], "MoveOutcome | None"]
+MoveFn = Callable[[MoveContext], MoveOutcome | None]
 
 
 # -- shared steps of the moves ------------------------------------------------------------------
@@ -108,11 +108,6 @@ def _pick_placement(ctx: MoveContext, ob: ObjState) -> tuple[int, Placement]:
 def _surface_names(state: State, o: str, role: Subpart | None) -> list[str]:
     """Names of the surfaces of `o` (a room or an object) that play `role`."""
     return [s.name for s in state.surfaces(o) if s.subpart == role]
-
-
-def _valid(state: State, name: str) -> bool:
-    """The object's relations hold and it collides with nothing."""
-    return placements_hold(state, name) and not state.collides(name)
 
 
 def _valid_group(state: State, names: list[str]) -> bool:
@@ -369,7 +364,7 @@ def resample(ctx: MoveContext) -> MoveOutcome | None:
         undo()
         return None
     st.set_pose(name, res[0], res[1])
-    if not _valid(st, name):
+    if not _valid_group(st, [name]):
         undo()
         return None
     return MoveOutcome(changed=(name,), undo=undo)
