@@ -24,14 +24,15 @@ from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.common import at_table, on_floor
 from indoorgen.solver.anneal import AnnealConfig, Annealer
-from indoorgen.solver.greedy import make_namer
 from indoorgen.solver.placement import solve_pose
+from indoorgen.solver.stages import make_namer
 from indoorgen.solver.state import ObjState, Placement, State
 
 
 def end_to_end(seeds: int, room: str) -> None:
     print(f"== {room}: end to end, {seeds} seeds ==")
-    print(f"{'seed':>4} {'large':>7} {'medium':>7} {'small':>7} {'total':>7} {'steps/s':>8} {'objects':>7} {'violated':>8}")
+    print(f"{'seed':>4} {'large':>7} {'medium':>7} {'small':>7} {'total':>7} {'steps/s':>8} "
+          f"{'objects':>7} {'violated':>8}")
     totals = []
     for seed in range(seeds):
         t0 = time.perf_counter()
@@ -127,7 +128,7 @@ def main() -> None:
         for n in runs:
             runs[n].append(step_cost(n, a.steps))
     rows = [sorted(r, key=lambda x: x[1])[len(r) // 2] for r in runs.values()]
-    for (n, ms, rec), r in zip(rows, runs.values()):
+    for (n, ms, rec), r in zip(rows, runs.values(), strict=True):
         spread = ", ".join(f"{x[1]:.2f}" for x in r)
         print(f"{n:>4} objects: {ms:.3f} ms/step ({spread}), {rec:.1f} nodes re-evaluated/step")
     print(f"ratio 300 vs 30: {rows[1][1] / rows[0][1]:.2f}x")

@@ -27,8 +27,8 @@ from indoorgen.outputs import atomic_dir
 from indoorgen.programs import get_program
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
-from indoorgen.solver.finalize import full_mesh_check
-from indoorgen.solver.greedy import solve
+from indoorgen.solver.full_mesh import full_mesh_check
+from indoorgen.solver.stages import solve
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)

@@ -63,7 +63,7 @@ def test_existing_object_solver_furnishes_an_upper_storey_room():
     from indoorgen.floorplan.solidify import solidify
     from indoorgen.model.tags import Semantics
     from indoorgen.programs import get_program
-    from indoorgen.solver.greedy import solve
+    from indoorgen.solver.stages import solve
     from indoorgen.solver.state import State
 
     fp = generate_floorplan(1, FloorplanConfig(floors=2,

@@ -80,6 +80,6 @@ def test_world_boxes_contain_the_posed_pieces():
         meshes = _pieces(rng)
         r, t = rotation(rng.uniform(-np.pi, np.pi)), rng.uniform(-3, 3, 3)
         boxes = world_boxes(np.array([m.bounds for m in meshes]), r, t)
-        for m, b in zip(meshes, boxes):
+        for m, b in zip(meshes, boxes, strict=True):
             v = m.vertices @ r.T + t
             assert np.all(v >= b[:3] - 1e-9) and np.all(v <= b[3:] + 1e-9)

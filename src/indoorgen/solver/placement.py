@@ -10,15 +10,25 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import TypeAlias, cast
 
 import numpy as np
 import shapely
 import shapely.geometry as sg
 
 from indoorgen.assets import Asset, Surface
-from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst
+from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, Relation, StableAgainst
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.solver.state import Placement, State
+
+#: the relations a placement holds: each pins a child surface to a parent plane
+PlanarRelation: TypeAlias = StableAgainst | CoPlanar
+
+
+def planar(relation: Relation) -> PlanarRelation:
+    """A placement's relation as the planar relation it is (the bounds hand relations over
+    untyped; only planar ones ever become placements)."""
+    return cast(PlanarRelation, relation)
 
 
 @dataclass(frozen=True)
@@ -27,13 +37,6 @@ class DoF:
 
     projection: np.ndarray
     rotates: bool
-
-
-def plane_key(s: Surface, ndigits: int = 4) -> tuple:
-    """A hashable key of the plane a surface lies in (normal and offset, rounded), so that
-    coplanar surfaces of different objects can be found by dictionary lookup."""
-    n = np.round(s.normal, ndigits) + 0.0
-    return (*n.tolist(), round(float(np.dot(s.normal, s.origin)), ndigits))
 
 
 def _angle_diff(a: float, b: float) -> float:
@@ -61,7 +64,8 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
                 fixed_yaw = y
             elif _angle_diff(fixed_yaw, y) > 1e-6:
                 return None
-        offset = p.relation.margin + (CONTACT_GAP if isinstance(p.relation, StableAgainst) else 0.0)
+        gap = CONTACT_GAP if isinstance(p.relation, StableAgainst) else 0.0
+        offset = planar(p.relation).margin + gap
         rows.append((ps.normal, float(np.dot(ps.origin, ps.normal)) + offset, cs.origin))
     if fixed_yaw is not None:
         yaw = math.atan2(math.sin(fixed_yaw), math.cos(fixed_yaw))
@@ -79,6 +83,13 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
     return t, yaw, DoF(proj, fixed_yaw is None)
 
 
+def snap_object(state: State, name: str, position: np.ndarray,
+                yaw: float) -> tuple[np.ndarray, float, DoF] | None:
+    """`solve_pose` for object `name` of the state, with its own asset and placements."""
+    ob = state.objects[name]
+    return solve_pose(state, ob.asset, ob.placements, position, yaw)
+
+
 def _pinv(n: np.ndarray) -> np.ndarray:
     """Pseudo-inverse of the (k, 3) plane-normal matrix: n^T (n n^T)^-1 when the normals are
     independent (the usual case: a floor, or a floor and one or two walls), which is a small
@@ -87,12 +98,6 @@ def _pinv(n: np.ndarray) -> np.ndarray:
     if len(n) <= 3 and abs(np.linalg.det(gram)) > 1e-9:
         return n.T @ np.linalg.inv(gram)
     return np.linalg.pinv(n)
-
-
-def dof_of(state: State, name: str) -> DoF:
-    ob = state.objects[name]
-    res = solve_pose(state, ob.asset, ob.placements, ob.position, ob.yaw)
-    return res[2] if res is not None else DoF(np.zeros((3, 3)), False)
 
 
 def _in_parent_2d(parent: Surface, pts: np.ndarray) -> np.ndarray:

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import bisect
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol
 
 import fcl
 import numpy as np
@@ -16,16 +17,30 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets import Asset, Surface
+from indoorgen.assets import Asset, Surface, get_factory
 from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh
-from indoorgen.constraints.relations import Relation
-from indoorgen.floorplan.room import RoomGeometry
+from indoorgen.constraints.bounds import Context
+from indoorgen.constraints.relations import Relation, parse_relation
 from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.scene import Room, Scene
 from indoorgen.model.tags import Semantics
 from indoorgen.solver.broadphase import Broadphase, world_boxes
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
+
+
+class RoomShape(Protocol):
+    """What the solver reads of one room's architecture (the floorplan's room geometry provides
+    it; a home's rooms also carry an `elevation`, the height of their floor)."""
+
+    room: Room
+    surfaces: list[Surface]
+    door_zones: list[sg.Polygon]
+
+    def collision_meshes(self) -> list[trimesh.Trimesh]:
+        """Every solid the solver must not penetrate: walls, floor and ceiling slabs."""
+        ...
 
 
 @dataclass
@@ -41,6 +56,10 @@ class Placement:
 
 @dataclass
 class ObjState:
+    """One object being solved: what it is (generator, params, the seed they came from, tags),
+    where it belongs (room, stage), its placeholder asset, relations and pose, and its collision
+    pieces as registered in the room's broadphase."""
+
     name: str
     generator: str
     params: dict[str, Any]
@@ -52,8 +71,9 @@ class ObjState:
     placements: list[Placement]
     position: np.ndarray
     yaw: float
-    bound: str = ""
-    context: Any = None
+    #: the counted context the object was added to (its parent choices come from it), if any
+    context: Context | None = None
+    #: the loop variables bound when it was added (to re-evaluate the context's parent sets)
     env: dict = field(default_factory=dict)
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
     #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
@@ -64,7 +84,7 @@ class State:
     """Rooms and objects being solved, with a broadphase per room over the placeholders' solid
     convex pieces."""
 
-    def __init__(self, rooms: dict[str, RoomGeometry], cache: AssetCache):
+    def __init__(self, rooms: Mapping[str, RoomShape], cache: AssetCache):
         self.rooms = rooms
         self.cache = cache
         self.objects: dict[str, ObjState] = {}
@@ -76,7 +96,7 @@ class State:
         self._members: dict[tuple[str, str], list[str]] = {}  # (room, stage) -> sorted names
         # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
         # room's objects and the (shared) architecture; this keeps each query small in a home
-        self.static = []
+        self.static: list[fcl.CollisionObject] = []
         static_boxes = []
         for g in rooms.values():
             for m in g.collision_meshes():
@@ -92,23 +112,24 @@ class State:
 
     # -- ObjectView ------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
+        """Every room and object name."""
         return self._ids
 
-    def is_room(self, o: str) -> bool:
-        return o in self.rooms
-
     def tags(self, o: str) -> frozenset:
+        """Semantic tags of a room (Room and its type) or object (its generator's)."""
         return self._room_tags[o] if o in self.rooms else self.objects[o].tags
 
     def generator(self, o: str) -> str:
+        """The generator that made object `o` ("" for a room)."""
         return "" if o in self.rooms else self.objects[o].generator
 
     def relations(self, o: str) -> list[tuple[Relation, str]]:
+        """(relation, parent) of each of the object's placements (none for a room)."""
         if o in self.rooms:
             return []
         return [(p.relation, p.parent) for p in self.objects[o].placements]
 
-    def _cached(self, o: str, what: str, fn):
+    def _cached(self, o: str, what: str, fn: Callable[[], Any]) -> Any:
         d = self._geo.setdefault(o, {})
         v = d.get(what)
         if v is None:
@@ -116,6 +137,8 @@ class State:
         return v
 
     def center(self, o: str) -> np.ndarray:
+        """World centre of the object's placeholder bounds (a room's: its polygon's centroid at
+        half height)."""
         if o in self.rooms:
             g = self.rooms[o]
             c = sg.Polygon(g.room.polygon).centroid
@@ -128,18 +151,21 @@ class State:
         return self._cached(o, "center", f)
 
     def front(self, o: str) -> np.ndarray:
+        """Unit vector the object faces (its local +X); +X for a room."""
         if o in self.rooms:
             return np.array([1.0, 0.0, 0.0])
         y = self.objects[o].yaw
         return np.array([math.cos(y), math.sin(y), 0.0])
 
     def side_axis(self, o: str) -> np.ndarray:
+        """Unit vector to the object's left (its local +Y); +Y for a room."""
         if o in self.rooms:
             return np.array([0.0, 1.0, 0.0])
         y = self.objects[o].yaw
         return np.array([-math.sin(y), math.cos(y), 0.0])
 
     def front_point(self, o: str) -> np.ndarray:
+        """Middle of the object's front face (a room: its centre)."""
         if o in self.rooms:
             return self.center(o)
         ob = self.objects[o]
@@ -153,9 +179,12 @@ class State:
         return float(getattr(self.rooms[room], "elevation", 0.0))
 
     def yaw(self, o: str) -> float:
+        """The object's turn about +Z (0 for a room)."""
         return 0.0 if o in self.rooms else float(self.objects[o].yaw)
 
     def extents(self, o: str) -> np.ndarray:
+        """Size of the object's placeholder bounds in its own frame (a room: its plan bounds and
+        height)."""
         if o in self.rooms:
             g = self.rooms[o]
             x0, y0, x1, y1 = sg.Polygon(g.room.polygon).bounds
@@ -164,6 +193,7 @@ class State:
         return b[1] - b[0]
 
     def footprint(self, o: str) -> sg.Polygon:
+        """Plan-view outline of the object (its placeholder's 2D hull, posed) or the room."""
         if o in self.rooms:
             return sg.Polygon(self.rooms[o].room.polygon)
 
@@ -174,13 +204,16 @@ class State:
             return sg.Polygon(hull @ r.T + ob.position[:2])
         return self._cached(o, "footprint", f)
 
-    def outline(self, o: str):
+    def outline(self, o: str) -> sg.Polygon | sg.LinearRing:
+        """What distances are measured to: a room's walls (its boundary ring), an object's
+        footprint."""
         if o in self.rooms:
             return sg.Polygon(self.rooms[o].room.polygon).exterior
         return self.footprint(o)
 
     def world_mesh(self, o: str) -> trimesh.Trimesh:
-        def f():
+        """The object's placeholder mesh, posed in world coordinates."""
+        def f() -> trimesh.Trimesh:
             ob = self.objects[o]
             m = ob.asset.mesh.copy()
             t = np.eye(4)
@@ -191,11 +224,13 @@ class State:
         return self._cached(o, "mesh", f)
 
     def support_polygon(self, o: str) -> sg.Polygon | None:
+        """Plan-view polygon of the surface the object rests on, if that is another object's
+        support surface (a tabletop, a shelf); else None."""
         if o in self.rooms:
             return None
         for p in self.objects[o].placements:
-            if p.parent not in self.rooms and getattr(p.relation, "parent", None) is not None \
-                    and p.relation.parent.value == "support_surface":
+            role = getattr(p.relation, "parent", None)
+            if p.parent not in self.rooms and role is not None and role.value == "support_surface":
                 s = self.surface_world(p.parent, p.parent_surface)
                 return sg.Polygon(s.corners()[:, :2])
         return None
@@ -210,6 +245,7 @@ class State:
         return [s.transformed(r, ob.position) for s in ob.asset.surfaces]
 
     def surface_world(self, o: str, name: str) -> Surface:
+        """Surface `name` of `o` in world coordinates."""
         if o in self.rooms:
             return self._room_surfaces[o][name]
         ob = self.objects[o]
@@ -221,6 +257,7 @@ class State:
 
     def _boxes(self, ob: ObjState) -> np.ndarray:
         """World boxes of the object's collision pieces at its current pose."""
+        assert ob.boxes is not None  # set by _register before any pose change
         return world_boxes(ob.boxes, yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
     def _register(self, ob: ObjState) -> None:
@@ -234,6 +271,7 @@ class State:
         self.broadphase[ob.room].remove(ob.name)
 
     def add(self, ob: ObjState) -> None:
+        """Put an object into the scene: its relations, stage membership and collision pieces."""
         self.objects[ob.name] = ob
         self._ids = self._ids | {ob.name}
         bisect.insort(self._members.setdefault((ob.room, ob.stage), []), ob.name)
@@ -241,6 +279,8 @@ class State:
         self._register(ob)
 
     def remove(self, name: str) -> ObjState:
+        """Take an object out of the scene (everything `add` recorded) and return it, so it can
+        be added back unchanged."""
         ob = self.objects.pop(name)
         self._ids = self._ids - {name}
         self._members[(ob.room, ob.stage)].remove(name)
@@ -284,6 +324,8 @@ class State:
         return out
 
     def set_pose(self, name: str, position: np.ndarray, yaw: float) -> None:
+        """Pose one object (alone: see `moves` for carrying what rests on it), keeping its
+        cached geometry and broadphase boxes in step."""
         ob = self.objects[name]
         ob.position = np.asarray(position, float)
         ob.yaw = float(yaw)
@@ -324,11 +366,9 @@ def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trim
     return out
 
 
-def state_from_scene(scene, rooms: dict[str, RoomGeometry], cache: AssetCache) -> State:
+def state_from_scene(scene: Scene, rooms: Mapping[str, RoomShape], cache: AssetCache) -> State:
     """Rebuild a solver state (placeholders, poses, relations) from a saved Scene, so a scene
     can be re-evaluated or validated without re-solving."""
-    from indoorgen.assets import get_factory
-    from indoorgen.constraints.relations import parse_relation
     st = State(rooms, cache)
     for o in scene.objects.values():
         fac = get_factory(o.generator)

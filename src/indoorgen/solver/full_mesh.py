@@ -11,6 +11,7 @@ import logging
 import fcl
 
 from indoorgen.assets.cache import mesh_bvh
+from indoorgen.constraints.bounds import STAGE_ORDER
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.solver.state import State
 
@@ -22,8 +23,8 @@ def full_mesh_check(state: State) -> list[str]:
     manager = fcl.DynamicAABBTreeCollisionManager()
     manager.registerObjects(list(state.static))
     manager.setup()
-    order = {"large": 0, "medium": 1, "small": 2}
-    names = sorted(state.objects, key=lambda n: (order.get(state.objects[n].stage, 3), n))
+    last = len(STAGE_ORDER)  # an object of no known stage is checked after all the others
+    names = sorted(state.objects, key=lambda n: (STAGE_ORDER.get(state.objects[n].stage, last), n))
     kept: set[str] = set()
     removed: list[str] = []
     for n in names:

@@ -1,13 +1,14 @@
-"""The staged greedy solve (Infinigen Indoors, algorithm 1): per room, anneal the large objects,
-then the medium, then the small; each stage sees earlier stages' objects as fixed."""
+"""The staged solve (Infinigen Indoors, algorithm 1): per room, anneal the large objects, then the
+medium, then the small; each stage sees earlier stages' objects as fixed."""
 from __future__ import annotations
 
 import logging
-from typing import Callable
+from collections.abc import Callable
 
 from tqdm import tqdm
 
-from indoorgen.constraints.evaluator import Evaluator, Result
+from indoorgen.constraints.bounds import STAGE_ORDER
+from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.expressions import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
@@ -15,7 +16,9 @@ from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 
-STAGES = ("large", "medium", "small")
+#: the stages in the order they run (large furniture first, so smaller things find it in place)
+STAGES = tuple(STAGE_ORDER)
+#: annealing steps per stage when the caller gives none
 DEFAULT_STEPS = {"large": 350, "medium": 300, "small": 450}
 
 
@@ -51,7 +54,3 @@ def solve(state: State, problems: dict[str, Problem], seed: int, *,
                  st.objects, st.violation, st.loss, st.seconds)
         stats.append(st)
     return stats, evaluators
-
-
-def final_result(ev: Evaluator) -> Result:
-    return ev.evaluate()

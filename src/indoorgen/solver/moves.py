@@ -1,0 +1,415 @@
+"""The annealer's moves (Infinigen Indoors, sec. 3.3): add, delete, resample, reinit, reassign a
+plane or a parent, translate, rotate.
+
+Each move is a function of a `MoveContext` that proposes one change to the state and applies it.
+It returns a `MoveOutcome` (what changed, and how to undo it) when the result is geometrically
+valid, or None, having changed nothing, when it is not. `MOVES` names them for the schedule.
+"""
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import TypeVar
+
+import numpy as np
+
+from indoorgen.assets import Asset, Surface, factories_with, get_factory
+from indoorgen.constraints.bounds import Bound, find_bounds
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.relations import Relation
+from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.tags import Subpart
+from indoorgen.rng import child_seed
+from indoorgen.solver.placement import placements_hold, planar, sample_point, snap_object, solve_pose
+from indoorgen.solver.state import ObjState, Placement, State
+
+log = logging.getLogger(__name__)
+
+_T = TypeVar("_T")
+
+
+@dataclass
+class MoveContext:
+    """What a move reads and changes: the state, the room and stage being annealed, the
+    evaluator (bounds and parent sets come from it), the stage's random stream, step sizes and
+    the current temperature (the run loop lowers it)."""
+
+    state: State
+    problem: Problem
+    ev: Evaluator
+    room: str
+    stage: str
+    rng: np.random.Generator
+    namer: Callable[[str], str]
+    #: the constraints this stage enforces (its own and earlier stages')
+    active_constraints: frozenset[str]
+    #: poses tried when an object is (re)placed from scratch
+    init_tries: int
+    #: metres of translation step std-dev per unit of temperature
+    translate_sigma: float
+    #: radians of rotation step std-dev per unit of temperature
+    rotate_sigma: float
+    temperature: float
+    #: tag sets already warned about (no generator has them), so each is logged once
+    unknown_tags: set[frozenset] = field(default_factory=set)
+
+    def mine(self) -> list[str]:
+        """This room's objects of this stage, in name order (what moves may touch)."""
+        return self.state.members(self.room, self.stage)
+
+    def bounds(self) -> list[Bound]:
+        """The count bounds of this stage's contexts in the current state (what may be added or
+        deleted)."""
+        rooms = frozenset(self.state.rooms)
+        return [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
+                if b.stage(rooms) == self.stage]
+
+    def pick(self, items: Sequence[_T]) -> _T:
+        """One of `items`, uniformly at random."""
+        return items[int(self.rng.integers(len(items)))]
+
+
+@dataclass(frozen=True, kw_only=True)
+class MoveOutcome:
+    """What an applied move did: the objects it changed, added and removed, how to undo it, and
+    the parents that gained or lost a related object (`relinked`: a reassigned parent)."""
+
+    changed: tuple[str, ...] = ()
+    added: tuple[str, ...] = ()
+    removed: tuple[str, ...] = ()
+    undo: Callable[[], None]
+    relinked: tuple[str, ...] = ()
+
+
+#: a move: applies one proposal to the context's state, or returns None (nothing changed)
+MoveFn = Callable[[MoveContext], MoveOutcome | None]
+
+
+# -- shared steps of the moves ------------------------------------------------------------------
+def _pick_own(ctx: MoveContext, keep: Callable[[str], bool] | None = None) -> tuple[str, ObjState] | None:
+    """One of this stage's objects (those `keep` accepts), with its state; None if there is
+    none."""
+    mine = ctx.mine() if keep is None else [n for n in ctx.mine() if keep(n)]
+    if not mine:
+        return None
+    name = ctx.pick(mine)
+    return name, ctx.state.objects[name]
+
+
+def _pick_placement(ctx: MoveContext, ob: ObjState) -> tuple[int, Placement]:
+    """One of the object's placements, uniformly at random, with its index."""
+    i = int(ctx.rng.integers(len(ob.placements)))
+    return i, ob.placements[i]
+
+
+def _surface_names(state: State, o: str, role: Subpart | None) -> list[str]:
+    """Names of the surfaces of `o` (a room or an object) that play `role`."""
+    return [s.name for s in state.surfaces(o) if s.subpart == role]
+
+
+def _valid_group(state: State, names: list[str]) -> bool:
+    """The first object's relations hold and none of the moved objects collides."""
+    return placements_hold(state, names[0]) and not any(state.collides(n) for n in names)
+
+
+def _carry(state: State, name: str, position: np.ndarray, yaw: float) -> list[str]:
+    """Pose `name` and carry what rests on it along rigidly (a TV moves with its stand).
+    Returns every object moved."""
+    ob = state.objects[name]
+    old_pos, old_yaw = ob.position.copy(), ob.yaw
+    state.set_pose(name, position, yaw)
+    moved = [name]
+    rest = state.descendants(name)
+    if rest:
+        turn = yaw_matrix(yaw - old_yaw)
+        for d in rest:
+            child = state.objects[d]
+            state.set_pose(d, turn @ (child.position - old_pos) + np.asarray(position, float),
+                           child.yaw + yaw - old_yaw)
+        moved += rest
+    return moved
+
+
+def _pose_undo(state: State, name: str) -> Callable[[], None]:
+    """An undo for a pose change of `name` and of everything resting on it."""
+    group = [name] + state.descendants(name)
+    saved = [(n, state.objects[n].position.copy(), state.objects[n].yaw) for n in group]
+
+    def undo() -> None:
+        for n, pos, yaw in saved:
+            state.set_pose(n, pos, yaw)
+    return undo
+
+
+def _anchor(state: State, ob: ObjState) -> tuple[Surface, Placement]:
+    """The smallest surface the object is attached to (its tabletop rather than the room),
+    in world coordinates, and the placement that attaches it there."""
+    surfaces = [state.surface_world(p.parent, p.parent_surface) for p in ob.placements]
+    i = int(np.argmin([s.polygon.area for s in surfaces]))
+    return surfaces[i], ob.placements[i]
+
+
+def _grid_yaw(ctx: MoveContext, ob: ObjState, anchor: Surface) -> float:
+    """A yaw square to the surface `ob` rests on: the surface's own axes (a room's floor:
+    the world axes; a shelf or tabletop: its parent's), turned by k quarter turns. On an
+    object, half the draws face the same way as the parent (a TV on its stand, books on a
+    shelf), since that is what most things on furniture do."""
+    base = math.atan2(anchor.u[1], anchor.u[0]) if abs(anchor.normal[2]) > 0.99 else 0.0
+    on_object = any(p.parent not in ctx.state.rooms for p in ob.placements)
+    k = 0 if on_object and ctx.rng.random() < 0.5 else int(ctx.rng.integers(4))
+    return base + k * math.pi / 2
+
+
+def _place(ctx: MoveContext, ob: ObjState, tries: int | None = None) -> list[str]:
+    """Sample poses on the object's planes until one is valid (the object is in state,
+    whatever rests on it moves along). Returns the objects moved; empty if none was valid."""
+    st = ctx.state
+    anchor, placement = _anchor(st, ob)
+    child = ob.asset.surface(placement.child_surface)
+    half = 0.5 * min(child.polygon.bounds[2] - child.polygon.bounds[0],
+                     child.polygon.bounds[3] - child.polygon.bounds[1])
+    for _ in range(tries or ctx.init_tries):
+        yaw = _grid_yaw(ctx, ob, anchor)
+        q = sample_point(anchor, ctx.rng, margin=half)
+        res = solve_pose(st, ob.asset, ob.placements, q - yaw_matrix(yaw) @ child.origin, yaw)
+        if res is None:
+            return []
+        if abs(res[1] - yaw) > 1e-9:  # a wall or table side fixed the yaw: aim again
+            res = solve_pose(st, ob.asset, ob.placements, q - yaw_matrix(res[1]) @ child.origin,
+                             res[1])
+            if res is None:
+                return []
+        moved = _carry(st, ob.name, res[0], res[1])
+        if _valid_group(st, moved):
+            return moved
+    return []
+
+
+def _draw_placements(ctx: MoveContext, asset: Asset,
+                     parents: tuple[tuple[Relation, tuple[str, ...]], ...],
+                     tries: int = 12) -> list[Placement] | None:
+    """Choose, for each relation, a parent, a parent surface and a child surface, such that
+    all the planes can hold at once (two walls of a corner for a bath, not two opposite
+    walls). None if no compatible choice turned up in `tries` draws."""
+    for _ in range(tries if len(parents) > 1 else 1):
+        placements = []
+        for rel, parent_ids in parents:
+            parent = ctx.pick(list(parent_ids))
+            ps = _surface_names(ctx.state, parent, planar(rel).parent)
+            cs = [s.name for s in asset.surfaces if s.subpart == planar(rel).child]
+            if not ps or not cs:
+                return None
+            placements.append(Placement(rel, parent, ctx.pick(cs), ctx.pick(ps)))
+        if len(placements) == 1 or \
+                solve_pose(ctx.state, asset, placements, np.zeros(3), 0.0) is not None:
+            return placements
+    return None
+
+
+def _try_pose(ctx: MoveContext, name: str, position: np.ndarray, yaw: float) -> MoveOutcome | None:
+    """Move `name` (and what rests on it) to the pose nearest (position, yaw) on its planes;
+    the move's outcome, or None (and nothing changed) if that pose is invalid."""
+    res = snap_object(ctx.state, name, position, yaw)
+    if res is None:
+        return None
+    undo = _pose_undo(ctx.state, name)
+    moved = _carry(ctx.state, name, res[0], res[1])
+    if not _valid_group(ctx.state, moved):
+        undo()
+        return None
+    return MoveOutcome(changed=tuple(moved), undo=undo)
+
+
+def _replace_placement(ctx: MoveContext, name: str, i: int, new: Placement) -> MoveOutcome | None:
+    """Put placement `i` of `name` to `new` and find the object a valid pose there (what rests
+    on it moves along); None, with everything restored, if no pose was valid."""
+    st = ctx.state
+    ob = st.objects[name]
+    old_pl, undo_pose = list(ob.placements), _pose_undo(st, name)
+    st.set_placements(name, ob.placements[:i] + [new] + ob.placements[i + 1:])
+
+    def undo() -> None:
+        st.set_placements(name, old_pl)
+        undo_pose()
+    moved = _place(ctx, ob, tries=4)
+    if not moved:
+        undo()
+        return None
+    relinked = tuple({p.parent for p in old_pl} ^ {p.parent for p in ob.placements})
+    return MoveOutcome(changed=tuple(moved), undo=undo, relinked=relinked)
+
+
+# -- the moves -----------------------------------------------------------------------------------
+def add(ctx: MoveContext) -> MoveOutcome | None:
+    """Add a new object to a context a bound lets grow (preferring one below its minimum), on
+    planes of parents it may attach to."""
+    bounds = [b for b in ctx.bounds() if b.can_add]
+    if not bounds:
+        return None
+    below = [b for b in bounds if b.below]
+    b = ctx.pick(below if below and ctx.rng.random() < 0.85 else bounds)
+    gens = factories_with(b.context.tags, b.context.excluded)
+    if b.context.generator is not None:
+        gens = [g for g in gens if g == b.context.generator]
+    if not gens:
+        if b.context.tags not in ctx.unknown_tags:
+            ctx.unknown_tags.add(b.context.tags)
+            log.warning("no generator has tags %s", sorted(map(str, b.context.tags)))
+        return None
+    gen = ctx.pick(gens)
+    fac = get_factory(gen)
+    seed = child_seed(ctx.rng)
+    params = fac.sample_params(np.random.default_rng(seed))
+    asset = ctx.state.cache.placeholder(gen, params)
+    placements = _draw_placements(ctx, asset, b.parents)
+    if placements is None:
+        return None
+    ob = ObjState(ctx.namer(gen), gen, params, seed, frozenset(fac.tags), ctx.room,
+                  ctx.stage, asset, placements, np.zeros(3), 0.0,
+                  context=b.context, env=dict(b.env))
+    ctx.state.add(ob)
+    if not _place(ctx, ob):
+        ctx.state.remove(ob.name)
+        return None
+    name = ob.name
+
+    def undo() -> None:
+        ctx.state.remove(name)
+    return MoveOutcome(added=(name,), undo=undo)
+
+
+def delete(ctx: MoveContext) -> MoveOutcome | None:
+    """Delete an object nothing rests on, unless a count it belongs to is at its minimum."""
+    mine = ctx.mine()
+    if not mine:
+        return None
+    kept = {n for b in ctx.bounds() if not b.can_delete for n in b.members}
+    ok = [n for n in mine if not ctx.state.children(n) and n not in kept]
+    if not ok:
+        return None
+    name = ctx.pick(ok)
+    ob = ctx.state.remove(name)
+
+    def undo() -> None:
+        ctx.state.add(ob)
+    return MoveOutcome(removed=(name,), undo=undo)
+
+
+def translate(ctx: MoveContext) -> MoveOutcome | None:
+    """Shift an object within its degrees of freedom by a step that shrinks with the
+    temperature."""
+    picked = _pick_own(ctx)
+    if picked is None:
+        return None
+    name, ob = picked
+    res = snap_object(ctx.state, name, ob.position, ob.yaw)
+    if res is None:
+        return None
+    sigma = ctx.translate_sigma * ctx.temperature
+    step = res[2].projection @ ctx.rng.normal(0.0, sigma, 3)
+    return _try_pose(ctx, name, ob.position + step, ob.yaw)
+
+
+def rotate(ctx: MoveContext) -> MoveOutcome | None:
+    """Turn an object that may turn: square to its support now and then, else by a step that
+    shrinks with the temperature."""
+    picked = _pick_own(ctx)
+    if picked is None:
+        return None
+    name, ob = picked
+    res = snap_object(ctx.state, name, ob.position, ob.yaw)
+    if res is None or not res[2].rotates:
+        return None
+    if ctx.rng.random() < 0.3:  # snap square to the supporting surface
+        new_yaw = _grid_yaw(ctx, ob, _anchor(ctx.state, ob)[0])
+    else:
+        new_yaw = ob.yaw + float(ctx.rng.normal(0.0, ctx.rotate_sigma * ctx.temperature))
+    return _try_pose(ctx, name, ob.position, new_yaw)
+
+
+def reinit(ctx: MoveContext) -> MoveOutcome | None:
+    """Place an object afresh at a random pose on its planes."""
+    picked = _pick_own(ctx)
+    if picked is None:
+        return None
+    name, ob = picked
+    undo = _pose_undo(ctx.state, name)
+    moved = _place(ctx, ob, tries=3)
+    if not moved:
+        undo()
+        return None
+    return MoveOutcome(changed=tuple(moved), undo=undo)
+
+
+def resample(ctx: MoveContext) -> MoveOutcome | None:
+    """Give an object new generator params (a new shape) where it stands. Only objects nothing
+    rests on: new params mean new surfaces."""
+    st = ctx.state
+    picked = _pick_own(ctx, lambda n: not st.children(n))
+    if picked is None:
+        return None
+    name, ob = picked
+    old_params, old_pos, old_yaw = ob.params, ob.position.copy(), ob.yaw
+    params = get_factory(ob.generator).sample_params(ctx.rng)
+    st.set_asset(name, params)
+
+    def undo() -> None:
+        st.set_asset(name, old_params)
+        st.set_pose(name, old_pos, old_yaw)
+    res = snap_object(st, name, ob.position, ob.yaw)
+    if res is None:
+        undo()
+        return None
+    st.set_pose(name, res[0], res[1])
+    if not _valid_group(st, [name]):
+        undo()
+        return None
+    return MoveOutcome(changed=(name,), undo=undo)
+
+
+def reassign_plane(ctx: MoveContext) -> MoveOutcome | None:
+    """Move one of an object's placements to another surface of the same role of the same
+    parent (another wall, another shelf)."""
+    picked = _pick_own(ctx)
+    if picked is None:
+        return None
+    name, ob = picked
+    i, p = _pick_placement(ctx, ob)
+    alts = [n for n in _surface_names(ctx.state, p.parent, planar(p.relation).parent)
+            if n != p.parent_surface]
+    if not alts:
+        return None
+    return _replace_placement(ctx, name, i,
+                              Placement(p.relation, p.parent, p.child_surface, ctx.pick(alts)))
+
+
+def reassign_parent(ctx: MoveContext) -> MoveOutcome | None:
+    """Move one of an object's placements to another parent its context allows (a cup to
+    another table)."""
+    picked = _pick_own(ctx, lambda n: ctx.state.objects[n].context is not None)
+    if picked is None:
+        return None
+    name, ob = picked
+    assert ob.context is not None  # _pick_own kept only objects with a context
+    i, p = _pick_placement(ctx, ob)
+    sets = [ctx.ev.value(node, ob.env) for rel, node in ob.context.relations if rel == p.relation]
+    cands = sorted(frozenset.intersection(*sets) - {p.parent, name}) if sets else []
+    if not cands:
+        return None
+    parent = ctx.pick(cands)
+    alts = _surface_names(ctx.state, parent, planar(p.relation).parent)
+    if not alts:
+        return None
+    return _replace_placement(ctx, name, i,
+                              Placement(p.relation, parent, p.child_surface, ctx.pick(alts)))
+
+
+#: every move by the name the annealing schedule uses
+MOVES: dict[str, MoveFn] = {
+    "add": add, "delete": delete, "resample": resample, "reinit": reinit,
+    "reassign_plane": reassign_plane, "reassign_parent": reassign_parent,
+    "translate": translate, "rotate": rotate,
+}

@@ -1,0 +1,76 @@
+"""The staged solve: every room in name order, each large -> medium -> small, one evaluator per
+room; objects are named per generator in creation order; a seed gives the same scene."""
+from __future__ import annotations
+
+from indoorgen.assets.cache import AssetCache
+from indoorgen.constraints import Problem, scene
+from indoorgen.floorplan.room import build_room, rectangle
+from indoorgen.model.scene import Room
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.common import on_floor, on_top, on_wall
+from indoorgen.solver.stages import DEFAULT_STEPS, STAGES, make_namer, solve
+from indoorgen.solver.state import State
+from support.solverscene import ROOM, assert_consistent, make_state, snapshot, table_program
+
+FEW = {"large": 40, "medium": 40, "small": 40}
+
+
+def test_stages_run_large_then_medium_then_small():
+    assert STAGES == ("large", "medium", "small")
+    assert set(DEFAULT_STEPS) == set(STAGES)
+
+
+def test_every_room_is_solved_stage_by_stage_in_room_order():
+    rooms = {"b_room": build_room(Room("b_room", "living_room", rectangle(4.0, 3.0))),
+             "a_room": build_room(Room("a_room", "living_room", rectangle(4.0, 3.0)))}
+    st = State(rooms, AssetCache())
+    stats, evaluators = solve(st, {"b_room": _program("b_room"), "a_room": _program("a_room")},
+                              seed=1, steps=FEW)
+    assert [(s.room, s.stage) for s in stats] == [
+        (r, s) for r in ("a_room", "b_room") for s in STAGES]
+    assert set(evaluators) == {"a_room", "b_room"}
+    assert_consistent(st)
+
+
+def _program(room: str) -> Problem:
+    """A table with a plate or two, one picture."""
+    r = scene()[S.Room].named(room)
+    tables = scene().related_to(r, on_floor)[S.DiningTable]
+    return Problem(constraints={
+        "a table": tables.count() == 1,
+        "plates": tables.all(lambda t: scene()[S.Plate].related_to(t, on_top).count().in_range(1, 2)),
+        "art": scene()[S.WallArt].related_to(r, on_wall).count().in_range(1, 1),
+    })
+
+
+def test_each_stage_places_its_own_kind_of_object():
+    st = make_state(5.0, 4.0)
+    stats, _ = solve(st, {ROOM: table_program()}, seed=2, steps=FEW)
+    by_stage = {s.stage: s for s in stats}
+    assert all(by_stage[s].violation == 0.0 for s in STAGES)
+    stage_of = {tag: ob.stage for ob in st.objects.values() for tag in (S.DiningTable, S.WallArt, S.Plate)
+                if tag in ob.tags}
+    assert stage_of[S.DiningTable] == "large" and stage_of[S.WallArt] == "medium"
+    assert stage_of.get(S.Plate, "small") == "small"
+    for ob in st.objects.values():
+        parents = {p.parent for p in ob.placements}
+        if ob.stage == "small":  # on other objects, placed by an earlier stage
+            assert parents and all(st.objects[p].stage == "large" for p in parents)
+        else:
+            assert parents == {ROOM}
+
+
+def test_a_seed_gives_the_same_solve():
+    runs = []
+    for _ in range(2):
+        st = make_state(5.0, 4.0)
+        stats, _ = solve(st, {ROOM: table_program()}, seed=11, steps=FEW)
+        runs.append((snapshot(st), [(s.steps, s.accepted, s.proposed) for s in stats]))
+    assert runs[0] == runs[1]
+
+
+def test_make_namer_counts_per_generator_in_creation_order():
+    name = make_namer()
+    assert [name("cup"), name("plate"), name("cup"), name("cup")] == ["cup_0", "plate_0", "cup_1",
+                                                                       "cup_2"]
+    assert make_namer()("cup") == "cup_0"  # each namer counts afresh
