@@ -19,7 +19,7 @@ import numpy as np
 from indoorgen.assets import factories_with, get_factory
 from indoorgen.constraints.bounds import STAGE_ORDER, Bound, find_bounds, term_stage
 from indoorgen.constraints.evaluator import Evaluator, Result
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.rng import child_seed
 from indoorgen.solver.placement import placements_hold, sample_point, solve_pose

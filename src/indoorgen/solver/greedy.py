@@ -8,7 +8,7 @@ from typing import Callable
 from tqdm import tqdm
 
 from indoorgen.constraints.evaluator import Evaluator, Result
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.state import State
