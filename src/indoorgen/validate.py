@@ -23,10 +23,15 @@ import trimesh
 
 from indoorgen.architecture import scene_architecture
 from indoorgen.assets import get_factory
+from indoorgen.assets.cache import AssetCache
+from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.relations import CONTACT_GAP, parse_relation
+from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
 from indoorgen.model.scene import Scene
 from indoorgen.model.tags import Semantics
+from indoorgen.programs import ROOM_PROGRAMS
+from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
 SUPPORT_TOL = 0.005
@@ -162,11 +167,6 @@ def _footprint_below(obj, asset, floor_z: float, top: float):
 
 def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
     """Each room's built-in program evaluated fully (a fresh evaluator) on the saved scene."""
-    from indoorgen.assets.cache import AssetCache
-    from indoorgen.constraints.evaluator import Evaluator
-    from indoorgen.constraints.expressions import scene as scene_set
-    from indoorgen.programs import ROOM_PROGRAMS
-    from indoorgen.solver.state import state_from_scene
     state = state_from_scene(scene, rooms, AssetCache())
     out = {}
     for rn, room in scene.rooms.items():
