@@ -25,7 +25,7 @@ from indoorgen.architecture import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.constraints.relations import CONTACT_GAP, parse_relation
+from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst, parse_relation
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
 from indoorgen.model.scene import Scene
@@ -67,9 +67,9 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     rooms, _ = scene_architecture(scene)
     meshes, assets = {}, {}
     for n, o in scene.objects.items():
-        a = get_factory(o.generator).create(o.params)
-        assets[n] = a
-        meshes[n] = _world(o, a.mesh)
+        asset = get_factory(o.generator).create(o.params)
+        assets[n] = asset
+        meshes[n] = _world(o, asset.mesh)
     solids: dict[str, trimesh.Trimesh] = dict(meshes)
     for rn, g in rooms.items():
         for i, w in enumerate(g.walls):
@@ -101,6 +101,8 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     for n, o in scene.objects.items():
         for r in o.relations:
             rel = parse_relation(r.relation)
+            if not isinstance(rel, (StableAgainst, CoPlanar)):
+                raise ConfigError(f"{n}: relation {r.relation!r} pins no surface to its parent")
             child = assets[n].surface(r.child_surface).transformed(o.pose.rotation(),
                                                                     np.array(o.pose.position))
             if r.parent in rooms:
@@ -179,6 +181,7 @@ def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
 
 
 def validate_scene_dir(path: Path) -> dict[str, Any]:
+    """`validate_scene` of the scene.json in directory `path` (ConfigError if missing or bad)."""
     f = Path(path) / "scene.json"
     try:
         scene = Scene.from_json(json.loads(f.read_text()))
