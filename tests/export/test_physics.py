@@ -46,7 +46,7 @@ def test_link_inertials_sum_their_pieces():
     assert set(got) == set(asset.links) and len(asset.links) > 1
     for link in asset.links:
         pieces = [(p, asset.slots[s] if s < len(asset.slots) else "body")
-                  for (lk, p), s in zip(asset.collision, slots) if lk == link]
+                  for (lk, p), s in zip(asset.collision, slots, strict=True) if lk == link]
         rho = np.array([density_of(mats[s]) if s in mats else 1000.0 for _, s in pieces])
         vols = np.array([p.volume for p, _ in pieces])
         coms = np.array([p.center_mass for p, _ in pieces])
