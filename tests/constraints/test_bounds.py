@@ -6,32 +6,7 @@ from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.bounds import context_of, find_bounds, static_stage, term_stage
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
-from support.dsl import at_table, on_floor, on_top
-from support.fakeview import FakeView
-
-
-def program(room):
-    furniture = scene()[S.Furniture].related_to(room, on_floor)
-    tables, chairs = furniture[S.Table], furniture[S.Chair]
-    cups = scene()[S.Cup]
-    return Problem(
-        constraints={
-            "tables": tables.count().in_range(1, 2),
-            "chairs per table": tables.all(lambda t: chairs.related_to(t, at_table).count().in_range(2, 4)),
-            "cups": tables.all(lambda t: cups.related_to(t, on_top).count() >= 1),
-            "chairs vs tables": chairs.count() <= tables.count() * 4,
-        },
-    )
-
-
-def base_view():
-    v = FakeView()
-    v.add_room("r", [(0, 0), (8, 0), (8, 6), (0, 6)])
-    return v
-
-
-def room():
-    return scene()[S.Room].named("r")
+from support.dsl import at_table, base_view, on_floor, on_top, program, room
 
 
 def test_cardinality_bounds_per_context_and_state_sensitive():

@@ -6,41 +6,9 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from indoorgen.constraints import Problem, accessibility_cost, focus_score, rotational_asymmetry, scene
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
-from support.dsl import at_table, on_floor, on_top
-from support.fakeview import FakeView
-
-
-def program(room):
-    furniture = scene()[S.Furniture].related_to(room, on_floor)
-    tables, chairs = furniture[S.Table], furniture[S.Chair]
-    cups = scene()[S.Cup]
-    return Problem(
-        constraints={
-            "tables": tables.count().in_range(1, 2),
-            "chairs per table": tables.all(lambda t: chairs.related_to(t, at_table).count().in_range(2, 4)),
-            "cups": tables.all(lambda t: cups.related_to(t, on_top).count() >= 1),
-            "chairs vs tables": chairs.count() <= tables.count() * 4,
-        },
-        score_terms={
-            "sym": tables.mean(lambda t: rotational_asymmetry(chairs.related_to(t, at_table))).minimize(2),
-            "face": focus_score(chairs, tables).minimize(1),
-            "access": accessibility_cost(tables, furniture - tables).minimize(1),
-            "near": chairs.sum(lambda c: c.distance(tables).hinge(0, 0.1)).minimize(1),
-        },
-    )
-
-
-def base_view():
-    v = FakeView()
-    v.add_room("r", [(0, 0), (8, 0), (8, 6), (0, 6)])
-    return v
-
-
-def room():
-    return scene()[S.Room].named("r")
+from support.dsl import at_table, base_view, on_floor, on_top, program, room
 
 
 def test_moving_one_object_recomputes_few_nodes_and_matches_full():
