@@ -18,6 +18,10 @@ import tempfile
 import time
 from pathlib import Path
 
+from indoorgen import GenerateConfig, HomeConfig, generate, generate_home
+from indoorgen.export import parse_formats, write_formats
+from indoorgen.export.bundle import bundle_from_generated
+
 
 def _size(p: Path) -> int:
     if p.is_file():
@@ -30,7 +34,6 @@ def _mb(n: int) -> str:
 
 
 def run_formats(label: str, bundle, formats: str, res: int) -> None:
-    from indoorgen.export import parse_formats, write_formats
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp)
         timings: dict[str, float] = {}
@@ -68,10 +71,6 @@ def main() -> None:
     if args.cold:
         os.environ["INDOORGEN_TEXTURE_CACHE"] = tempfile.mkdtemp(prefix="texcache-")
 
-    from indoorgen import generate
-    from indoorgen.export.bundle import bundle_from_generated
-    from indoorgen.pipeline import GenerateConfig
-
     t = time.perf_counter()
     gen = generate(args.seed, GenerateConfig(room_type=args.room))
     print(f"generated {args.room} seed {args.seed} in {time.perf_counter() - t:.1f} s "
@@ -81,7 +80,6 @@ def main() -> None:
     print(f"bundle (full assets, materials): {time.perf_counter() - t:.2f} s")
     run_formats(f"furnished {args.room}", bundle, args.formats, args.res)
     if not args.no_home:
-        from indoorgen import HomeConfig, generate_home
         t = time.perf_counter()
         home_gen = generate_home(args.seed, HomeConfig(floors=args.floors))
         print(f"\ngenerated a {args.floors}-storey home, seed {args.seed}: "

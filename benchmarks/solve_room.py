@@ -22,7 +22,7 @@ from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import at_table, on_floor
+from indoorgen.programs.relations import at_table, on_floor
 from indoorgen.solver.anneal import AnnealConfig, Annealer
 from indoorgen.solver.placement import solve_pose
 from indoorgen.solver.stages import make_namer

@@ -11,11 +11,13 @@ import argparse
 import tempfile
 from pathlib import Path
 
+from indoorgen import GenerateConfig, HomeConfig, generate, generate_home
+from indoorgen.export import write_formats
+from indoorgen.export.bundle import bundle_from_generated
+from indoorgen.export.stability import simulate, stability
+
 
 def report(label: str, gen) -> bool:
-    from indoorgen.export import write_formats
-    from indoorgen.export.bundle import bundle_from_generated
-    from indoorgen.export.stability import simulate, stability
     with tempfile.TemporaryDirectory() as tmp:
         write_formats(bundle_from_generated(gen), Path(tmp), "mjcf", texture_resolution=64)
         st = stability(simulate(Path(tmp) / "scene.xml"))
@@ -31,7 +33,6 @@ def main() -> None:
     ap.add_argument("--rooms", default="living_room,dining_room")
     ap.add_argument("--homes", type=int, default=1, help="whole one-storey homes (seeds 0..N-1)")
     args = ap.parse_args()
-    from indoorgen import GenerateConfig, HomeConfig, generate, generate_home
     ok = []
     for room in args.rooms.split(","):
         for seed in range(args.seeds):

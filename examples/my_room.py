@@ -16,7 +16,7 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, at_table, on_floor, on_top
+from indoorgen.programs.relations import against_wall, at_table, on_floor, on_top
 
 
 def round_table_room(room) -> Problem:

@@ -17,8 +17,8 @@ import numpy as np
 from indoorgen.assets import Asset
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Result
-from indoorgen.constraints.expressions import Problem
-from indoorgen.constraints.expressions import scene as scene_set
+from indoorgen.constraints.problem import Problem
+from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject

@@ -11,6 +11,8 @@ import zlib
 
 import numpy as np
 
+from indoorgen.errors import ConfigError
+
 
 def _key(part: str | int) -> int:
     if isinstance(part, (int, np.integer)):
@@ -21,8 +23,6 @@ def _key(part: str | int) -> int:
 def seed_sequence(seed: int, *path: str | int) -> np.random.SeedSequence:
     """The child `SeedSequence` of `seed` at `path` (the same spawn-key mechanism `spawn` uses)."""
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        from indoorgen.errors import ConfigError
-
         raise ConfigError(f"seed must be a non-negative integer, got {seed!r}")
     return np.random.SeedSequence(int(seed), spawn_key=tuple(_key(p) for p in path))
 

@@ -23,10 +23,15 @@ import trimesh
 
 from indoorgen.architecture import scene_architecture
 from indoorgen.assets import get_factory
-from indoorgen.constraints.relations import CONTACT_GAP, parse_relation
+from indoorgen.assets.cache import AssetCache
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst, parse_relation
+from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
 from indoorgen.model.scene import Scene
 from indoorgen.model.tags import Semantics
+from indoorgen.programs import ROOM_PROGRAMS
+from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
 SUPPORT_TOL = 0.005
@@ -62,9 +67,9 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     rooms, _ = scene_architecture(scene)
     meshes, assets = {}, {}
     for n, o in scene.objects.items():
-        a = get_factory(o.generator).create(o.params)
-        assets[n] = a
-        meshes[n] = _world(o, a.mesh)
+        asset = get_factory(o.generator).create(o.params)
+        assets[n] = asset
+        meshes[n] = _world(o, asset.mesh)
     solids: dict[str, trimesh.Trimesh] = dict(meshes)
     for rn, g in rooms.items():
         for i, w in enumerate(g.walls):
@@ -96,6 +101,8 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     for n, o in scene.objects.items():
         for r in o.relations:
             rel = parse_relation(r.relation)
+            if not isinstance(rel, (StableAgainst, CoPlanar)):
+                raise ConfigError(f"{n}: relation {r.relation!r} pins no surface to its parent")
             child = assets[n].surface(r.child_surface).transformed(o.pose.rotation(),
                                                                     np.array(o.pose.position))
             if r.parent in rooms:
@@ -162,11 +169,6 @@ def _footprint_below(obj, asset, floor_z: float, top: float):
 
 def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
     """Each room's built-in program evaluated fully (a fresh evaluator) on the saved scene."""
-    from indoorgen.assets.cache import AssetCache
-    from indoorgen.constraints.evaluator import Evaluator
-    from indoorgen.constraints.expressions import scene as scene_set
-    from indoorgen.programs import ROOM_PROGRAMS
-    from indoorgen.solver.state import state_from_scene
     state = state_from_scene(scene, rooms, AssetCache())
     out = {}
     for rn, room in scene.rooms.items():
@@ -179,6 +181,7 @@ def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
 
 
 def validate_scene_dir(path: Path) -> dict[str, Any]:
+    """`validate_scene` of the scene.json in directory `path` (ConfigError if missing or bad)."""
     f = Path(path) / "scene.json"
     try:
         scene = Scene.from_json(json.loads(f.read_text()))

@@ -1,58 +1,14 @@
 """Incremental evaluation: same values as a full evaluation, while recomputing only what a move
-touches; plus cardinality bounds."""
+touches."""
 import math
 
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from indoorgen.constraints import (
-    Problem,
-    StableAgainst,
-    accessibility_cost,
-    focus_score,
-    rotational_asymmetry,
-    scene,
-)
-from indoorgen.constraints.bounds import find_bounds
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
-from indoorgen.model.tags import Subpart
-from support.fakeview import FakeView
-
-on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
-at_table = StableAgainst(Subpart.Front, Subpart.Side, -0.08, overhang=False)
-on_top = StableAgainst(Subpart.Bottom, Subpart.SupportSurface, overhang=False)
-
-
-def program(room):
-    furniture = scene()[S.Furniture].related_to(room, on_floor)
-    tables, chairs = furniture[S.Table], furniture[S.Chair]
-    cups = scene()[S.Cup]
-    return Problem(
-        constraints={
-            "tables": tables.count().in_range(1, 2),
-            "chairs per table": tables.all(lambda t: chairs.related_to(t, at_table).count().in_range(2, 4)),
-            "cups": tables.all(lambda t: cups.related_to(t, on_top).count() >= 1),
-            "chairs vs tables": chairs.count() <= tables.count() * 4,
-        },
-        score_terms={
-            "sym": tables.mean(lambda t: rotational_asymmetry(chairs.related_to(t, at_table))).minimize(2),
-            "face": focus_score(chairs, tables).minimize(1),
-            "access": accessibility_cost(tables, furniture - tables).minimize(1),
-            "near": chairs.sum(lambda c: c.distance(tables).hinge(0, 0.1)).minimize(1),
-        },
-    )
-
-
-def base_view():
-    v = FakeView()
-    v.add_room("r", [(0, 0), (8, 0), (8, 6), (0, 6)])
-    return v
-
-
-def room():
-    return scene()[S.Room].named("r")
+from support.dsl import at_table, base_view, on_floor, on_top, program, room
 
 
 def test_moving_one_object_recomputes_few_nodes_and_matches_full():
@@ -103,8 +59,7 @@ def test_incremental_equals_full_for_random_edit_sequences(seq):
     v = base_view()
     ev = Evaluator(program(room()), v, check=True)
     ev.evaluate()
-    n = 0
-    for op, r in seq:
+    for n, (op, r) in enumerate(seq):
         rng = np.random.default_rng(r)
         tables = sorted(k for k, o in v.objs.items() if S.Table in o["tags"])
         names = sorted(v.objs)
@@ -144,54 +99,7 @@ def test_incremental_equals_full_for_random_edit_sequences(seq):
             # deleting a table orphans its children's relations; that is fine for the DSL
             del v.objs[name]
             ev.notify(removed=[name])
-        n += 1
         inc = ev.evaluate()   # check=True compares against a full evaluation
         full = Evaluator(program(room()), v).evaluate()
         assert inc.violations == full.violations
         assert all(abs(inc.scores[k] - full.scores[k]) < 1e-9 for k in full.scores)
-
-
-def test_cardinality_bounds_per_context_and_state_sensitive():
-    v = base_view()
-    v.add("t0", {S.Furniture, S.Table}, (2, 2, 0.4), relations=[(on_floor, "r")])
-    v.add("t1", {S.Furniture, S.Table}, (5, 2, 0.4), relations=[(on_floor, "r")])
-    v.add("c0", {S.Furniture, S.Chair}, (2, 3, 0.4), relations=[(on_floor, "r"), (at_table, "t0")])
-    ev = Evaluator(program(room()), v)
-    ev.evaluate()
-    bounds = find_bounds(ev.problem, ev)
-    per_table = [b for b in bounds if b.name == "chairs per table"]
-    assert sorted((b.parents[1][1], b.count, b.lo, b.hi) for b in per_table) == [
-        (("t0",), 1, 2, 4), (("t1",), 0, 2, 4)]
-    assert all(S.Chair in b.context.tags and b.can_add and b.below for b in per_table)
-    tables = [b for b in bounds if b.name == "tables"][0]
-    assert (tables.count, tables.lo, tables.hi, tables.can_add, tables.can_delete) == (2, 1, 2, False, True)
-    # chairs <= 4 * tables: an upper bound read from the current state
-    cvt = [b for b in bounds if b.name == "chairs vs tables"][0]
-    assert (cvt.lo, cvt.hi, cvt.count) == (0, 8, 1)
-    cups = [b for b in bounds if b.name == "cups"]
-    assert len(cups) == 2 and all(b.lo == 1 and b.hi == math.inf for b in cups)
-
-
-def test_sum_of_counts_bounds_each_term_by_what_the_others_leave():
-    """"a bath or a shower": (baths + showers) in [1, 2]. With neither present both may be
-    added and both are below their share; once a bath exists, a shower is optional."""
-    def prog(room):
-        floor = scene().related_to(room, on_floor)
-        baths, showers = floor[S.Bathtub], floor[S.Shower]
-        return Problem(constraints={"wet": (baths.count() + showers.count()).in_range(1, 2),
-                                    "at most 2": 2 >= baths.count() + showers.count()})
-    v = base_view()
-    ev = Evaluator(prog(room()), v)
-    ev.evaluate()
-    wet = [b for b in find_bounds(ev.problem, ev) if b.name == "wet"]
-    assert [(sorted(t.value for t in b.context.tags), b.lo, b.hi, b.below) for b in wet] == [
-        (["bathtub"], 1, 2, True), (["shower"], 1, 2, True)]
-    v.add("b0", {S.Bathtub}, (1, 1, 0.3), relations=[(on_floor, "r")])
-    ev.notify(added=["b0"])
-    ev.evaluate()
-    bounds = find_bounds(ev.problem, ev)
-    bath, shower = [b for b in bounds if b.name == "wet"]
-    assert (bath.count, bath.lo, bath.hi, bath.can_delete) == (1, 1, 2, False)
-    assert (shower.count, shower.lo, shower.hi, shower.below, shower.can_add) == (0, 0, 1, False, True)
-    cap = [b for b in bounds if b.name == "at most 2"]
-    assert [(b.lo, b.hi) for b in cap] == [(0, 2), (-1, 1)]

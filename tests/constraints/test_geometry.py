@@ -1,6 +1,7 @@
 """Tests for the geometric scalar terms; expected values are worked out by hand in comments."""
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -72,7 +73,7 @@ def test_rotational_grows_with_shift():
         c[0, 0] += s
         vals.append(rotational_asymmetry(c, -FOUR))
     assert vals[0] == pytest.approx(0.0, abs=1e-9)
-    assert all(b > a for a, b in zip(vals, vals[1:]))
+    assert all(b > a for a, b in itertools.pairwise(vals))
 
 
 def test_rotational_pair_orientation():

@@ -40,14 +40,14 @@ def test_link_inertials_sum_their_pieces():
     params = f.sample_params(np.random.default_rng(3))
     asset = f.create(params)
     obj = SceneObject("dresser_0", "dresser", params, 3, Pose(), [], "room")
-    mats = object_materials(obj, asset)
+    mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
     got = link_inertials(asset, mats)
     slots = piece_slots(asset)
     assert set(got) == set(asset.links) and len(asset.links) > 1
     for link in asset.links:
         pieces = [(p, asset.slots[s] if s < len(asset.slots) else "body")
-                  for (lk, p), s in zip(asset.collision, slots) if lk == link]
-        rho = np.array([density_of(mats[s].name) if s in mats else 1000.0 for _, s in pieces])
+                  for (lk, p), s in zip(asset.collision, slots, strict=True) if lk == link]
+        rho = np.array([density_of(mats[s]) if s in mats else 1000.0 for _, s in pieces])
         vols = np.array([p.volume for p, _ in pieces])
         coms = np.array([p.center_mass for p, _ in pieces])
         assert np.allclose(got[link].com, (rho * vols) @ coms / (rho * vols).sum(), atol=1e-9)

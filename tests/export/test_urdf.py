@@ -94,3 +94,14 @@ def test_pybullet_joints_move_through_their_range_clear_of_the_body(articulated,
     assert problems == []
 
 
+def test_exported_urdf_collisions_are_the_asset_pieces(exported):
+    """Every object URDF holds one <collision> per convex piece, boxes as <box>."""
+    bundle, d, _ = exported["living_room"]
+    kinds = {"box": 0, "mesh": 0}
+    for obj in bundle.objects:
+        root = ET.parse(d / "urdf" / f"{obj.name}.urdf").getroot()
+        cols = root.findall(".//collision/geometry/*")
+        assert len(cols) == len(bundle.assets[obj.name].collision), obj.name
+        for c in cols:
+            kinds[c.tag] += 1
+    assert kinds["box"] > 0 and kinds["mesh"] > 0

@@ -59,7 +59,7 @@ def test_fixed_area_and_contour():
 @pytest.mark.slow
 def test_existing_object_solver_furnishes_an_upper_storey_room():
     from indoorgen.assets.cache import AssetCache
-    from indoorgen.constraints.expressions import scene
+    from indoorgen.constraints.sets import scene
     from indoorgen.floorplan.solidify import solidify
     from indoorgen.model.tags import Semantics
     from indoorgen.programs import get_program

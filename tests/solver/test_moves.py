@@ -9,7 +9,7 @@ from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-from indoorgen.programs.common import on_floor, on_top
+from indoorgen.programs.relations import on_floor, on_top
 from indoorgen.solver.moves import MOVES, MoveContext, MoveOutcome
 from indoorgen.solver.placement import placements_hold, planar
 from support.solverscene import (

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from indoorgen.constraints.relations import CONTACT_GAP
-from indoorgen.programs.common import against_wall, on_floor
+from indoorgen.programs.relations import against_wall, on_floor
 from indoorgen.solver.placement import placements_hold, planar, sample_point, snap_object, solve_pose
 from indoorgen.solver.state import Placement
 from support.solverscene import ROOM, floor, make_state, put, top_of, wall

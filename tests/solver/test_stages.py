@@ -7,7 +7,7 @@ from indoorgen.constraints import Problem, scene
 from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import on_floor, on_top, on_wall
+from indoorgen.programs.relations import on_floor, on_top, on_wall
 from indoorgen.solver.stages import DEFAULT_STEPS, STAGES, make_namer, solve
 from indoorgen.solver.state import State
 from support.solverscene import ROOM, assert_consistent, make_state, snapshot, table_program

@@ -13,7 +13,7 @@ from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Door, Room
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import on_floor, on_top, on_wall
+from indoorgen.programs.relations import on_floor, on_top, on_wall
 from indoorgen.solver.broadphase import world_boxes
 from indoorgen.solver.moves import MoveContext
 from indoorgen.solver.placement import solve_pose

@@ -9,26 +9,23 @@ the current state, so `chairs.count() <= tables.count() * 4` bounds chairs by to
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field
+from typing import Any
 
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.constraints.expressions import (
-    BinOp,
-    BoolOp,
-    Compare,
-    Count,
-    ForAll,
-    FromGenerator,
-    InRange,
-    Node,
-    Problem,
-    RelatedTo,
-    SceneSet,
-    Tagged,
-    Var,
-)
+from indoorgen.constraints.logic import BoolOp, Compare, ForAll, InRange
+from indoorgen.constraints.node import Env, Node, Tag
+from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.relations import Relation
+from indoorgen.constraints.scalars import BinOp, Count
+from indoorgen.constraints.sets import FromGenerator, RelatedTo, SceneSet, Tagged, Var
 from indoorgen.model.tags import Semantics, Subpart
+
+#: (set node, lo, hi, loop bindings): one count bound found in a constraint.
+CountBound = tuple[Node[frozenset[str]], float, float, Env]
+#: Per relation of a context, the parent objects a new member may attach to.
+Parents = tuple[tuple[Relation, tuple[str, ...]], ...]
 
 
 @dataclass(frozen=True)
@@ -36,9 +33,9 @@ class Context:
     """What an object must be to belong to a counted set: tags, excluded tags and relations
     (each with the set expression its parents come from)."""
 
-    tags: frozenset
-    excluded: frozenset
-    relations: tuple[tuple[Relation, Node], ...]
+    tags: frozenset[Tag]
+    excluded: frozenset[Tag]
+    relations: tuple[tuple[Relation, Node[frozenset[str]]], ...]
     generator: str | None = None
 
 
@@ -48,42 +45,47 @@ class Bound:
 
     name: str
     context: Context
-    set_node: Node
-    env: dict
-    parents: tuple[tuple[Relation, tuple[str, ...]], ...]
+    set_node: Node[frozenset[str]]
+    env: Env
+    parents: Parents
     lo: float
     hi: float
     count: int
-    members: frozenset = field(default_factory=frozenset)
+    members: frozenset[str] = field(default_factory=frozenset)
 
     @property
     def can_add(self) -> bool:
+        """Whether one more member fits the bound and every relation has a parent to take it."""
         return self.count + 1 <= self.hi + 1e-9 and all(p for _, p in self.parents)
 
     @property
     def below(self) -> bool:
+        """Whether the count is under the lower bound."""
         return self.count < self.lo - 1e-9
 
     @property
     def can_delete(self) -> bool:
+        """Whether one member fewer still meets the lower bound."""
         return self.count - 1 >= self.lo - 1e-9
 
     def stage(self, room_ids: frozenset[str]) -> str:
+        """The stage (large, medium, small) the bound's objects are placed in."""
         return context_stage(self.context, self.parents, room_ids)
 
 
-def context_of(node: Node) -> Context | None:
+def context_of(node: Node[Any]) -> Context | None:
     """The addable context of a set expression, or None if objects cannot be added to it
     (unions, differences, loop variables...). Memoised on the node (programs are immutable)."""
     if "_context" not in node.__dict__:
         node.__dict__["_context"] = _context_of(node)
-    return node.__dict__["_context"]
+    ctx: Context | None = node.__dict__["_context"]
+    return ctx
 
 
-def _context_of(node: Node) -> Context | None:
-    tags: set = set()
-    excluded: set = set()
-    rels: list = []
+def _context_of(node: Node[Any]) -> Context | None:
+    tags: set[Tag] = set()
+    excluded: set[Tag] = set()
+    rels: list[tuple[Relation, Node[frozenset[str]]]] = []
     generator = None
     while True:
         if isinstance(node, SceneSet):
@@ -105,7 +107,7 @@ def _context_of(node: Node) -> Context | None:
     return Context(frozenset(tags), frozenset(excluded), tuple(reversed(rels)), generator)
 
 
-def context_stage(ctx: Context, parents, room_ids: frozenset[str]) -> str:
+def context_stage(ctx: Context, parents: Parents, room_ids: frozenset[str]) -> str:
     """large: on the room's floor only; medium: on walls/ceiling, or on the floor beside a
     furniture parent; small: on or in other objects."""
     on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in ctx.relations)
@@ -118,7 +120,7 @@ def context_stage(ctx: Context, parents, room_ids: frozenset[str]) -> str:
 STAGE_ORDER = {"large": 0, "medium": 1, "small": 2}
 
 
-def _is_room_set(node: Node) -> bool:
+def _is_room_set(node: Node[Any]) -> bool:
     while True:
         if isinstance(node, Tagged) and Semantics.Room in node.include:
             return True
@@ -127,10 +129,10 @@ def _is_room_set(node: Node) -> bool:
         node = node.children[0]
 
 
-def static_stage(node: Node) -> str | None:
+def static_stage(node: Node[Any]) -> str | None:
     """The stage whose objects a set expression's chain describes, judged from its relations
     alone (before anything exists); None if it names no relation."""
-    rels = []
+    rels: list[tuple[Relation, bool]] = []
     while True:
         if isinstance(node, RelatedTo):
             rels.append((node.relation, _is_room_set(node.children[1])))
@@ -146,10 +148,10 @@ def static_stage(node: Node) -> str | None:
     return "large" if on_floor else "medium"
 
 
-def term_stage(expr: Node) -> str:
+def term_stage(expr: Node[Any]) -> str:
     """The latest stage any set in `expr` belongs to: a term only counts from that stage on
     (chairs-per-table is ignored while the large stage places tables)."""
-    best, seen, stack = "large", set(), [expr]
+    best, seen, stack = "large", set[int](), [expr]
     while stack:
         n = stack.pop()
         if n.uid in seen:
@@ -163,7 +165,7 @@ def term_stage(expr: Node) -> str:
     return best
 
 
-def _count_terms(x: Node) -> list[Node] | None:
+def _count_terms(x: Node[Any]) -> list[Node[frozenset[str]]] | None:
     """The set nodes of `x` if it is a count or a sum of counts (`a.count() + b.count()`),
     else None."""
     if isinstance(x, Count):
@@ -175,20 +177,21 @@ def _count_terms(x: Node) -> list[Node] | None:
     return None
 
 
-def _split_sum(sets: list[Node], lo: float, hi: float, ev: Evaluator, env: dict
-               ) -> list[tuple[Node, float, float, dict]]:
+def _split_sum(sets: list[Node[frozenset[str]]], lo: float, hi: float, ev: Evaluator, env: Env
+               ) -> list[CountBound]:
     """Bounds on each set of a sum of counts bounded by [lo, hi]: each term may take what the
     others leave (so "a bath or a shower" lets the solver add either while none exists)."""
     counts = [len(ev.value(n, env)) for n in sets]
     total = sum(counts)
-    return [(n, lo - (total - c), hi - (total - c), env) for n, c in zip(sets, counts)]
+    return [(n, lo - (total - c), hi - (total - c), env) for n, c in zip(sets, counts, strict=True)]
 
 
-def _count_bounds(c: Node, ev: Evaluator, env: dict) -> list[tuple[Node, float, float, dict]]:
+def _count_bounds(c: Node[Any], ev: Evaluator, env: Env) -> list[CountBound]:
     """(set node, lo, hi, env) for each count bound found in constraint `c` under `env`."""
-    out = []
-    if isinstance(c, InRange) and _count_terms(c.children[0]) is not None:
-        out += _split_sum(_count_terms(c.children[0]), c.lo, c.hi, ev, env)
+    out: list[CountBound] = []
+    in_range_sets = _count_terms(c.children[0]) if isinstance(c, InRange) else None
+    if isinstance(c, InRange) and in_range_sets is not None:
+        out += _split_sum(in_range_sets, c.lo, c.hi, ev, env)
     elif isinstance(c, Compare):
         a, b = c.children
         op = c.op
@@ -210,19 +213,19 @@ def _count_bounds(c: Node, ev: Evaluator, env: dict) -> list[tuple[Node, float, 
     return out
 
 
-def _merge_parents(rels: list[tuple[Relation, frozenset]]) -> tuple:
+def _merge_parents(rels: list[tuple[Relation, frozenset[str]]]) -> Parents:
     """One entry per distinct relation: a chain that names the same relation twice
     (`tvs_on_stands.related_to(this_stand, on_top)`) needs one parent in both sets."""
-    merged: dict[Relation, frozenset] = {}
+    merged: dict[Relation, frozenset[str]] = {}
     for rel, ps in rels:
         merged[rel] = merged[rel] & ps if rel in merged else frozenset(ps)
     return tuple((rel, tuple(sorted(ps))) for rel, ps in merged.items())
 
 
-def find_bounds(problem: Problem, ev: Evaluator, names=None) -> list[Bound]:
+def find_bounds(problem: Problem, ev: Evaluator, names: Collection[str] | None = None) -> list[Bound]:
     """Every count bound of `problem`'s constraints (those in `names`, if given) on an addable
     context, in the current state."""
-    out = []
+    out: list[Bound] = []
     for name, c in problem.constraints.items():
         if names is not None and name not in names:
             continue

@@ -17,50 +17,41 @@ against a fresh full evaluation.
 from __future__ import annotations
 
 import logging
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Any, Iterable, Protocol
+from typing import Any, TypeVar
 
-import numpy as np
-import shapely.geometry as sg
-
-from indoorgen.constraints.expressions import Node, Problem
+from indoorgen.constraints.node import Env, Node, ObjectView
+from indoorgen.constraints.problem import Problem
 
 log = logging.getLogger(__name__)
 
-Key = tuple  # (node uid, bound object names of the node's free variables)
+#: A cache entry's key: (node uid, bound object names of the node's free variables).
+Key = tuple[int, tuple[str, ...]]
+#: A root's key: ("c", constraint name) or ("s", score term name).
+RootKey = tuple[str, str]
+#: What an entry watches: an object, or (CHILDREN, parent) for "which objects relate to it".
+WatchKey = str | tuple[str, str]
 #: watch-key tag of "which objects are related to this parent" (see `watch_children`)
 CHILDREN = "@children"
 
+V = TypeVar("V")
 
-class ObjectView(Protocol):
-    """What the evaluator needs to know about objects; the solver state implements it."""
 
-    def all_ids(self) -> frozenset[str]: ...
-    def tags(self, o: str) -> frozenset: ...
-    def relations(self, o: str) -> list[tuple[Any, str]]: ...
-    def children(self, o: str) -> set[str]: ...
-    def center(self, o: str) -> np.ndarray: ...
-    def front(self, o: str) -> np.ndarray: ...
-    def front_point(self, o: str) -> np.ndarray: ...
-    def side_axis(self, o: str) -> np.ndarray: ...
-    def yaw(self, o: str) -> float: ...
-    def floor_z(self, o: str) -> float: ...
-    def extents(self, o: str) -> np.ndarray: ...
-    def footprint(self, o: str) -> sg.Polygon: ...
-    def outline(self, o: str): ...
-    def world_mesh(self, o: str): ...
-    def support_polygon(self, o: str) -> sg.Polygon | None: ...
+#: What a node's computation recorded: (its old entry, inputs read with their versions, what it
+#: watched, whether it depends on which objects exist).
+_Frame = tuple["_Entry | None", dict[Key, int], set[WatchKey], bool]
 
 
 @dataclass
 class _Entry:
-    node: Node
-    env: dict
+    node: Node[Any]
+    env: Env
     value: Any = None
     version: int = 0
-    inputs: dict = field(default_factory=dict)   # child key -> child version when read
-    parents: set = field(default_factory=set)
-    watched: frozenset = frozenset()
+    inputs: dict[Key, int] = field(default_factory=dict)   # child key -> child version when read
+    parents: set[Key] = field(default_factory=set)
+    watched: frozenset[WatchKey] = frozenset()
     membership: bool = False
 
 
@@ -74,10 +65,12 @@ class Result:
 
     @property
     def violation(self) -> float:
+        """The sum of all constraints' violations."""
         return float(sum(self.violations.values()))
 
     @property
     def n_violated(self) -> int:
+        """How many constraints are violated (by more than 1e-9)."""
         return sum(1 for v in self.violations.values() if v > 1e-9)
 
 
@@ -87,25 +80,27 @@ class Evaluator:
     def __init__(self, problem: Problem, view: ObjectView, *, check: bool = False):
         self.problem, self.view, self.check = problem, view, check
         self._entries: dict[Key, _Entry] = {}
-        self._watchers: dict[str, set[Key]] = {}
+        self._watchers: dict[WatchKey, set[Key]] = {}
         self._membership: set[Key] = set()
         self._by_env_obj: dict[str, set[Key]] = {}
         self._dirty: set[Key] = set()
         self._suspect: set[Key] = set()
-        self._frames: list[tuple[_Entry | None, dict, set, bool]] = []
-        self._all_roots = [(("c", n), c) for n, c in problem.constraints.items()] + \
-                          [(("s", n), t.expr) for n, t in problem.score_terms.items()]
+        self._frames: list[_Frame] = []
+        self._all_roots: list[tuple[RootKey, Node[float]]] = [
+            (("c", n), c) for n, c in problem.constraints.items()]
+        self._all_roots += [(("s", n), t.expr) for n, t in problem.score_terms.items()]
         self._roots = self._all_roots
         self.recomputed = 0  # entries recomputed since construction (for tests and benchmarks)
 
     # -- the interface nodes use while computing ------------------------------------------
-    def get(self, node: Node, env: dict) -> Any:
+    def get(self, node: Node[V], env: Env) -> V:
         """The value of `node` under loop bindings `env`, from cache when still valid."""
         key = (node.uid, tuple([env[v] for v in node.key_vars]))
         e = self._refresh(key, node, env)
         if self._frames:
             self._frames[-1][1][key] = e.version
-        return e.value
+        value: V = e.value
+        return value
 
     def watch(self, objs: Iterable[str]) -> None:
         """Mark the entry being computed as depending on the state of `objs`."""
@@ -128,15 +123,15 @@ class Evaluator:
         """Tell the evaluator which objects moved or changed relations/params (`changed`), were
         added or were deleted since the last evaluation, and which parents gained or lost a
         related object without an addition or deletion (`relinked`: a reassigned parent)."""
-        added, removed = list(added), list(removed)
+        added_l, removed_l = list(added), list(removed)
         dirty: set[Key] = set()
-        for o in list(changed) + removed:
+        for o in list(changed) + removed_l:
             dirty |= self._watchers.get(o, set())
         for p in relinked:
             dirty |= self._watchers.get((CHILDREN, p), set())
-        if added or removed:
+        if added_l or removed_l:
             dirty |= self._membership
-        for o in removed:
+        for o in removed_l:
             for key in list(self._by_env_obj.pop(o, ())):
                 self._drop(key)
             self._watchers.pop(o, None)
@@ -155,7 +150,7 @@ class Evaluator:
 
     def evaluate(self) -> Result:
         """Bring every root up to date and return the problem's current result."""
-        vals = {}
+        vals: dict[RootKey, float] = {}
         for key, node in self._roots:
             vals[key] = self.get(node, {})
         res = self._result(vals)
@@ -180,25 +175,27 @@ class Evaluator:
 
     @property
     def active(self) -> set[str]:
+        """Names of the constraints and score terms being evaluated."""
         return {k[1] for k, _ in self._roots}
 
-    def value(self, node: Node, env: dict | None = None) -> Any:
+    def value(self, node: Node[V], env: Env | None = None) -> V:
         """Evaluate any node of the program (e.g. a set expression, for bound reasoning)."""
         return self.get(node, env or {})
 
     @property
     def n_entries(self) -> int:
+        """How many (node, binding) entries the cache holds."""
         return len(self._entries)
 
     # -- internals -----------------------------------------------------------------------------
-    def _result(self, vals: dict) -> Result:
+    def _result(self, vals: dict[RootKey, float]) -> Result:
         viol = {n: float(vals[("c", n)]) for n in self.problem.constraints if ("c", n) in vals}
         scores = {n: float(vals[("s", n)]) for n in self.problem.score_terms if ("s", n) in vals}
         loss = sum(self.problem.score_terms[n].weight * self.problem.score_terms[n].sign * v
                    for n, v in scores.items())
         return Result(viol, scores, float(loss))
 
-    def _refresh(self, key: Key, node: Node, env: dict) -> _Entry:
+    def _refresh(self, key: Key, node: Node[Any], env: Env) -> _Entry:
         e = self._entries.get(key)
         if e is not None and key not in self._suspect:
             return e
@@ -219,9 +216,9 @@ class Evaluator:
                 return e
         return self._compute(key, node, env, e)
 
-    def _compute(self, key: Key, node: Node, env: dict, old: _Entry | None) -> _Entry:
+    def _compute(self, key: Key, node: Node[Any], env: Env, old: _Entry | None) -> _Entry:
         benv = {v: env[v] for v in node.free_vars}
-        self._frames.append((old, {}, set(), False))
+        self._frames.append((old, {}, set[WatchKey](), False))
         try:
             value = node.compute(self, benv)
         finally:
@@ -243,15 +240,15 @@ class Evaluator:
                 ce.parents.add(key)
         e.inputs = inputs
         # re-register watches
-        watched = frozenset(watched)
-        if watched != e.watched:
-            for o in e.watched - watched:
-                s = self._watchers.get(o)
+        now_watched = frozenset(watched)
+        if now_watched != e.watched:
+            for w in e.watched - now_watched:
+                s = self._watchers.get(w)
                 if s is not None:
                     s.discard(key)
-            for o in watched - e.watched:
-                self._watchers.setdefault(o, set()).add(key)
-            e.watched = watched
+            for w in now_watched - e.watched:
+                self._watchers.setdefault(w, set()).add(key)
+            e.watched = now_watched
         if membership != e.membership:
             (self._membership.add if membership else self._membership.discard)(key)
             e.membership = membership
@@ -274,8 +271,8 @@ class Evaluator:
         e = self._entries.pop(key, None)
         if e is None:
             return
-        for o in e.watched:
-            s = self._watchers.get(o)
+        for w in e.watched:
+            s = self._watchers.get(w)
             if s is not None:
                 s.discard(key)
         self._membership.discard(key)
@@ -292,7 +289,8 @@ class Evaluator:
 def _same_value(a: Any, b: Any) -> bool:
     if isinstance(a, float) and isinstance(b, float):
         return a == b or (a != a and b != b)
-    return a == b
+    same: bool = a == b
+    return same
 
 
 def _same(a: float, b: float) -> bool:

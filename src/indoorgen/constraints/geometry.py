@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import logging
 import math
-from typing import Sequence
+from collections.abc import Sequence
 
 import fcl
 import numpy as np
@@ -61,7 +61,8 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
     """Rows of `v` scaled to unit length; zero rows stay zero."""
     v = np.asarray(v, dtype=float)
     n = np.linalg.norm(v, axis=-1, keepdims=True)
-    return np.divide(v, n, out=np.zeros_like(v), where=n > _EPS)
+    unit: np.ndarray = np.divide(v, n, out=np.zeros_like(v), where=n > _EPS)
+    return unit
 
 
 def _rotate2d(v: np.ndarray, angles: np.ndarray) -> np.ndarray:
@@ -74,7 +75,8 @@ def _wrapped_angle_diff(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """|a - b| wrapped into [0, pi]. For rotations about one axis this equals the quaternion
     distance 2*arccos(|q_a . q_b|) used by the paper."""
     d = np.mod(np.asarray(a, float) - np.asarray(b, float) + math.pi, 2.0 * math.pi) - math.pi
-    return np.abs(d)
+    wrapped: np.ndarray = np.abs(d)
+    return wrapped
 
 
 def mesh_to_fcl(mesh: trimesh.Trimesh) -> fcl.BVHModel:
@@ -341,7 +343,8 @@ def _blocking_terms(closest: np.ndarray, a_proj: np.ndarray, normals: np.ndarray
     ahead = np.maximum(0.0, np.einsum("nk,nk->n", rel, normals))
     d2 = np.einsum("nk,nk->n", rel, rel)
     ratio = np.divide(ahead, d2, out=np.zeros_like(ahead), where=d2 > _EPS)
-    return ratio * diagonals
+    terms: np.ndarray = ratio * diagonals
+    return terms
 
 
 def accessibility_cost_fast(a_centers: np.ndarray, a_normals: np.ndarray,

@@ -3,8 +3,10 @@ solver needs: `implies` (does holding this relation also satisfy that query?) an
 (can one relation instance satisfy both?)."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
+from indoorgen.errors import ConfigError
 from indoorgen.model.tags import Subpart
 
 #: Gap the solver leaves between surfaces declared in contact, so that touching placeholders are
@@ -18,24 +20,30 @@ class Relation:
     #: relations that pin a child surface to a parent plane (the solver derives DoF from these)
     is_planar: bool = False
 
-    def implies(self, other: "Relation") -> bool:
+    def implies(self, other: Relation) -> bool:
+        """Whether holding this relation also satisfies the query `other`."""
         if isinstance(other, AnyRelation):
             return True
         if isinstance(other, NegatedRelation):
             return not self.intersects(other.inner)
         return self == other
 
-    def intersects(self, other: "Relation") -> bool:
+    def intersects(self, other: Relation) -> bool:
+        """Whether one relation instance can satisfy both this and `other`."""
         if isinstance(other, NegatedRelation):
             return not self.implies(other.inner)
         return self.implies(other) or other.implies(self)
 
-    def __invert__(self) -> "Relation":
+    def __invert__(self) -> Relation:
         return NegatedRelation(self)
 
 
 def _sub_ok(mine: Subpart | None, query: Subpart | None) -> bool:
     return query is None or mine == query
+
+
+def _optional_subpart(text: str) -> Subpart | None:
+    return None if text in ("None", "") else Subpart(text)
 
 
 @dataclass(frozen=True)
@@ -51,6 +59,7 @@ class StableAgainst(Relation):
     is_planar = True
 
     def implies(self, other: Relation) -> bool:
+        """Same surfaces and margin, overhang no looser; or touching when flush (margin 0)."""
         if isinstance(other, StableAgainst):
             return (self.child == other.child and self.parent == other.parent
                     and abs(self.margin - other.margin) < 1e-9
@@ -80,6 +89,7 @@ class Touching(Relation):
     parent: Subpart | None = None
 
     def implies(self, other: Relation) -> bool:
+        """Touching implies touching with the same (or unspecified) surface roles."""
         if isinstance(other, Touching):
             return _sub_ok(self.child, other.child) and _sub_ok(self.parent, other.parent)
         return super().implies(other)
@@ -107,9 +117,11 @@ class AnyRelation(Relation):
     """Matches every relation: `objs.related_to(parent, AnyRelation())` = anything attached."""
 
     def implies(self, other: Relation) -> bool:
+        """Only the query "any relation" is implied by it."""
         return isinstance(other, AnyRelation)
 
     def intersects(self, other: Relation) -> bool:
+        """Every relation but "no relation at all" can hold with it."""
         return not isinstance(other, NegatedRelation) or not isinstance(other.inner, AnyRelation)
 
     def __repr__(self) -> str:
@@ -123,11 +135,13 @@ class NegatedRelation(Relation):
     inner: Relation
 
     def implies(self, other: Relation) -> bool:
+        """not-A implies not-B when B implies A; and it implies "any relation"."""
         if isinstance(other, NegatedRelation):
             return other.inner.implies(self.inner)
         return isinstance(other, AnyRelation)
 
     def intersects(self, other: Relation) -> bool:
+        """not-A can hold with B unless B implies A."""
         return not other.implies(self.inner)
 
     def __repr__(self) -> str:
@@ -136,9 +150,6 @@ class NegatedRelation(Relation):
 
 def parse_relation(text: str) -> Relation:
     """Read back a relation from its `repr` (as stored in scene.json)."""
-    import re
-
-    from indoorgen.errors import ConfigError
     t = text.strip()
     if t.startswith("~"):
         return NegatedRelation(parse_relation(t[1:]))
@@ -148,7 +159,6 @@ def parse_relation(text: str) -> Relation:
     if not m:
         raise ConfigError(f"unreadable relation {text!r}")
     kind, args = m.group(1), [a.strip() for a in m.group(2).split(",")]
-    sub = lambda a: None if a in ("None", "") else Subpart(a)  # noqa: E731
     if kind == "StableAgainst":
         return StableAgainst(Subpart(args[0]), Subpart(args[1]), float(args[2]))
     if kind == "SupportedBy":
@@ -156,5 +166,5 @@ def parse_relation(text: str) -> Relation:
     if kind == "CoPlanar":
         return CoPlanar(Subpart(args[0]), Subpart(args[1]), float(args[2]))
     if kind == "Touching":
-        return Touching(sub(args[0]), sub(args[1]))
+        return Touching(_optional_subpart(args[0]), _optional_subpart(args[1]))
     raise ConfigError(f"unknown relation kind in {text!r}")

@@ -21,15 +21,21 @@ view overrides the measures it can get faster from its cell grid.
 """
 from __future__ import annotations
 
+import itertools
 import math
+from collections.abc import Callable, Hashable, Iterable
 from functools import reduce
-from typing import Callable, Iterable
+from typing import Any, TypeVar, cast
 
+import networkx as nx
 import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from indoorgen.constraints.expressions import GeometricTerm, ObjSet, Scalar, _scalar
+from indoorgen.constraints.node import Env, EvalContext, Tag
+from indoorgen.constraints.scalars import Scalar, ScalarLike, as_scalar
+from indoorgen.constraints.sets import ObjSet
+from indoorgen.constraints.terms import GeometricTerm
 from indoorgen.model.tags import Semantics
 
 #: Tag of storey objects; the id of the staircase placeholder (watched by the staircase terms).
@@ -39,6 +45,8 @@ STAIR_PLACEHOLDER = "stair_placeholder"
 MIN_DOOR_WALL = 1.5
 #: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
 CORNER_TURN_DEG = 20.0
+
+R = TypeVar("R")
 
 
 # --------------------------------------------------------------------------------------------
@@ -53,21 +61,53 @@ class RoomView:
     has a polygon-based default here. Measures are cached per room until `invalidate(rooms)`.
     """
 
-    def __init__(self):
-        self._cache: dict[str, dict] = {}
+    def __init__(self) -> None:
+        self._cache: dict[str, dict[Hashable, Any]] = {}
 
     # -- to supply ---------------------------------------------------------------------------
-    def room_ids(self) -> list[str]: raise NotImplementedError
-    def storey_ids(self) -> list[str]: raise NotImplementedError
-    def polygon(self, o: str) -> sg.Polygon: raise NotImplementedError
-    def room_type(self, o: str) -> str: raise NotImplementedError
-    def level(self, o: str) -> int: raise NotImplementedError
-    def neighbours(self, o: str) -> list[str]: raise NotImplementedError
-    def contour(self, level: int) -> sg.Polygon: raise NotImplementedError
-    def entry_point(self, level: int) -> np.ndarray: raise NotImplementedError
-    def entry_room(self, level: int) -> str: raise NotImplementedError
-    def stair_polygon(self) -> sg.Polygon | None: raise NotImplementedError
-    def typical_area(self, o: str) -> float: raise NotImplementedError
+    def room_ids(self) -> list[str]:
+        """Every room of the plan."""
+        raise NotImplementedError
+
+    def storey_ids(self) -> list[str]:
+        """Every storey object of the plan (``storey_<level>``)."""
+        raise NotImplementedError
+
+    def polygon(self, o: str) -> sg.Polygon:
+        """Room o's outline."""
+        raise NotImplementedError
+
+    def room_type(self, o: str) -> str:
+        """Room o's type, e.g. "bedroom"."""
+        raise NotImplementedError
+
+    def level(self, o: str) -> int:
+        """The storey room o is on."""
+        raise NotImplementedError
+
+    def neighbours(self, o: str) -> list[str]:
+        """The rooms o must connect to (its room-graph neighbours)."""
+        raise NotImplementedError
+
+    def contour(self, level: int) -> sg.Polygon:
+        """The outline of storey `level`."""
+        raise NotImplementedError
+
+    def entry_point(self, level: int) -> np.ndarray:
+        """Where one enters storey `level` (the front door, or the stairs' top)."""
+        raise NotImplementedError
+
+    def entry_room(self, level: int) -> str:
+        """The room one enters storey `level` through."""
+        raise NotImplementedError
+
+    def stair_polygon(self) -> sg.Polygon | None:
+        """The staircase placeholder's outline, if the plan has stairs."""
+        raise NotImplementedError
+
+    def typical_area(self, o: str) -> float:
+        """Typical area of room o's type (m^2)."""
+        raise NotImplementedError
 
     def min_area(self, o: str) -> float:
         """Smallest acceptable area of o (m^2); none by default."""
@@ -79,89 +119,109 @@ class RoomView:
         for r in rooms:
             self._cache.pop(r, None)
 
-    def cached(self, o: str, key, fn: Callable[[], object]):
+    def cached(self, o: str, key: Hashable, fn: Callable[[], R]) -> R:
         """o's cached value under `key`, computed by `fn` the first time."""
         d = self._cache.setdefault(o, {})
         if key not in d:
             d[key] = fn()
-        return d[key]
+        value: R = d[key]
+        return value
 
     # -- ObjectView ----------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
+        """Every room and storey."""
         return frozenset(self.room_ids()) | frozenset(self.storey_ids())
 
-    def tags(self, o: str) -> frozenset:
+    def tags(self, o: str) -> frozenset[Tag]:
+        """``{"storey"}`` for a storey, else ``{Room, <room type>}``."""
         if o.startswith(STOREY):
             return frozenset({STOREY})
         return frozenset({Semantics.Room, self.room_type(o)})
 
     def generator(self, o: str) -> str:
+        """Rooms have no generator: ""."""
         return ""
 
-    def relations(self, o: str) -> list:
+    def relations(self, o: str) -> list[Any]:
+        """Rooms relate to nothing: []."""
         return []
 
     def center(self, o: str) -> np.ndarray:
+        """The centroid of the room's outline (z = 0)."""
         c = self.polygon(o).centroid
         return np.array([c.x, c.y, 0.0])
 
     def front(self, o: str) -> np.ndarray:
+        """Rooms face +X."""
         return np.array([1.0, 0.0, 0.0])
 
     def side_axis(self, o: str) -> np.ndarray:
+        """Rooms' side axis is +Y."""
         return np.array([0.0, 1.0, 0.0])
 
     def front_point(self, o: str) -> np.ndarray:
+        """The room's centre."""
         return self.center(o)
 
     def yaw(self, o: str) -> float:
+        """Rooms are unrotated: 0."""
         return 0.0
 
     def extents(self, o: str) -> np.ndarray:
+        """The size of the room's bounding box (height 0)."""
         x0, y0, x1, y1 = self.polygon(o).bounds
         return np.array([x1 - x0, y1 - y0, 0.0])
 
     def footprint(self, o: str) -> sg.Polygon:
+        """The room's outline."""
         return self.polygon(o)
 
-    def outline(self, o: str):
+    def outline(self, o: str) -> Any:
+        """The room's walls: its outline's exterior ring."""
         return self.polygon(o).exterior
 
-    def world_mesh(self, o: str):
+    def world_mesh(self, o: str) -> Any:
+        """Rooms have no mesh: None."""
         return None
 
-    def support_polygon(self, o: str):
+    def support_polygon(self, o: str) -> Any:
+        """Rooms rest on nothing: None."""
         return None
 
     # -- measures (polygon-based defaults) -------------------------------------------------
     def storey_level(self, s: str) -> int:
+        """The level of storey object `s` (``storey_<level>``)."""
         return int(s.rsplit("_", 1)[1])
 
     def area(self, o: str) -> float:
-        return self.polygon(o).area
+        """Floor area of o (m^2)."""
+        return float(self.polygon(o).area)
 
     def ideal_area(self, o: str) -> float:
         """Typical area of o's type, as a share of its storey's typical total, times the
         storey's area (D.3 "typical room area")."""
         lv = self.level(o)
         total = math.fsum(self.typical_area(r) for r in self.room_ids() if self.level(r) == lv)
-        return self.typical_area(o) / total * self.contour(lv).area
+        return float(self.typical_area(o) / total * self.contour(lv).area)
 
     def aspect_ratio(self, o: str) -> float:
+        """max(w/h, h/w) of o's bounding box (1 = square)."""
         x0, y0, x1, y1 = self.polygon(o).bounds
         w, h = x1 - x0, y1 - y0
-        return max(w / h, h / w) if min(w, h) > 0 else math.inf
+        return float(max(w / h, h / w)) if min(w, h) > 0 else math.inf
 
     def convexity(self, o: str) -> float:
+        """Convex hull area over area (1 = convex)."""
         p = self.polygon(o)
-        return p.convex_hull.area / p.area if p.area > 0 else math.inf
+        return float(p.convex_hull.area / p.area) if p.area > 0 else math.inf
 
     def wall_count(self, o: str) -> float:
+        """Number of o's corners, hence walls."""
         return float(len(_corners(self.polygon(o))))
 
-    def wall_lines(self, o: str) -> tuple[frozenset, frozenset]:
+    def wall_lines(self, o: str) -> tuple[frozenset[float], frozenset[float]]:
         """Distinct x of vertical and y of horizontal walls of o (1 mm resolution)."""
-        def f():
+        def f() -> tuple[frozenset[float], frozenset[float]]:
             pts = np.asarray(self.polygon(o).exterior.coords)
             d = np.diff(pts, axis=0)
             xs = np.round(pts[:-1, 0][np.abs(d[:, 0]) < 1e-9], 3)
@@ -170,12 +230,14 @@ class RoomView:
         return self.cached(o, "lines", f)
 
     def exterior_length(self, o: str) -> float:
-        return self.polygon(o).exterior.intersection(self.contour(self.level(o)).exterior).length
+        """Length of o's outline on the storey's exterior (m)."""
+        return float(self.polygon(o).exterior.intersection(self.contour(self.level(o)).exterior).length)
 
     def longest_exterior_wall(self, o: str) -> float:
+        """Longest straight exterior wall of o (m)."""
         ring = self.contour(self.level(o)).exterior.buffer(1e-6)
-        return max((sg.LineString(s).length for s in _segments(self.polygon(o))
-                    if ring.contains(sg.LineString(s))), default=0.0)
+        return float(max((sg.LineString(s).length for s in _segments(self.polygon(o))
+                          if ring.contains(sg.LineString(s))), default=0.0))
 
     def exterior_corners(self, o: str) -> float:
         """Corners of the storey outline that belong to o: each corner belongs to the room
@@ -190,7 +252,7 @@ class RoomView:
         p = self.polygon(o)
         r = width / 2 - 1e-4
         opened = p.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
-        return max(0.0, p.area - opened.intersection(p).area)
+        return float(max(0.0, p.area - opened.intersection(p).area))
 
     def shared_wall(self, a: str, b: str) -> tuple[float, np.ndarray | None]:
         """The longest straight wall a and b share: (length, midpoint)."""
@@ -217,19 +279,19 @@ class RoomView:
         _, mid = self.shared_wall(a, b)
         if mid is None:
             ca, cb = self.center(a)[:2], self.center(b)[:2]
-            return (ca + cb) / 2
+            halfway: np.ndarray = (ca + cb) / 2
+            return halfway
         return mid
 
     def entry_path(self, o: str) -> list[str]:
         """Rooms from the storey's entry room to o along the room graph (fewest rooms)."""
-        import networkx as nx
         lv = self.level(o)
         g = self.storey_graph(lv)
-        return nx.shortest_path(g, self.entry_room(lv), o)
+        path: list[str] = nx.shortest_path(g, self.entry_room(lv), o)
+        return path
 
-    def storey_graph(self, level: int):
+    def storey_graph(self, level: int) -> nx.Graph:
         """The room graph of one storey (from `neighbours`)."""
-        import networkx as nx
         g = nx.Graph()
         for r in self.room_ids():
             if self.level(r) == level:
@@ -241,36 +303,41 @@ class RoomView:
         """L1 distance from the storey's entry to o's centre divided by the L1 length of the walk
         through the rooms of `entry_path` (1 = no detour; D.3 "shortest path to entrance")."""
         path = self.entry_path(o)
-        pts = [np.asarray(self.entry_point(self.level(o)), float)[:2]]
-        pts += [self.passage_point(a, b) for a, b in zip(path, path[1:])]
-        pts.append(self.center(o)[:2])
-        pts = np.asarray(pts)
+        stops = [np.asarray(self.entry_point(self.level(o)), float)[:2]]
+        stops += [self.passage_point(a, b) for a, b in itertools.pairwise(path)]
+        stops.append(self.center(o)[:2])
+        pts = np.asarray(stops)
         walk = float(np.abs(np.diff(pts, axis=0)).sum())
         direct = float(np.abs(pts[-1] - pts[0]).sum())
         return direct / walk if walk > 1e-9 else 1.0
 
     def storey_area(self, s: str) -> float:
-        return self.contour(self.storey_level(s)).area
+        """Floor area of storey `s` (its outline's area)."""
+        return float(self.contour(self.storey_level(s)).area)
 
     def outline_length(self, s: str) -> float:
-        return self.contour(self.storey_level(s)).exterior.length
+        """Length of storey `s`'s outline (m)."""
+        return float(self.contour(self.storey_level(s)).exterior.length)
 
     def outline_corners(self, s: str) -> float:
+        """Corners of storey `s`'s outline."""
         return float(len(_corners(self.contour(self.storey_level(s)))))
 
     def stair_coverage(self, o: str) -> float:
+        """Share of the staircase placeholder inside o (1 if there are no stairs)."""
         sp = self.stair_polygon()
         if sp is None or sp.area <= 0:
             return 1.0
-        return self.polygon(o).intersection(sp).area / sp.area
+        return float(self.polygon(o).intersection(sp).area / sp.area)
 
     def stair_iou(self, o: str) -> float:
+        """Intersection over union of o and the staircase placeholder (1 without stairs)."""
         sp = self.stair_polygon()
         if sp is None:
             return 1.0
         p = self.polygon(o)
         inter = p.intersection(sp).area
-        return inter / (p.area + sp.area - inter)
+        return float(inter / (p.area + sp.area - inter))
 
 
 def _segments(poly: sg.Polygon) -> list[np.ndarray]:
@@ -278,10 +345,11 @@ def _segments(poly: sg.Polygon) -> list[np.ndarray]:
     return [pts[i:i + 2] for i in range(len(pts) - 1)]
 
 
-def _segments_of_line(line) -> list[np.ndarray]:
+def _segments_of_line(line: Any) -> list[np.ndarray]:
     """Straight pieces of a (multi)line, merging collinear consecutive segments."""
     pts = np.asarray(line.coords)
-    out, start = [], pts[0]
+    out: list[np.ndarray] = []
+    start = pts[0]
     for i in range(1, len(pts) - 1):
         d0, d1 = pts[i] - pts[i - 1], pts[i + 1] - pts[i]
         if abs(d0[0] * d1[1] - d0[1] * d1[0]) > 1e-9:
@@ -294,7 +362,7 @@ def _segments_of_line(line) -> list[np.ndarray]:
 def _corner_probes(poly: sg.Polygon) -> list[np.ndarray]:
     """For each corner of the outline, a point 1 mm inside it along the corner's bisector."""
     pts = np.asarray(poly.exterior.coords)[:-1]
-    out = []
+    out: list[np.ndarray] = []
     for i, p in enumerate(pts):
         a, b = pts[i] - pts[i - 1], pts[(i + 1) % len(pts)] - pts[i]
         turn = abs(math.atan2(a[0] * b[1] - a[1] * b[0], float(np.dot(a, b))))
@@ -315,7 +383,13 @@ def _corners(poly: sg.Polygon) -> np.ndarray:
     d0 = pts - np.roll(pts, 1, axis=0)
     d1 = np.roll(pts, -1, axis=0) - pts
     turn = np.abs(np.arctan2(d0[:, 0] * d1[:, 1] - d0[:, 1] * d1[:, 0], (d0 * d1).sum(axis=1)))
-    return pts[turn > math.radians(CORNER_TURN_DEG)]
+    corners: np.ndarray = pts[turn > math.radians(CORNER_TURN_DEG)]
+    return corners
+
+
+def _room_view(ev: EvalContext) -> RoomView:
+    """The evaluator's view, which room terms require to be a `RoomView`."""
+    return cast(RoomView, ev.view)
 
 
 # --------------------------------------------------------------------------------------------
@@ -330,13 +404,16 @@ def rooms_of(rooms: ObjSet, *types: str) -> ObjSet:
 class OnStorey(ObjSet):
     """The members of a set that lie on the storey (or storeys) of another set."""
 
-    def compute(self, ev, env):
-        objs, storeys = ev.get(self.children[0], env), ev.get(self.children[1], env)
-        view = ev.view
+    def compute(self, ev: EvalContext, env: Env) -> frozenset[str]:
+        """The rooms whose level is one of the storeys'."""
+        objs: frozenset[str] = ev.get(self.children[0], env)
+        storeys: frozenset[str] = ev.get(self.children[1], env)
+        view = _room_view(ev)
         levels = {view.storey_level(s) for s in storeys}
         return frozenset(o for o in objs if view.level(o) in levels)
 
-    def label(self):
+    def label(self) -> str:
+        """`on_storey`."""
         return "on_storey"
 
 
@@ -355,7 +432,7 @@ class RoomTerm(GeometricTerm):
     `measure` and called as ``view.<measure>(room, *args)``."""
 
     #: measures that read other rooms or the staircase, and what else they watch
-    _DEPENDS: dict[str, Callable] = {
+    _DEPENDS: dict[str, Callable[[RoomView, str], list[str]]] = {
         "missing_doors": lambda v, o: v.neighbours(o),
         "path_directness": lambda v, o: [*v.entry_path(o), STAIR_PLACEHOLDER],
         "stair_coverage": lambda v, o: [STAIR_PLACEHOLDER],
@@ -366,31 +443,34 @@ class RoomTerm(GeometricTerm):
     _CONSTANT = frozenset({"ideal_area", "min_area", "storey_area", "outline_length",
                            "outline_corners"})
 
-    def __init__(self, objs: ObjSet, measure: str, *args):
+    def __init__(self, objs: ObjSet, measure: str, *args: float):
         super().__init__(objs)
         self.measure, self.args = measure, args
 
-    def compute(self, ev, env):
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The measure summed over the members (constant measures watch nothing)."""
+        s: frozenset[str]
         if self.measure in self._CONSTANT:
             s = ev.get(self.children[0], env)
         else:
             (s,) = self.members(ev, env)
-        view = ev.view
+        view = _room_view(ev)
         fn = getattr(view, self.measure)
         dep = self._DEPENDS.get(self.measure)
-        total = []
+        total: list[float] = []
         for o in sorted(s):
             if dep is not None:
                 ev.watch(dep(view, o))
             total.append(float(fn(o, *self.args)))
         return math.fsum(total)
 
-    def label(self):
+    def label(self) -> str:
+        """The measure's name."""
         return self.measure
 
 
-def _term(measure: str, doc: str):
-    def make(room: ObjSet, *args) -> Scalar:
+def _term(measure: str, doc: str) -> Callable[..., Scalar]:
+    def make(room: ObjSet, *args: float) -> Scalar:
         return RoomTerm(room, measure, *args)
     make.__name__ = measure
     make.__doc__ = doc
@@ -433,11 +513,14 @@ class WallLines(GeometricTerm):
     """Number of distinct x coordinates of vertical walls plus distinct y coordinates of
     horizontal walls over all members (D.3 "collinearity": fewer means more aligned walls)."""
 
-    def compute(self, ev, env):
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The number of distinct wall lines."""
         (s,) = self.members(ev, env)
-        xs, ys = set(), set()
+        xs: set[float] = set()
+        ys: set[float] = set()
+        view = _room_view(ev)
         for o in sorted(s):
-            a, b = ev.view.wall_lines(o)
+            a, b = view.wall_lines(o)
             xs |= a
             ys |= b
         return float(len(xs) + len(ys))
@@ -449,24 +532,27 @@ def wall_lines(rooms: ObjSet) -> Scalar:
 
 
 class RatioMismatch(Scalar):
-    """max(a/b, b/a): 1 when a equals b, growing as they part (inf if either is 0)."""
+    """max(a/b, b/a): 1 when a equals b, growing as they part (1e6 if either is <= 0)."""
 
     def __init__(self, a: Scalar, b: Scalar):
         super().__init__(a, b)
 
-    def compute(self, ev, env):
-        a, b = ev.get(self.children[0], env), ev.get(self.children[1], env)
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The ratio of the larger value to the smaller."""
+        a: float = ev.get(self.children[0], env)
+        b: float = ev.get(self.children[1], env)
         if a <= 0 or b <= 0:
             return 1e6
         return max(a / b, b / a)
 
-    def label(self):
+    def label(self) -> str:
+        """`ratio_mismatch`."""
         return "ratio_mismatch"
 
 
-def ratio_mismatch(a, b) -> Scalar:
+def ratio_mismatch(a: ScalarLike, b: ScalarLike) -> Scalar:
     """max(a/b, b/a) of two scalars (D.3's typical-area mismatch)."""
-    return RatioMismatch(_scalar(a), _scalar(b))
+    return RatioMismatch(as_scalar(a), as_scalar(b))
 
 
 __all__ = ["RoomView", "STOREY", "STAIR_PLACEHOLDER", "MIN_DOOR_WALL", "rooms_of", "on_storey",

@@ -19,16 +19,23 @@ scene: rooms rebuilt with `floorplan.room.build_room`, assets from the generator
 """
 from __future__ import annotations
 
+import json
 import logging
 import zlib
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Any, Iterable
+from typing import Any
 
 import numpy as np
 import trimesh
 
+from indoorgen.architecture import scene_architecture
+from indoorgen.assets import get_factory
 from indoorgen.assets.base import Asset
+from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
+from indoorgen.export.convex import convex_parts
+from indoorgen.export.physics import Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -93,17 +100,17 @@ class ExportBundle:
     #: derived data memoised for all exporters of one bundle (inertials, convex pieces)
     _memo: dict = field(default_factory=dict, repr=False)
 
-    def inertials(self, name: str) -> dict:
+    def inertials(self, name: str) -> dict[str, Inertial]:
         """Per-link `physics.Inertial` of object `name` (computed once per distinct look)."""
-        from indoorgen.export.physics import link_inertials
         key = ("inertial", self.proto_key(name))
         if key not in self._memo:
-            self._memo[key] = link_inertials(self.assets[name], self.materials[name])
-        return self._memo[key]
+            slot_materials = {slot: ref.name for slot, ref in self.materials[name].items()}
+            self._memo[key] = link_inertials(self.assets[name], slot_materials)
+        inertials: dict[str, Inertial] = self._memo[key]
+        return inertials
 
-    def element_pieces(self, element: "ArchElement") -> list[trimesh.Trimesh]:
+    def element_pieces(self, element: ArchElement) -> list[trimesh.Trimesh]:
         """Convex collision pieces (world coordinates) of an architectural element."""
-        from indoorgen.export.convex import convex_parts
         key = ("pieces", element.path)
         if key not in self._memo:
             self._memo[key] = list(element.collision) or [
@@ -133,7 +140,7 @@ class ExportBundle:
         if key not in self._memo:
             o = self.scene.objects[name]
             mats = tuple(sorted((s, r.key) for s, r in self.materials[name].items()))
-            self._memo[key] = (o.generator, params_key(o.params), mats)
+            self._memo[key] = (o.generator, params_json(o.params), mats)
         return self._memo[key]
 
     def mesh_key(self, name: str) -> str:
@@ -143,9 +150,9 @@ class ExportBundle:
         return f"{gen}_{zlib.crc32(params.encode()) & 0xFFFFFFFF:08x}"
 
 
-def params_key(params: dict[str, Any]) -> str:
-    """Canonical text of a parameter dict (sorted keys, stable float repr)."""
-    import json
+def params_json(params: dict[str, Any]) -> str:
+    """Canonical JSON text of a parameter dict (sorted keys, stable float repr): equal params,
+    equal text, so it keys an object's look together with its generator."""
     return json.dumps(params, sort_keys=True, default=str)
 
 
@@ -170,7 +177,6 @@ def object_materials(obj: SceneObject, asset: Asset, variants: int = 1) -> dict[
     """One `MatRef` per slot of `asset`, deterministic from `obj.seed`: the material name from
     `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices)`, the texture
     variant from the same stream (`variants` distinct textures per material in a scene)."""
-    from indoorgen.assets import get_factory
     try:
         overrides = get_factory(obj.generator).material_choices
     except Exception:  # an unregistered generator: library defaults
@@ -236,15 +242,16 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
     groups = {"door": "doors", "entrance": "doors", "window": "windows"}
     for el in arch.elements:
         mats = _room_materials(scene.seed, el.room or "home")
+        path: tuple[str, ...]
         if el.kind in ("stair", "railing"):
             path = ("stairs", el.name)
         else:
             path = (f"storey_{el.storey}", groups.get(el.kind, "elements"), el.name)
-        parts = []
+        el_parts = []
         for pname, mesh in el.meshes.items():
             slot = PART_SLOTS.get(pname, "frame")
-            parts.append(ArchPart(pname, mesh, mats[slot], slot))
-        out.append(ArchElement(el.name, el.kind, el.room, path, parts,
+            el_parts.append(ArchPart(pname, mesh, mats[slot], slot))
+        out.append(ArchElement(el.name, el.kind, el.room, path, el_parts,
                                list(el.semantics) or [el.kind, "architecture"], el.room,
                                list(getattr(el, "collision", []))))
     return out
@@ -284,8 +291,6 @@ def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
     (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
     from their generators (through `cache`, an `AssetCache`, so identical objects are built
     once)."""
-    from indoorgen.architecture import scene_architecture
-    from indoorgen.assets.cache import AssetCache
     cache = cache or AssetCache()
     arch = None
     if rooms is None:

@@ -10,6 +10,7 @@ sections.
 """
 from __future__ import annotations
 
+import itertools
 import logging
 
 import numpy as np
@@ -39,7 +40,7 @@ def convex_parts(mesh: trimesh.Trimesh, max_pieces: int = 256) -> list[trimesh.T
         if v - levels[-1] > LEVEL_TOL:
             levels.append(v)
     out: list[trimesh.Trimesh] = []
-    for z0, z1 in zip(levels[:-1], levels[1:]):
+    for z0, z1 in itertools.pairwise(levels):
         if z1 - z0 < MIN_BAND:
             continue
         eps = min(1e-4, (z1 - z0) / 4)
@@ -51,8 +52,8 @@ def convex_parts(mesh: trimesh.Trimesh, max_pieces: int = 256) -> list[trimesh.T
             for poly in _convex_polygons(lo):
                 out.append(_prism(poly, z0, z1))
         else:
-            pts = [_ring_points(lo, z0), _ring_points(hi, z1)]
-            pts = np.concatenate([p for p in pts if len(p)])
+            rings = [_ring_points(lo, z0), _ring_points(hi, z1)]
+            pts = np.concatenate([p for p in rings if len(p)])
             if len(pts) >= 4:
                 try:
                     out.append(trimesh.convex.convex_hull(pts))

@@ -23,7 +23,7 @@ class Piece:
     normals: np.ndarray   # (V, 3) float, unit
     faces: np.ndarray     # (F, 3) int
 
-    def transformed(self, m: np.ndarray) -> "Piece":
+    def transformed(self, m: np.ndarray) -> Piece:
         """The piece under the 4x4 rigid transform `m`."""
         return Piece(self.vertices @ m[:3, :3].T + m[:3, 3], self.uv, self.normals @ m[:3, :3].T,
                      self.faces)
@@ -71,8 +71,8 @@ def weld(tri: np.ndarray, uv: np.ndarray, nrm: np.ndarray, decimals: int = 6) ->
     rows = np.concatenate([tri.reshape(-1, 3), uv.reshape(-1, 2), nrm.reshape(-1, 3)], axis=1)
     # rows as opaque byte strings: np.unique on them is ~4x faster than with axis=0
     # (+ 0.0 turns -0.0 into 0.0, whose bytes differ)
-    key = np.ascontiguousarray(np.round(rows, decimals) + 0.0)
-    key = key.view(np.dtype((np.void, key.dtype.itemsize * key.shape[1]))).ravel()
+    rounded = np.ascontiguousarray(np.round(rows, decimals) + 0.0)
+    key = rounded.view(np.dtype((np.void, rounded.dtype.itemsize * rounded.shape[1]))).ravel()
     _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     v = rows[first]
     return Piece(v[:, :3], v[:, 3:5], v[:, 5:8], inverse.reshape(f, 3).astype(np.int64))

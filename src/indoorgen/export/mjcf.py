@@ -23,7 +23,7 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from indoorgen.export.bundle import ExportBundle
+from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
 from indoorgen.export.physics import Inertial, matrix_to_quat
@@ -82,7 +82,7 @@ class _Assets:
             attrs["rgba"] = f"{r:.4f} {g:.4f} {b:.4f} {info.opacity:.3f}"
         if emissive:
             attrs["emission"] = "1"
-        ET.SubElement(self.el, "material", **attrs)
+        ET.SubElement(self.el, "material", attrs)
         self._names.add(name)
         return name
 
@@ -94,7 +94,7 @@ def _inertial(body: ET.Element, inertial: Inertial, frame: np.ndarray) -> None:
                   mass=f"{inertial.mass:.6g}", diaginertia=_f(moments))
 
 
-def _collision_geom(assets: "_Assets", geom: CollisionGeom, offset: np.ndarray) -> ET.Element:
+def _collision_geom(assets: _Assets, geom: CollisionGeom, offset: np.ndarray) -> ET.Element:
     """A collision <geom>: a box (half sizes) or a convex mesh, moved by `offset`."""
     if geom.is_box:
         return ET.Element("geom", {"class": "collision", "type": "box",
@@ -111,7 +111,7 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
         if vf.link == link:
             ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                          "material": assets.material(
-                                             vf.material, vf.slot in ("emissive", "bulb")),
+                                             vf.material, vf.slot in EMISSIVE_SLOTS),
                                          "pos": pos})
     for plink, geom in files.collisions(name):
         if plink == link:

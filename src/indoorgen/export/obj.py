@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import logging
 import os
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from indoorgen.export.bundle import ArchElement, ExportBundle, MatRef
+from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
 from indoorgen.export.meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
 from indoorgen.export.textures import TextureStore
 
@@ -51,7 +52,7 @@ def obj_text(groups: list[tuple[str, Piece, float]], mtllib: str | None = None) 
 
 
 def mtl_text(materials: dict[str, MatRef], textures: TextureStore, mtl_dir: Path,
-             emissive: set[str] = frozenset()) -> str:
+             emissive: AbstractSet[str] = frozenset()) -> str:
     """MTL text: one `newmtl` per entry (scalar fallbacks plus texture maps relative to
     `mtl_dir`; `map_Pr`/`map_Pm`/`norm` are the PBR extension of the format)."""
     out = []
@@ -102,6 +103,7 @@ class CollisionGeom:
 
     @property
     def is_box(self) -> bool:
+        """Whether the geom is a box primitive (no mesh file)."""
         return not self.path
 
 
@@ -175,7 +177,7 @@ class MeshFiles:
             for slot, piece in asset_slot_pieces(asset, link):
                 ref = mats.get(slot) or next(iter(mats.values()))
                 stem = f"{link}_{slot}"
-                self._write_visual(d, stem, piece, ref, slot in ("emissive", "bulb"))
+                self._write_visual(d, stem, piece, ref, slot in EMISSIVE_SLOTS)
                 files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link))
         self._visual[key] = files
         return files

@@ -8,12 +8,14 @@ it). The centre of mass and inertia come from the convex pieces, scaled to that 
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+import trimesh
 
 from indoorgen.assets.base import Asset
-from indoorgen.export.bundle import MatRef
+from indoorgen.assets.materials import get_material
 from indoorgen.export.meshes import face_slot_names
 
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros
@@ -42,7 +44,6 @@ class Inertial:
 
 def density_of(material: str) -> float:
     """kg/m^3 of a registered material (1000 if unknown)."""
-    from indoorgen.assets.materials import get_material
     try:
         return float(get_material(material).density)
     except Exception:
@@ -97,19 +98,20 @@ def volume_integrals(triangles: np.ndarray) -> np.ndarray:
     return out / np.array([6, 24, 24, 24, 60, 60, 60, 120, 120, 120], float)
 
 
-def link_inertials(asset: Asset, materials: dict[str, MatRef]) -> dict[str, Inertial]:
-    """Inertial of every link of `asset` with slot materials `materials` (see module doc).
+def link_inertials(asset: Asset, materials: Mapping[str, str]) -> dict[str, Inertial]:
+    """Inertial of every link of `asset` whose slots are made of `materials` (slot -> material
+    name; see module doc).
 
     All convex pieces' moments come from one vectorised pass over their triangles; a link's
     density-weighted moments are the sums over its pieces."""
     slots = piece_slots(asset)
     pieces = [(link, piece) for link, piece in asset.collision if len(piece.faces)]
     rho = []
-    for (link, piece), si in zip(asset.collision, slots):
+    for (_link, piece), si in zip(asset.collision, slots, strict=True):
         if len(piece.faces):
             slot = asset.slots[si] if si < len(asset.slots) else "body"
-            ref = materials.get(slot)
-            rho.append(density_of(ref.name) if ref else 1000.0)
+            material = materials.get(slot)
+            rho.append(density_of(material) if material else 1000.0)
     moments = np.zeros((len(pieces), 10))
     if pieces:
         tris = np.concatenate([np.asarray(p.vertices)[np.asarray(p.faces)] for _, p in pieces])
@@ -120,8 +122,8 @@ def link_inertials(asset: Asset, materials: dict[str, MatRef]) -> dict[str, Iner
         moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
     shells = _shell_volumes(asset)
     out = {}
-    for link in asset.links + [l for l, _ in pieces if l not in asset.links]:
-        sel = [i for i, (l, _) in enumerate(pieces) if l == link and moments[i, 0] > 1e-12]
+    for link in asset.links + [lk for lk, _ in pieces if lk not in asset.links]:
+        sel = [i for i, (lk, _) in enumerate(pieces) if lk == link and moments[i, 0] > 1e-12]
         out[link] = _link_inertial(asset, link, moments[sel], np.asarray(rho)[sel],
                                    shells.get(link))
     return out
@@ -138,7 +140,7 @@ def _shell_volumes(asset: Asset) -> dict[str, float]:
         return {"base": float(per_tri.sum())}
     vols = np.bincount(np.asarray(asset.face_links, int), weights=per_tri,
                        minlength=len(asset.links))
-    return {link: float(v) for link, v in zip(asset.links, vols)}
+    return {link: float(v) for link, v in zip(asset.links, vols, strict=False)}
 
 
 def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray,
@@ -202,7 +204,6 @@ def quat_to_matrix(q: np.ndarray) -> np.ndarray:
 
 def matrix_to_quat(m: np.ndarray) -> np.ndarray:
     """Unit quaternion (w, x, y, z) of a 3x3 rotation."""
-    import trimesh
     h = np.eye(4)
     h[:3, :3] = m
     return np.asarray(trimesh.transformations.quaternion_from_matrix(h), float)

@@ -35,7 +35,7 @@ class Stability:
 def simulate(path: str | Path, seconds: float = 2.0) -> dict[str, float]:
     """Free body name -> distance (m) its origin moved after `seconds` under gravity, from the
     poses written in the MJCF file `path`."""
-    try:
+    try:  # an optional dependency (the `test` extra), so imported only when a check runs
         import mujoco
     except ImportError as e:  # pragma: no cover - depends on the environment
         raise ConfigError("the stability check needs MuJoCo: pip install mujoco "
@@ -49,7 +49,7 @@ def simulate(path: str | Path, seconds: float = 2.0) -> dict[str, float]:
     for _ in range(int(round(seconds / m.opt.timestep))):
         mujoco.mj_step(m, d)
     moved = np.linalg.norm(d.xpos[free] - p0, axis=1)
-    return {m.body(b).name: float(x) for b, x in zip(free, moved)}
+    return {m.body(b).name: float(x) for b, x in zip(free, moved, strict=True)}
 
 
 def stability(moved: dict[str, float]) -> Stability:

@@ -14,13 +14,16 @@ import json
 import logging
 import os
 import shutil
+from collections.abc import Iterable
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Iterable
 
 import numpy as np
+from PIL import Image
 
+from indoorgen.assets import materials
+from indoorgen.assets.materials import bake, get_material
 from indoorgen.export.bundle import MatRef
 
 log = logging.getLogger(__name__)
@@ -37,7 +40,7 @@ class MaterialInfo:
 
     name: str
     family: str
-    mean_color: tuple[float, float, float]
+    mean_color: tuple[float, ...]
     mean_roughness: float
     metallic_value: float
     opacity: float
@@ -60,7 +63,6 @@ def default_cache_dir() -> Path | None:
 def _library_fingerprint() -> str:
     """Hash of the material library's sources, so a changed material never reuses a stale
     cached texture."""
-    from indoorgen.assets import materials
     h = hashlib.sha1()
     for p in sorted(Path(materials.__file__).parent.glob("*.py")):
         h.update(p.read_bytes())
@@ -91,6 +93,7 @@ class TextureStore:
 
     @property
     def enabled(self) -> bool:
+        """Whether texture files are written (resolution > 0)."""
         return self.resolution > 0
 
     # ---------------------------------------------------------------------------------------
@@ -106,16 +109,15 @@ class TextureStore:
                 self._make(r)
             return
         with ThreadPoolExecutor(self.workers) as pool:
-            for r, (paths, info) in zip(todo, pool.map(self._build, todo)):
+            for r, (paths, info) in zip(todo, pool.map(self._build, todo), strict=True):
                 self._paths[r], self._info[r] = paths, info
 
     def _make(self, ref: MatRef) -> None:
         self._paths[ref], self._info[ref] = self._build(ref)
 
     def _build(self, ref: MatRef) -> tuple[dict[str, Path], MaterialInfo]:
-        from indoorgen.assets.materials import bake, get_material
         if self._cache is not None:
-            hit = self._from_cache(ref)
+            hit = self._from_cache(self._cache, ref)
             if hit is not None:
                 return hit
         res = self.resolution if self.enabled else 16
@@ -126,7 +128,6 @@ class TextureStore:
                             maps.metallic is not None, float(get_material(ref.name).density))
         paths: dict[str, Path] = {}
         if self.enabled:
-            from PIL import Image
             self.dir.mkdir(parents=True, exist_ok=True)
             for kind, suffix in MAP_SUFFIX.items():
                 arr = getattr(maps, kind)
@@ -136,18 +137,18 @@ class TextureStore:
                 Image.fromarray(_u8(arr)).save(p, compress_level=3)
                 paths[kind] = p
             if self._cache is not None:
-                self._to_cache(ref, paths, info)
+                self._to_cache(self._cache, ref, paths, info)
         return paths, info
 
-    def _from_cache(self, ref: MatRef):
-        meta = self._cache / f"{ref.key}.json"
+    def _from_cache(self, cache: Path, ref: MatRef) -> tuple[dict[str, Path], MaterialInfo] | None:
+        meta = cache / f"{ref.key}.json"
         try:
             self.dir.mkdir(parents=True, exist_ok=True)
             d = json.loads(meta.read_text())
             info = MaterialInfo(**{**d, "mean_color": tuple(d["mean_color"])})
             paths = {}
             for kind, suffix in MAP_SUFFIX.items():
-                src = self._cache / f"{ref.key}_{suffix}.png"
+                src = cache / f"{ref.key}_{suffix}.png"
                 if kind == "metallic" and not info.has_metallic:
                     continue
                 dst = self.dir / src.name
@@ -157,16 +158,16 @@ class TextureStore:
         except (OSError, ValueError, TypeError, KeyError):
             return None
 
-    def _to_cache(self, ref: MatRef, paths: dict[str, Path], info: MaterialInfo) -> None:
+    def _to_cache(self, cache: Path, ref: MatRef, paths: dict[str, Path], info: MaterialInfo) -> None:
         try:
-            self._cache.mkdir(parents=True, exist_ok=True)
+            cache.mkdir(parents=True, exist_ok=True)
             for p in paths.values():
-                tmp = self._cache / f".{p.name}.{os.getpid()}"
+                tmp = cache / f".{p.name}.{os.getpid()}"
                 shutil.copyfile(p, tmp)
-                os.replace(tmp, self._cache / p.name)
-            tmp = self._cache / f".{ref.key}.json.{os.getpid()}"
+                os.replace(tmp, cache / p.name)
+            tmp = cache / f".{ref.key}.json.{os.getpid()}"
             tmp.write_text(json.dumps(asdict(info)))
-            os.replace(tmp, self._cache / f"{ref.key}.json")
+            os.replace(tmp, cache / f"{ref.key}.json")
         except OSError as e:  # a read-only or full cache never fails an export
             log.debug("texture cache not written: %s", e)
 

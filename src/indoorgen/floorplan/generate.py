@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
 from indoorgen.floorplan.contour import GRID, make_contour, upper_contour, user_contour

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from indoorgen.constraints.evaluator import Evaluator, Result
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.room_terms import STAIR_PLACEHOLDER
 from indoorgen.floorplan.grid import OUTSIDE
 from indoorgen.floorplan.rules import breaks_rules

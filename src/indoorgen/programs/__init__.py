@@ -1,20 +1,29 @@
-"""Built-in constraint programs, one function per room type: `program(room) -> Problem`."""
+"""Built-in constraint programs: one per room type (`rooms/`), the relations they name
+(`relations`) and the floorplan objective (`floorplan`). `get_program(room_type)` finds one."""
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
-from indoorgen.constraints import Problem
+from indoorgen.constraints import ObjSet, Problem
 from indoorgen.errors import UnknownRoomTypeError
-from indoorgen.programs.bathroom import bathroom
-from indoorgen.programs.bedroom import bedroom
-from indoorgen.programs.dining_room import dining_room
-from indoorgen.programs.kitchen import kitchen
-from indoorgen.programs.living_room import living_room
-from indoorgen.programs.office import office
-from indoorgen.programs.small_rooms import balcony, closet, garage, hallway, staircase_room, utility
-from indoorgen.programs.warehouse import warehouse
+from indoorgen.programs.rooms.balcony import balcony
+from indoorgen.programs.rooms.bathroom import bathroom
+from indoorgen.programs.rooms.bedroom import bedroom
+from indoorgen.programs.rooms.closet import closet
+from indoorgen.programs.rooms.dining_room import dining_room
+from indoorgen.programs.rooms.garage import garage
+from indoorgen.programs.rooms.hallway import hallway
+from indoorgen.programs.rooms.kitchen import kitchen
+from indoorgen.programs.rooms.living_room import living_room
+from indoorgen.programs.rooms.office import office
+from indoorgen.programs.rooms.staircase_room import staircase_room
+from indoorgen.programs.rooms.utility import utility
+from indoorgen.programs.rooms.warehouse import warehouse
 
-ROOM_PROGRAMS: dict[str, Callable[..., Problem]] = {
+#: A room program: the room (a set holding it) -> its constraint program.
+RoomProgram = Callable[[ObjSet], Problem]
+
+ROOM_PROGRAMS: dict[str, RoomProgram] = {
     "living_room": living_room,
     "dining_room": dining_room,
     "bedroom": bedroom,
@@ -31,7 +40,7 @@ ROOM_PROGRAMS: dict[str, Callable[..., Problem]] = {
 }
 
 
-def get_program(room_type: str) -> Callable[..., Problem]:
+def get_program(room_type: str) -> RoomProgram:
     """The program for `room_type`, or UnknownRoomTypeError listing the valid ones."""
     try:
         return ROOM_PROGRAMS[room_type]

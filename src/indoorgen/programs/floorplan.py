@@ -4,7 +4,9 @@ The hard constraints are what every accepted plan keeps; the twelve score terms 
 objective. Write your own with the same terms (`indoorgen.constraints.room_terms`) and pass it
 as `FloorplanConfig(program=...)`.
 """
-from indoorgen.constraints import Problem, scene
+from collections.abc import Callable
+
+from indoorgen.constraints import ObjSet, Problem, Scalar, scene
 from indoorgen.constraints.room_terms import (
     STOREY,
     aspect_ratio,
@@ -29,6 +31,7 @@ from indoorgen.constraints.room_terms import (
     wall_count,
     wall_lines,
 )
+from indoorgen.constraints.scalars import ScalarLike
 from indoorgen.model.tags import Semantics
 
 
@@ -41,10 +44,13 @@ def floorplan() -> Problem:
     square = rooms_of(rooms, "kitchen", "bedroom", "living_room", "dining_room", "bathroom",
                       "garage", "utility")
 
-    def each_room(of, term):  # summed storey by storey, so a move re-sums one storey only
+    def each_room(of: ObjSet, term: Callable[[ObjSet], ScalarLike]) -> Scalar:
+        # summed storey by storey, so a move re-sums one storey only
         return storeys.sum(lambda s: on_storey(of, s).sum(term))
 
-    def share(part, measure, total):  # (part's share of each storey's total - 1)^2
+    def share(part: ObjSet, measure: Callable[[ObjSet], Scalar],
+              total: Callable[[ObjSet], Scalar]) -> Scalar:
+        # (part's share of each storey's total - 1)^2
         return storeys.sum(
             lambda s: (on_storey(part, s).sum(measure).safediv(total(s), 1.0) - 1) ** 2)
 

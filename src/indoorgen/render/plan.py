@@ -9,8 +9,9 @@ from __future__ import annotations
 import logging
 import math
 import re
+from collections.abc import Iterable
 from os import PathLike
-from typing import Iterable
+from typing import Any
 
 import matplotlib.patheffects as pe
 import numpy as np
@@ -80,7 +81,7 @@ def draw_plan(scene: Scene, footprints: dict[str, sg.Polygon], path: str | PathL
                 if n in scene.objects and (scene.objects[n].room in names or not scene.rooms)}
         classes.update(_draw_objects(ax, scene, mine, bounds, label_small=not home))
         if scene.floorplan is not None:
-            _draw_openings(ax, scene, level)
+            _draw_openings(ax, scene, scene.floorplan, level)
         for room in rooms:
             _draw_room_label(ax, room, 9 if home else 13)
         heading = title if title is not None else _default_title(scene)
@@ -234,10 +235,9 @@ def _nearest_edge(rooms: list[Room], point: np.ndarray) -> tuple[np.ndarray, flo
     return best[1], best[2]
 
 
-def _draw_openings(ax, scene: Scene, level: int) -> None:
+def _draw_openings(ax, scene: Scene, fp: dict[str, Any], level: int) -> None:
     """A home's doors (brown), open connections (dashed), windows (blue), stairs (hatched) and
-    front entrance (triangle) on storey `level`, from the floorplan scene.json records."""
-    fp = scene.floorplan
+    front entrance (triangle) on storey `level`, from the floorplan scene.json records `fp`."""
     storey = next((s for s in fp["storeys"] if s["level"] == level), None)
     if storey is None:
         return

@@ -2,24 +2,26 @@
 
 A preview is the asset's full mesh seen from the front-left at 3/4 height, each face coloured by
 its material (the mean colour of the material its slot draws for this seed) and shaded by a
-key light and a fill light, so that shape reads without a GPU.
+key light and a fill light, so that shape reads without a GPU. Like the plan, it uses
+matplotlib's object-oriented API with the Agg canvas only (never pyplot): no global backend or
+figure state.
 """
 from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Iterable, Sequence
 
-import matplotlib
+import numpy as np
+import trimesh
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+from mpl_toolkits.mplot3d.axes3d import Axes3D
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import trimesh  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
-
-from indoorgen.assets.base import Asset, get_factory  # noqa: E402
+from indoorgen.assets.base import Asset, get_factory
+from indoorgen.assets.materials import bake, choose_materials
 
 log = logging.getLogger(__name__)
 
@@ -32,7 +34,6 @@ FILL_LIGHT = np.array([1.0, -0.8, 0.3])
 def slot_colors(asset: Asset, seed: int = 0) -> np.ndarray:
     """An RGB colour per material slot of `asset`: the mean colour of the material the slot
     draws from the material library for `seed`."""
-    from indoorgen.assets.materials import bake, choose_materials
     rng = np.random.default_rng(seed)
     chosen = choose_materials(list(asset.slots), rng)
     return np.array([bake(chosen[s], seed, 32).mean_color for s in asset.slots], float)
@@ -47,7 +48,7 @@ def shaded_face_colors(mesh: trimesh.Trimesh, base: np.ndarray) -> np.ndarray:
     return np.clip(base * light[:, None], 0, 1)
 
 
-def draw_mesh(ax, mesh: trimesh.Trimesh, face_rgb: np.ndarray) -> None:
+def draw_mesh(ax: Axes3D, mesh: trimesh.Trimesh, face_rgb: np.ndarray) -> None:
     """Draw `mesh` on a 3D axes: back faces culled, painter-sorted by matplotlib, equal aspect."""
     view = VIEW_DIR / np.linalg.norm(VIEW_DIR)
     front = mesh.face_normals @ view > -1e-3
@@ -78,14 +79,14 @@ def render_asset(asset: Asset, path: Path, *, seed: int = 0, size_px: int = 512,
                  open_joints: bool = False, title: str | None = None) -> Path:
     """Write a PNG preview of one asset (optionally with every joint at its upper limit)."""
     mesh = asset.posed({j.name: j.upper for j in asset.joints}) if open_joints else asset.mesh
-    fig = plt.figure(figsize=(size_px / 100, size_px / 100), dpi=100)
+    fig = Figure(figsize=(size_px / 100, size_px / 100), dpi=100)
+    FigureCanvasAgg(fig)
     ax = fig.add_subplot(projection="3d")
     draw_mesh(ax, mesh, asset_face_rgb(asset, mesh, seed))
     if title:
         ax.set_title(title, fontsize=9)
     fig.subplots_adjust(0, 0, 1, 0.95)
     fig.savefig(path)
-    plt.close(fig)
     return Path(path)
 
 
@@ -94,7 +95,8 @@ def contact_sheet(names: Sequence[str], path: Path, *, seed: int = 0, cols: int 
     """Draw every named generator (sampled with `seed`) in a grid, labelled, as one PNG.
     Articulated assets are drawn with their joints half open, so doors and drawers show."""
     rows = math.ceil(len(names) / cols)
-    fig = plt.figure(figsize=(cols * cell_px / 100, rows * cell_px / 100), dpi=100)
+    fig = Figure(figsize=(cols * cell_px / 100, rows * cell_px / 100), dpi=100)
+    FigureCanvasAgg(fig)
     it = progress if progress is not None else names
     for i, name in enumerate(it):
         fac = get_factory(name)
@@ -107,5 +109,4 @@ def contact_sheet(names: Sequence[str], path: Path, *, seed: int = 0, cols: int 
         ax.text2D(0.5, 0.01, name, transform=ax.transAxes, ha="center", va="bottom", fontsize=8)
     fig.subplots_adjust(0, 0, 1, 1, wspace=0, hspace=0.05)
     fig.savefig(path)
-    plt.close(fig)
     return Path(path)

@@ -17,7 +17,7 @@ import numpy as np
 
 from indoorgen.constraints.bounds import STAGE_ORDER, term_stage
 from indoorgen.constraints.evaluator import Evaluator, Result
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.solver.moves import MOVES, MoveContext
 from indoorgen.solver.state import State
 

@@ -18,7 +18,7 @@ import numpy as np
 from indoorgen.assets import Asset, Surface, factories_with, get_factory
 from indoorgen.constraints.bounds import Bound, find_bounds
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.relations import Relation
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Subpart

@@ -9,7 +9,7 @@ from tqdm import tqdm
 
 from indoorgen.constraints.bounds import STAGE_ORDER
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.constraints.expressions import Problem
+from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.state import State

@@ -1,6 +1,7 @@
 """A bedroom: a bed against a wall with nightstands either side, storage for clothes, a rug,
 lamps and pictures, and a few things on the surfaces."""
 from indoorgen.constraints import (
+    ObjSet,
     Problem,
     accessibility_cost,
     angle_alignment_cost,
@@ -9,10 +10,11 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor, on_top, on_wall
 
 
-def bedroom(room) -> Problem:
+def bedroom(room: ObjSet) -> Problem:
+    """One bed against a wall, nightstands mirroring each other beside it, clothes storage."""
     floor = scene().related_to(room, on_floor)
     beds = floor[S.Bed].excluding(S.BunkBed).related_to(room, against_wall)
     nightstands = floor[S.Nightstand].related_to(room, against_wall)
@@ -21,7 +23,7 @@ def bedroom(room) -> Problem:
     clothes_storage = wardrobes | dressers
     rugs = floor[S.Rug]
     art = scene()[S.WallArt].related_to(room, on_wall)
-    lights = scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling)
+    lights = ceiling_lights(room)
     lamps = scene()[S.Lighting].excluding(S.CeilingMounted, S.WallMounted, S.FloorLamp).related_to(
         nightstands, on_top)
     things = scene()[S.SmallObject].excluding(S.Food, S.Kitchenware, S.Tableware).related_to(

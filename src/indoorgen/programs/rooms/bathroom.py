@@ -1,11 +1,12 @@
 """A bathroom: a toilet, a basin with a mirror above it, a bath or shower in a corner, and the
 rails, hooks and holders that go on its walls."""
-from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, height, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, on_ceiling, on_floor, on_top, on_wall, side_to_wall
+from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor, on_top, on_wall, side_to_wall
 
 
-def bathroom(room) -> Problem:
+def bathroom(room: ObjSet) -> Problem:
+    """A toilet, a basin with a mirror above it, a bath or a shower, rails and hooks at hand."""
     floor = scene().related_to(room, on_floor)
     along_walls = floor.related_to(room, against_wall)
     toilets = along_walls[S.Toilet]
@@ -16,7 +17,7 @@ def bathroom(room) -> Problem:
     towel_rails = on_walls[S.TowelBar] | on_walls[S.TowelRing]
     roll_holders = on_walls[S.ToiletRollHolder]
     hooks = on_walls[S.RobeHook]
-    lights = scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling)
+    lights = ceiling_lights(room)
     towels = scene()[S.Towel].related_to(basins | baths, on_top)
     return Problem(
         constraints={

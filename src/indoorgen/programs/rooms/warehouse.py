@@ -1,11 +1,12 @@
 """A warehouse bay: pallet racks in rows along the walls and across the floor, pallets on the
 floor and on the racks' levels, boxes on the pallets, aisles kept clear."""
-from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, scene
+from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, on_floor, on_top
+from indoorgen.programs.relations import against_wall, on_floor, on_top
 
 
-def warehouse(room) -> Problem:
+def warehouse(room: ObjSet) -> Problem:
+    """Racks along the walls and across the floor, stocked pallets, aisles clear."""
     floor = scene().related_to(room, on_floor)
     racks = floor[S.PalletRack]
     wall_racks = racks.related_to(room, against_wall)

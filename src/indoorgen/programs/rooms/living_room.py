@@ -1,5 +1,6 @@
 """A living room: seating facing a TV, a coffee table, bookcases full of books, lamps and art."""
 from indoorgen.constraints import (
+    ObjSet,
     Problem,
     accessibility_cost,
     angle_alignment_cost,
@@ -8,10 +9,11 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, fully_on, on_floor, on_top, on_wall
+from indoorgen.programs.relations import against_wall, fully_on, on_floor, on_top, on_wall
 
 
-def living_room(room) -> Problem:
+def living_room(room: ObjSet) -> Problem:
+    """Seating facing the TV and a coffee table, filled bookcases, lamps and pictures."""
     floor = scene().related_to(room, on_floor)
     furniture = floor[S.Furniture]
     sofas = floor[S.Sofa].related_to(room, against_wall)
@@ -44,7 +46,8 @@ def living_room(room) -> Problem:
             "seating faces the coffee table": focus_score(seating, coffee_tables).minimize(2),
             "coffee table by the sofa": coffee_tables.mean(
                 lambda c: c.distance(sofas).hinge(0.35, 0.6)).minimize(3),
-            "lamps beside seating": lamps.mean(lambda l: l.distance(seating).hinge(0.0, 0.3)).minimize(1),
+            "lamps beside seating": lamps.mean(
+                lambda lamp: lamp.distance(seating).hinge(0.0, 0.3)).minimize(1),
             "side tables beside seating": side_tables.mean(
                 lambda t: t.distance(seating).hinge(0.0, 0.2)).minimize(1),
             "nothing but the coffee table before the seating": accessibility_cost(

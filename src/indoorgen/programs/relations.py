@@ -1,6 +1,7 @@
-"""Relations every room program uses, named for what they mean in a room."""
-from indoorgen.constraints import StableAgainst, SupportedBy
-from indoorgen.model.tags import Subpart
+"""Relations every room program uses, named for what they mean in a room, and the ceiling
+lights every room counts."""
+from indoorgen.constraints import ObjSet, StableAgainst, SupportedBy, scene
+from indoorgen.model.tags import Semantics, Subpart
 
 #: standing on the room's floor
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
@@ -19,3 +20,8 @@ on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
 #: standing wholly on a surface, nothing overhanging (a TV on its stand, a microwave)
 fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
+
+
+def ceiling_lights(room: ObjSet) -> ObjSet:
+    """The lights hanging from `room`'s ceiling (every room program counts them)."""
+    return scene()[Semantics.CeilingMounted, Semantics.Lighting].related_to(room, on_ceiling)

@@ -1,5 +1,6 @@
 """A dining room: one table with chairs evenly around it and places laid, art on the walls."""
 from indoorgen.constraints import (
+    ObjSet,
     Problem,
     accessibility_cost,
     angle_alignment_cost,
@@ -9,10 +10,11 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, at_table, on_floor, on_top, on_wall
+from indoorgen.programs.relations import against_wall, at_table, on_floor, on_top, on_wall
 
 
-def dining_room(room) -> Problem:
+def dining_room(room: ObjSet) -> Problem:
+    """One table with four to eight chairs evenly around it, places laid, art in view."""
     floor = scene().related_to(room, on_floor)
     tables = floor[S.DiningTable]
     chairs = floor[S.DiningChair]

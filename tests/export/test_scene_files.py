@@ -1,29 +1,16 @@
-"""`indoorgen export`, `indoorgen asset` and `--formats` as a user runs them."""
+"""Saved scenes re-exported without solving: same objects and materials, atomic, and bad input
+reported in one line."""
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
-import trimesh
 
-from indoorgen.errors import IndoorGenError
-from indoorgen.export import parse_formats, write_formats
-from indoorgen.export.scene_files import export_scene
-
-CLI = [sys.executable, "-m", "indoorgen.cli"]
-
-
-def run(*args, cwd=None):
-    return subprocess.run(CLI + list(args), capture_output=True, text=True, cwd=cwd, timeout=600)
-
-
-def test_parse_formats():
-    assert parse_formats(None) == ["usd", "urdf", "mjcf"]
-    assert parse_formats("glTF, usd,usd") == ["glb", "usd"]
-    with pytest.raises(IndoorGenError, match="'fbx'.*valid: usd"):
-        parse_formats("usd,fbx")
+from indoorgen.export import formats, write_formats
+from indoorgen.export.bundle import bundle_from_scene
+from indoorgen.export.scene_files import SceneFileError, export_scene, read_scene
+from indoorgen.model.scene import Scene
+from support.cli import run
 
 
 def test_export_reexports_a_saved_scene(exported, tmp_path):
@@ -39,8 +26,6 @@ def test_export_reexports_a_saved_scene(exported, tmp_path):
     text = (out / "scene.xml").read_text()
     for o in bundle.objects:
         assert f'name="{o.name}"' in text
-    from indoorgen.export.bundle import bundle_from_scene
-    from indoorgen.model.scene import Scene
     again = bundle_from_scene(Scene.from_json(json.loads((out / "scene.json").read_text())))
     assert again.materials == bundle.materials
     assert {"assets", "mjcf", "glb"} <= set(timings)
@@ -49,16 +34,25 @@ def test_export_reexports_a_saved_scene(exported, tmp_path):
 def test_export_is_atomic(exported, tmp_path, monkeypatch):
     bundle, _, _ = exported["dining_room"]
     (tmp_path / "scene.json").write_text(bundle.scene.dumps())
-    import indoorgen.export.formats as formats
-
     def boom(*a, **k):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("indoorgen.export.mjcf.write_mjcf", boom)
+    monkeypatch.setattr("indoorgen.export.formats.write_mjcf", boom)
     with pytest.raises(KeyboardInterrupt):
         export_scene(tmp_path / "scene.json", tmp_path / "out", "usd,mjcf", texture_resolution=16)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.json"]
     assert formats.write_formats is write_formats
+
+
+def test_read_scene_finds_scene_json_in_a_directory(tmp_path):
+    (tmp_path / "scene.json").write_text(json.dumps({"seed": 4, "rooms": [], "objects": []}))
+    scene, path = read_scene(tmp_path)
+    assert scene.seed == 4 and path == tmp_path / "scene.json"
+    with pytest.raises(SceneFileError, match="does not exist"):
+        read_scene(tmp_path / "nowhere")
+    (tmp_path / "bad.json").write_text("{not json")
+    with pytest.raises(SceneFileError, match="corrupt"):
+        read_scene(tmp_path / "bad.json")
 
 
 @pytest.mark.parametrize("args, needle", [
@@ -66,10 +60,6 @@ def test_export_is_atomic(exported, tmp_path, monkeypatch):
     (["export", "bad.json"], "corrupt"),
     (["export", "scene.json", "--formats", "usd,fbx"], "fbx"),
     (["export", "scene.json", "--out", "afile"], "afile"),
-    (["asset", "hovercraft", "--out", "a.glb"], "hovercraft"),
-    (["asset", "cabinet", "--param", "legs=9", "--out", "a.glb"], "legs"),
-    (["asset", "cabinet", "--param", "height=99", "--out", "a.glb"], "height"),
-    (["asset", "cabinet", "--out", "a.fbx"], "a.fbx"),
     (["generate", "--formats", "usd,stl", "--out", "x"], "stl"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, args, needle):
@@ -81,19 +71,3 @@ def test_bad_input_one_line_exit_2(tmp_path, args, needle):
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and needle in lines[0], r.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["afile", "bad.json", "scene.json"]
-
-
-def test_asset_command_writes_textured_files(tmp_path):
-    r = run("asset", "cabinet", "--seed", "3", "--param", "n_doors=2", "--out",
-            str(tmp_path / "cab.glb"), "--texture-resolution", "64")
-    assert r.returncode == 0, r.stderr
-    s = trimesh.load(tmp_path / "cab.glb")
-    assert all(g.visual.material.baseColorTexture is not None for g in s.geometry.values())
-    r = run("asset", "cabinet", "--seed", "3", "--out", str(tmp_path / "cab.usda"),
-            "--texture-resolution", "64")
-    assert r.returncode == 0, r.stderr
-    from pxr import Usd
-    stage = Usd.Stage.Open(str(tmp_path / "cab.usda"))
-    files = [p.GetAttribute("inputs:file").Get() for p in stage.Traverse()
-             if p.GetAttribute("inputs:file")]
-    assert files and all(f.resolvedPath for f in files)

@@ -1,4 +1,4 @@
-"""glTF (trimesh) and OBJ/MTL exports loaded back."""
+"""The glTF export (`scene.glb`) loaded back by trimesh."""
 from __future__ import annotations
 
 import trimesh
@@ -25,16 +25,3 @@ def test_glb_loads_with_nodes_textures_and_extras(exported):
     for o in bundle.objects:
         assert labelled[o.name]["semantics"] == sorted(o.tags)
         assert labelled[o.name]["generator"] == o.generator
-
-
-def test_obj_scene_and_objects_load(exported):
-    bundle, d, _ = exported["dining_room"]
-    whole = trimesh.load(d / "scene.obj", force="scene")
-    assert len(whole.geometry) > 0
-    for o in bundle.objects[:5]:
-        m = trimesh.load(d / "obj" / f"{o.name}.obj", force="scene")
-        assert len(m.geometry) >= 1
-        g = next(iter(m.geometry.values()))
-        assert g.visual.kind == "texture"
-    mtl = (d / "scene.mtl").read_text()
-    assert "map_Kd textures/" in mtl

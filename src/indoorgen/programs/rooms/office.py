@@ -1,10 +1,19 @@
 """A home office or study: a desk with a chair and a screen, shelves of books and files."""
-from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, height, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.programs.relations import (
+    against_wall,
+    at_table,
+    ceiling_lights,
+    fully_on,
+    on_floor,
+    on_top,
+    on_wall,
+)
 
 
-def office(room) -> Problem:
+def office(room: ObjSet) -> Problem:
+    """A desk with a chair and a screen, lit; bookcases of books; pictures at eye level."""
     floor = scene().related_to(room, on_floor)
     desks = floor[S.Desk].related_to(room, against_wall)
     chairs = floor[S.OfficeChair]
@@ -21,7 +30,7 @@ def office(room) -> Problem:
             "a laptop at most": on_desks[S.Laptop].count().in_range(0, 1),
             "bookcases": bookcases.count().in_range(1, 2),
             "books": bookcases.all(lambda b: books.related_to(b, on_top).count().in_range(6, 24)),
-            "a light": scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling).count() == 1,
+            "a light": ceiling_lights(room).count() == 1,
             "pictures": scene()[S.WallDecoration].related_to(room, on_wall).count().in_range(0, 2),
         },
         score_terms={

@@ -1,11 +1,20 @@
 """A kitchen: cabinet runs along the walls with a fridge and a cooker, wall cabinets above,
 maybe an island with stools, and kitchenware on the counters."""
-from indoorgen.constraints import Problem, accessibility_cost, angle_alignment_cost, height, scene
+from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, height, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.common import against_wall, at_table, fully_on, on_ceiling, on_floor, on_top, on_wall
+from indoorgen.programs.relations import (
+    against_wall,
+    at_table,
+    ceiling_lights,
+    fully_on,
+    on_floor,
+    on_top,
+    on_wall,
+)
 
 
-def kitchen(room) -> Problem:
+def kitchen(room: ObjSet) -> Problem:
+    """Cabinet runs with a fridge and a cooker in a working triangle, a hood over the cooker."""
     floor = scene().related_to(room, on_floor)
     along_walls = floor.related_to(room, against_wall)
     cabinets = along_walls[S.KitchenCabinet].excluding(S.KitchenIsland, S.WallMounted)
@@ -16,7 +25,7 @@ def kitchen(room) -> Problem:
     stools = floor[S.Stool]
     wall_cabinets = scene()[S.WallCabinet].related_to(room, on_wall)
     hoods = scene()[S.RangeHood].related_to(room, on_wall)
-    lights = scene()[S.CeilingMounted, S.Lighting].related_to(room, on_ceiling)
+    lights = ceiling_lights(room)
     counters = cabinets | islands
     kitchenware = scene()[S.Kitchenware].related_to(counters, on_top)
     tableware = scene()[S.Tableware].related_to(counters, on_top)

@@ -1,0 +1,1 @@
+"""The built-in room programs, one module per room type, each a function `room -> Problem`."""

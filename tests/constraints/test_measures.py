@@ -1,0 +1,104 @@
+"""The DSL's geometric measures evaluated through the expression graph against hand-computed
+values."""
+import math
+
+import pytest
+import shapely.geometry as sg
+
+from indoorgen.constraints import (
+    accessibility_cost,
+    angle_alignment_cost,
+    area,
+    center_of_support_distance,
+    distance,
+    focus_score,
+    freespace_2d,
+    height,
+    min_distance,
+    reflectional_asymmetry,
+    rotational_asymmetry,
+    scene,
+    volume,
+)
+from indoorgen.model.tags import Semantics as S
+from support.dsl import dining_view, value
+from support.fakeview import FakeView
+
+
+def test_rotational_asymmetry_zero_for_even_chairs_and_grows_when_one_moves():
+    chairs = scene()[S.Chair]
+    assert value(dining_view(), rotational_asymmetry(chairs)) == pytest.approx(0.0, abs=1e-9)
+    a = value(dining_view(0.3), rotational_asymmetry(chairs))
+    b = value(dining_view(0.6), rotational_asymmetry(chairs))
+    assert 0 < a < b
+
+
+def test_chairs_face_table_alignment_and_focus():
+    v = dining_view()
+    chairs, table = scene()[S.Chair], scene()[S.DiningTable]
+    assert value(v, angle_alignment_cost(chairs, table)) == pytest.approx(0.0, abs=1e-9)
+    assert value(v, focus_score(chairs, table)) == pytest.approx(0.0, abs=1e-9)
+    v.move("chair0", yaw=0.0)  # chair0 at +x side now faces away: cost (1 - cos 180)/2 = 1
+    assert value(v, angle_alignment_cost(chairs, table)) == pytest.approx(1.0)
+    assert value(v, focus_score(chairs, table)) == pytest.approx(1.0)
+
+
+def test_accessibility_blocker_in_front_costs_more_than_to_the_side():
+    def cost(pos):
+        v = FakeView()
+        v.add("tv", {S.TV}, (0, 0, 1.0), yaw=0.0, extents=(0.1, 1.2, 0.7))
+        v.add("box", {S.Furniture}, pos, extents=(0.6, 0.6, 0.6))
+        return value(v, accessibility_cost(scene()[S.TV], scene()[S.Furniture]))
+    front = cost((2.05, 0.0, 1.0))
+    side = cost((0.05 + 2 * math.cos(0.8), 2 * math.sin(0.8), 1.0))
+    behind = cost((-2.0, 0.0, 1.0))
+    diag = math.sqrt(3 * 0.36)
+    # the TV's front plane is x = 0.05; blocker 2 m ahead: cost = 2 / 2^2 * diag
+    assert front == pytest.approx(diag / 2)
+    assert 0 < side < front
+    assert behind == 0.0
+    slow = FakeView()
+    slow.add("tv", {S.TV}, (0, 0, 1.0), extents=(0.1, 1.2, 0.7))
+    slow.add("box", {S.Furniture}, (2.05, 0.0, 1.0), extents=(0.6, 0.6, 0.6))
+    assert value(slow, accessibility_cost(scene()[S.TV], scene()[S.Furniture], fast=False)) > front
+
+
+def test_sizes_distances_and_support():
+    v = FakeView()
+    v.add_room("r", [(0, 0), (4, 0), (4, 3), (0, 3)])
+    v.add("a", {S.Furniture}, (1, 1, 0.5), extents=(1, 2, 0.5))
+    v.add("b", {S.Furniture}, (3, 1, 0.5), extents=(1, 1, 1))
+    v.add("p", {S.Plate}, (1.2, 1.0, 0.76), extents=(0.2, 0.2, 0.02),
+          support=sg.box(0.5, 0.0, 1.5, 2.0))
+    f = scene()[S.Furniture]
+    assert value(v, volume(f)) == pytest.approx(1.0 + 1.0)
+    assert value(v, volume(f, dims=(0, 1))) == pytest.approx(2.0 + 1.0)
+    assert value(v, area(f)) == pytest.approx(2 * 1 + 1 * 1)
+    assert value(v, distance(f[S.Furniture].named("a"), scene().named("b"))) == pytest.approx(1.0)
+    assert value(v, distance(scene().named("b"), scene()[S.Room])) == pytest.approx(0.5)
+    assert value(v, min_distance(scene().named("a"), scene().named("b"))) == pytest.approx(1.0)
+    assert value(v, freespace_2d(scene().named("a"), scene()[S.Plate])) == pytest.approx(2 - 0.04)
+    assert value(v, center_of_support_distance(scene()[S.Plate])) == pytest.approx(0.2)
+    assert value(v, height(scene().named("b"))) == pytest.approx(0.5)
+
+
+def test_reflectional_asymmetry_of_nightstands():
+    v = FakeView()
+    v.add("bed", {S.Furniture}, (0, 0, 0.3), yaw=0.0, extents=(2, 1.6, 0.6))
+    v.add("n1", {S.SideTable}, (-0.7, 1.1, 0.3), yaw=0.0, extents=(0.4, 0.4, 0.5))
+    v.add("n2", {S.SideTable}, (-0.7, -1.1, 0.3), yaw=0.0, extents=(0.4, 0.4, 0.5))
+    term = reflectional_asymmetry(scene()[S.SideTable], scene().named("bed"))
+    assert value(v, term) == pytest.approx(0.0, abs=1e-9)
+    v.move("n2", center=(0.2, -1.1, 0.3))
+    assert value(v, term) > 0.0
+
+
+def test_measure_functions_equal_the_set_methods():
+    v = FakeView()
+    v.add("a", {S.Furniture}, (1, 1, 0.5), extents=(1, 2, 0.5))
+    v.add("b", {S.Furniture}, (3, 1, 0.5), extents=(1, 1, 1))
+    f, a, b = scene()[S.Furniture], scene().named("a"), scene().named("b")
+    assert value(v, f.volume()) == value(v, volume(f))
+    assert value(v, f.area()) == value(v, area(f))
+    assert value(v, a.distance(b)) == value(v, distance(a, b))
+    assert value(v, a.min_distance(b)) == value(v, min_distance(a, b))

@@ -1,0 +1,77 @@
+"""The export bundle's identities and choices: look keys, deterministic materials, which objects
+hang fixed, the architecture's elements."""
+from __future__ import annotations
+
+import numpy as np
+
+from indoorgen.assets import get_factory
+from indoorgen.export.bundle import (
+    MatRef,
+    elements_from_rooms,
+    is_fixed,
+    make_bundle,
+    object_materials,
+    params_json,
+    texture_seed,
+)
+from indoorgen.floorplan.room import build_room, rectangle
+from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
+
+
+def _object(name="cabinet_0", generator="cabinet", seed=5, relations=(), tags=()):
+    f = get_factory(generator)
+    params = f.sample_params(np.random.default_rng(seed))
+    obj = SceneObject(name, generator, params, seed, Pose(), list(tags), "r", list(relations))
+    return obj, f.create(params)
+
+
+def test_params_json_is_canonical():
+    assert params_json({"b": 1.5, "a": [1, 2]}) == params_json({"a": [1, 2], "b": 1.5})
+    assert params_json({"a": 1}) != params_json({"a": 2})
+
+
+def test_materials_are_drawn_from_the_object_seed():
+    obj, asset = _object()
+    mats = object_materials(obj, asset)
+    assert set(mats) == set(asset.slots)
+    assert mats == object_materials(obj, asset)  # the same seed, the same looks
+    ref = next(iter(mats.values()))
+    assert ref.key == f"{ref.name}_{ref.seed}" and ref.seed == texture_seed(ref.name, 0)
+    assert 0 <= texture_seed("oak", 3) < 100_000 and texture_seed("oak", 3) != texture_seed("oak", 4)
+
+
+def test_identical_objects_share_a_look_and_a_mesh_key():
+    a, asset = _object("cabinet_0")
+    b, _ = _object("cabinet_1")
+    c, other = _object("cabinet_2", seed=6)
+    scene = Scene(seed=0)
+    for o in (a, b, c):
+        scene.add_object(o)
+    bundle = make_bundle(scene, {"cabinet_0": asset, "cabinet_1": asset, "cabinet_2": other}, [])
+    assert bundle.proto_key("cabinet_0") == bundle.proto_key("cabinet_1")
+    assert bundle.mesh_key("cabinet_0") == bundle.mesh_key("cabinet_1") != bundle.mesh_key("cabinet_2")
+    assert bundle.mesh_key("cabinet_0").startswith("cabinet_")
+    assert [o.name for o in bundle.objects] == ["cabinet_0", "cabinet_1", "cabinet_2"]
+    assert all(isinstance(r, MatRef) for r in bundle.all_matrefs())
+
+
+def test_wall_and_ceiling_mounted_objects_are_fixed():
+    on_wall = RelationInstance("StableAgainst(back,wall,0)", "r", "back", "wall_0")
+    on_floor = RelationInstance("StableAgainst(bottom,floor,0)", "r", "bottom", "floor")
+    assert is_fixed(_object(relations=[on_wall])[0], ["r"])
+    assert not is_fixed(_object(relations=[on_floor])[0], ["r"])
+    assert not is_fixed(_object()[0], ["r"])  # no relation: free
+    assert is_fixed(_object(tags=["ceiling_mounted"])[0], [])
+
+
+def test_a_rooms_elements_are_its_floor_ceiling_and_walls():
+    room = Room("r", "bedroom", rectangle(4.0, 3.0))
+    scene = Scene(seed=2, rooms={"r": room})
+    geo = build_room(room)
+    els = elements_from_rooms(scene, {"r": geo})
+    assert [e.kind for e in els[:2]] == ["floor", "ceiling"]
+    assert len(els) == 2 + len(geo.walls) and all(e.path[0] == "r" for e in els)
+    again = elements_from_rooms(scene, {"r": geo})
+    assert [e.parts[0].material for e in again] == [e.parts[0].material for e in els]
+    mats = {e.parts[0].material for e in els if e.kind == "wall"}
+    assert len(mats) == 1  # every wall of a room in the same material

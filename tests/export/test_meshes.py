@@ -1,0 +1,37 @@
+"""Mesh pieces for the file formats: welded vertices, crease-aware normals, transforms."""
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from indoorgen.export.meshes import corner_normals, mesh_piece, weld
+
+
+def test_weld_shares_equal_corners_only():
+    tri = np.array([[[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0], [0, 1, 0]]], float)
+    uv = tri[:, :, :2].copy()
+    nrm = np.tile([0.0, 0.0, 1.0], (2, 3, 1))
+    p = weld(tri, uv, nrm)
+    assert len(p.vertices) == 4 and p.faces.shape == (2, 3)
+    assert np.allclose(p.vertices[p.faces], tri)
+    uv[1, 0] += 0.5  # a UV seam: the shared corner splits
+    assert len(weld(tri, uv, nrm).vertices) == 5
+    assert len(weld(tri[:0], uv[:0], nrm[:0]).vertices) == 0
+
+
+def test_box_edges_stay_sharp_and_a_sphere_smooth():
+    box = trimesh.creation.box([1, 1, 1])
+    n = corner_normals(box)
+    assert np.allclose(n, np.repeat(box.face_normals[:, None, :], 3, axis=1))
+    ball = trimesh.creation.icosphere(3)
+    n = corner_normals(ball)
+    assert np.allclose(n, ball.vertex_normals[ball.faces])
+
+
+def test_piece_transformed_moves_vertices_and_turns_normals():
+    p = mesh_piece(trimesh.creation.box([1, 2, 3]))
+    m = trimesh.transformations.rotation_matrix(np.pi / 2, [0, 0, 1])
+    m[:3, 3] = [5, 0, 0]
+    q = p.transformed(m)
+    assert np.allclose(q.vertices, p.vertices @ m[:3, :3].T + [5, 0, 0])
+    assert np.allclose(np.linalg.norm(q.normals, axis=1), 1) and np.array_equal(q.faces, p.faces)

@@ -1,0 +1,70 @@
+"""Every built-in room program: a `Problem` whose object sets name things some generator makes,
+which evaluates on an empty room (every lower count bound violated, nothing else wrong)."""
+import math
+
+import pytest
+
+from indoorgen.assets import factories_with, factory_names
+from indoorgen.constraints import Problem, scene
+from indoorgen.constraints.bounds import context_of, find_bounds
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.constraints.node import Node
+from indoorgen.errors import UnknownRoomTypeError
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs import ROOM_PROGRAMS, get_program
+from support.fakeview import FakeView
+
+
+def _nodes(problem: Problem) -> list[Node]:
+    """Every node reachable from the problem's constraints and score terms."""
+    seen, out = set(), []
+    stack = list(problem.constraints.values()) + [t.expr for t in problem.score_terms.values()]
+    while stack:
+        n = stack.pop()
+        if n.uid not in seen:
+            seen.add(n.uid)
+            out.append(n)
+            stack.extend(n.children)
+    return out
+
+
+def _empty_room():
+    view = FakeView()
+    view.add_room("r", [(0, 0), (5, 0), (5, 4), (0, 4)])
+    return view, scene()[S.Room].named("r")
+
+
+@pytest.mark.parametrize("room_type", sorted(ROOM_PROGRAMS))
+def test_program_sets_name_real_generators(room_type):
+    _, room = _empty_room()
+    problem = get_program(room_type)(room)
+    assert isinstance(problem, Problem) and problem.constraints and problem.score_terms
+    names = set(factory_names())
+    contexts = [c for c in map(context_of, _nodes(problem)) if c is not None and c.tags]
+    assert contexts
+    for ctx in contexts:
+        makers = factories_with(ctx.tags, ctx.excluded)
+        assert makers, f"{room_type}: no generator is {sorted(t.value for t in ctx.tags)}"
+        if ctx.generator is not None:
+            assert ctx.generator in names and ctx.generator in makers
+
+
+@pytest.mark.parametrize("room_type", sorted(ROOM_PROGRAMS))
+def test_program_evaluates_on_an_empty_room(room_type):
+    view, room = _empty_room()
+    problem = get_program(room_type)(room)
+    ev = Evaluator(problem, view)
+    result = ev.evaluate()
+    assert set(result.violations) == set(problem.constraints)
+    assert set(result.scores) == set(problem.score_terms)
+    assert all(math.isfinite(x) for x in [*result.violations.values(), *result.scores.values()])
+    # an empty room only misses what it must hold: each violated constraint has a count bound
+    bounds = find_bounds(problem, ev)
+    below = {b.name for b in bounds if b.below}
+    assert {n for n, x in result.violations.items() if x > 0} <= below
+    assert any(b.can_add for b in bounds)
+
+
+def test_unknown_room_type_lists_the_valid_ones():
+    with pytest.raises(UnknownRoomTypeError, match="bedroom"):
+        get_program("ballroom")
