@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from indoorgen.assets.base import get_factory
-from indoorgen.assets.generators.architecture import opening_size
+from indoorgen.assets.shapes.architectural import opening_size
 from indoorgen.assets.generators.stairs import RISER_MAX, RISER_MIN, riser_count
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make

@@ -1,6 +1,6 @@
 """Windows: casement, sliding, awning and fixed windows, and a bay window.
 
-Frame conventions (see architecture.py): the wall is the YZ plane centred on x=0, +X the room,
+Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, +X the room,
 -X the outside; the window's width runs along Y and its rough opening's bottom is at z=0 (the
 caller lifts it to the sill height). The window frame sits near the outside face; lining boards
 wrap the rest of the wall thickness, an interior sill board (stool) and architraves finish the
@@ -16,9 +16,11 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators.architecture import (
-    GAP,
-    OVERLAP,
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.architectural import (
+    CASING_REVEAL,
+    LEAF_GAP,
+    MEMBER_OVERLAP,
     casing,
     glazed_sash,
     hull,
@@ -26,7 +28,6 @@ from indoorgen.assets.generators.architecture import (
     prism,
     ring,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle
 from indoorgen.assets.shapes.primitives import Part, box_between, rod
@@ -39,8 +40,6 @@ LINING = 0.015
 STOOL = 0.025
 #: architrave thickness (m)
 CASING_T = 0.018
-#: the casing's inner edge stands back this far from the lining's face (m)
-REVEAL = 0.004
 #: how far the stool's ends (horns) reach past the architraves (m)
 HORN = 0.015
 #: width of the stop lip a hinged sash closes against (m)
@@ -68,7 +67,7 @@ class Window(PartsFactory):
     with three columns the middle one is fixed), sliding (sashes in two tracks, the operable
     ones on prismatic joints along Y), awning (top-hung sashes opening outward) and fixed
     (glazed in the frame). Panes are real 6 mm solids divided by glazing bars.
-    Surfaces: ``opening`` (the rough opening; see architecture.opening_size) and ``sill``."""
+    Surfaces: ``opening`` (the rough opening; see shapes.architectural.opening_size) and ``sill``."""
 
     name = "window"
     tags = frozenset({S.Object, S.Architecture, S.Window})
@@ -109,16 +108,16 @@ class Window(PartsFactory):
             n = max(1, min(int(p["n_sashes"]), int((Y1 - Y0 + fw) / 0.4)))
         cw = (Y1 - Y0 - (n - 1) * fw) / n
         cols = [(Y0 + i * (cw + fw), Y0 + i * (cw + fw) + cw) for i in range(n)]
-        sd = min(0.05, fd - GAP - 0.012)
-        sd2 = (fd - 0.024 - 4 * GAP) / 2
-        tracks = (xf0 + 0.008 + GAP, xf0 + 0.016 + 3 * GAP + sd2)  # sash A and B low x
+        sd = min(0.05, fd - LEAF_GAP - 0.012)
+        sd2 = (fd - 0.024 - 4 * LEAF_GAP) / 2
+        tracks = (xf0 + 0.008 + LEAF_GAP, xf0 + 0.016 + 3 * LEAF_GAP + sd2)  # sash A and B low x
         tip = {"casement": xf0 + sd + 0.037, "awning": xf0 + sd + 0.037,
                "sliding": tracks[1] + sd2 + 0.022, "fixed": xf1}[style]
         R = max(T / 2 + max(p["sill_projection"], CASING_T + 0.01), tip + 0.005)
         return {"W": W, "H": H, "T": T, "fd": fd, "xf0": xf0, "xf1": xf1, "Y0": Y0, "Y1": Y1,
                 "Z0": Z0, "Z1": Z1, "n": n, "cols": cols, "sd": sd, "sd2": sd2, "tracks": tracks,
                 "R": R, "ct_ex": CASING_T if p["exterior_sill"] else R - T / 2,
-                "cy": W / 2 - LINING + REVEAL, "cz": H - LINING + REVEAL}
+                "cy": W / 2 - LINING + CASING_REVEAL, "cz": H - LINING + CASING_REVEAL}
 
     def _moving(self, p, g) -> list[int]:
         """Indices of the columns (casement, awning) or sashes (sliding) that move."""
@@ -150,29 +149,29 @@ class Window(PartsFactory):
         ext = p["exterior_sill"]
         x_stool = g["xf0"] if ext else -T / 2
         wood = [box_between((x_stool, -W / 2, 0.0), (T / 2, W / 2, STOOL)),
-                box_between((T / 2 - OVERLAP, -half_w, 0.0), (R, half_w, STOOL))]
-        lining = [box_between((-T / 2, -W / 2, STOOL - OVERLAP), (T / 2, -W / 2 + LINING, H - LINING + OVERLAP)),
-                  box_between((-T / 2, W / 2 - LINING, STOOL - OVERLAP), (T / 2, W / 2, H - LINING + OVERLAP)),
+                box_between((T / 2 - MEMBER_OVERLAP, -half_w, 0.0), (R, half_w, STOOL))]
+        lining = [box_between((-T / 2, -W / 2, STOOL - MEMBER_OVERLAP), (T / 2, -W / 2 + LINING, H - LINING + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - LINING, STOOL - MEMBER_OVERLAP), (T / 2, W / 2, H - LINING + MEMBER_OVERLAP)),
                   box_between((-T / 2, -W / 2, H - LINING), (T / 2, W / 2, H))]
-        frame = [ring(-W / 2 + LINING - OVERLAP, W / 2 - LINING + OVERLAP, STOOL - OVERLAP, H - LINING + OVERLAP,
-                      g["xf0"], g["xf1"], fw + OVERLAP)]
+        frame = [ring(-W / 2 + LINING - MEMBER_OVERLAP, W / 2 - LINING + MEMBER_OVERLAP, STOOL - MEMBER_OVERLAP, H - LINING + MEMBER_OVERLAP,
+                      g["xf0"], g["xf1"], fw + MEMBER_OVERLAP)]
         mullions = [] if p["style"] == "sliding" else zip(g["cols"][:-1], g["cols"][1:])
         for (a0, a1), (b0, _) in mullions:
             # set 3 mm back from both frame faces: no faces flush with the frame's
-            frame.append(box_between((g["xf0"] + 0.003, a1 - OVERLAP, g["Z0"] - OVERLAP),
-                                     (g["xf1"] - 0.003, b0 + OVERLAP, g["Z1"] + OVERLAP)))
-        trims = casing(T / 2, 1, -cy, cy, STOOL - OVERLAP, cz, cw, CASING_T, True)
+            frame.append(box_between((g["xf0"] + 0.003, a1 - MEMBER_OVERLAP, g["Z0"] - MEMBER_OVERLAP),
+                                     (g["xf1"] - 0.003, b0 + MEMBER_OVERLAP, g["Z1"] + MEMBER_OVERLAP)))
+        trims = casing(T / 2, 1, -cy, cy, STOOL - MEMBER_OVERLAP, cz, cw, CASING_T, True)
         out = [Part(s, "wood") for s in wood] + [Part(s, "frame") for s in lining + frame + trims]
         z_ex = 0.0
         if ext:
-            x_in = g["xf0"] + OVERLAP
+            x_in = g["xf0"] + MEMBER_OVERLAP
 
             def top(x: float) -> float:  # the sill's upper face slopes down outward
                 return STOOL * (0.55 + 0.45 * (x + R) / (x_in + R))
 
-            for xa, xb, hw in ((-T / 2, x_in, W / 2), (-R, -T / 2 + OVERLAP, half_w)):
+            for xa, xb, hw in ((-T / 2, x_in, W / 2), (-R, -T / 2 + MEMBER_OVERLAP, half_w)):
                 out.append(Part(prism([(xa, 0.0), (xb, 0.0), (xb, top(xb)), (xa, top(xa))], -hw, hw, "y"), "stone"))
-            z_ex = top(-T / 2 - g["ct_ex"]) - OVERLAP
+            z_ex = top(-T / 2 - g["ct_ex"]) - MEMBER_OVERLAP
         out += [Part(s, "frame") for s in casing(-T / 2, -1, -cy, cy, z_ex, cz, cw, g["ct_ex"], True)]
         return out
 
@@ -188,16 +187,16 @@ class Window(PartsFactory):
             if i in moving:
                 link = f"sash_{i}"
                 out += glazed_sash(xf0, xf0 + sd, *self._sash_box(p, g, i), sw, cols, rows, link)
-                out.append(Part(ring(c0 - OVERLAP, c1 + OVERLAP, Z0 - OVERLAP, Z1 + OVERLAP,
-                                     xf0 + sd + GAP, xf1, STOP + OVERLAP), "frame"))
+                out.append(Part(ring(c0 - MEMBER_OVERLAP, c1 + MEMBER_OVERLAP, Z0 - MEMBER_OVERLAP, Z1 + MEMBER_OVERLAP,
+                                     xf0 + sd + LEAF_GAP, xf1, STOP + MEMBER_OVERLAP), "frame"))
                 out.append(Part(self._handle(p, g, i), "handle", link))
             elif p["style"] == "fixed":  # glazed into the frame between beads
                 xm = (xf0 + xf1) / 2  # (sunk 2 mm into the frame: no face flush with a mullion's)
-                out += glazed_sash(xm - 0.015, xm + 0.015, c0 - 2 * OVERLAP, c1 + 2 * OVERLAP,
-                                   Z0 - 2 * OVERLAP, Z1 + 2 * OVERLAP, 0.015 + 2 * OVERLAP, cols, rows, "base")
+                out += glazed_sash(xm - 0.015, xm + 0.015, c0 - 2 * MEMBER_OVERLAP, c1 + 2 * MEMBER_OVERLAP,
+                                   Z0 - 2 * MEMBER_OVERLAP, Z1 + 2 * MEMBER_OVERLAP, 0.015 + 2 * MEMBER_OVERLAP, cols, rows, "base")
             else:  # the fixed middle light of a three-column casement
-                out += glazed_sash(xf0, xf0 + sd, c0 - 2 * OVERLAP, c1 + 2 * OVERLAP, Z0 - 2 * OVERLAP,
-                                   Z1 + 2 * OVERLAP, sw, cols, rows, "base")
+                out += glazed_sash(xf0, xf0 + sd, c0 - 2 * MEMBER_OVERLAP, c1 + 2 * MEMBER_OVERLAP, Z0 - 2 * MEMBER_OVERLAP,
+                                   Z1 + 2 * MEMBER_OVERLAP, sw, cols, rows, "base")
         return out
 
     def _hinge(self, p, g, i: int) -> str:
@@ -208,14 +207,14 @@ class Window(PartsFactory):
         return "left" if i == 0 else "right"
 
     def _sash_box(self, p, g, i: int) -> tuple[float, float, float, float]:
-        """The extent (y0, y1, z0, z1) of the hinged sash in column i: GAP inside the frame, more
+        """The extent (y0, y1, z0, z1) of the hinged sash in column i: LEAF_GAP inside the frame, more
         on the side that swings away from the hinge, whose inner corner first moves toward the
         frame by up to depth^2 / (2 span) as the sash opens."""
         c0, c1 = g["cols"][i]
         hinge = self._hinge(p, g, i)
         span = (g["Z1"] - g["Z0"]) if hinge == "top" else (c1 - c0)
-        free = max(GAP, g["sd"] ** 2 / (2 * (span - 2 * GAP)) + 0.0015)
-        y0, y1, z0, z1 = c0 + GAP, c1 - GAP, g["Z0"] + GAP, g["Z1"] - GAP
+        free = max(LEAF_GAP, g["sd"] ** 2 / (2 * (span - 2 * LEAF_GAP)) + 0.0015)
+        y0, y1, z0, z1 = c0 + LEAF_GAP, c1 - LEAF_GAP, g["Z0"] + LEAF_GAP, g["Z1"] - LEAF_GAP
         if hinge == "top":
             z0 = g["Z0"] + free
         elif hinge == "left":
@@ -237,7 +236,7 @@ class Window(PartsFactory):
             y = y1 - sw / 2 if hinge == "left" else y0 + sw / 2
             z = (z0 + z1) / 2
             arm = box_between((x1 + 0.025, y - 0.006, z - 0.09), (x1 + 0.037, y + 0.006, z + 0.008))
-        return solid_union([rod((x1 - OVERLAP, y, z), (x1 + 0.01, y, z), 0.011, 12),
+        return solid_union([rod((x1 - MEMBER_OVERLAP, y, z), (x1 + 0.01, y, z), 0.011, 12),
                             box_between((x1 + 0.008, y - 0.006, z - 0.008), (x1 + 0.03, y + 0.006, z + 0.008)), arm])
 
     def _sliding_layout(self, p, g) -> list[tuple[float, float, str, float]]:
@@ -245,17 +244,17 @@ class Window(PartsFactory):
         Y0, Y1, ov = g["Y0"], g["Y1"], 0.03
         if g["n"] == 3:
             L = (Y1 - Y0) / 3
-            return [(Y0 + GAP, Y0 + L + ov, "B", 1.0), (Y0 + L - ov, Y1 - L + ov, "A", 0.0),
-                    (Y1 - L - ov, Y1 - GAP, "B", -1.0)]
+            return [(Y0 + LEAF_GAP, Y0 + L + ov, "B", 1.0), (Y0 + L - ov, Y1 - L + ov, "A", 0.0),
+                    (Y1 - L - ov, Y1 - LEAF_GAP, "B", -1.0)]
         ym = (Y0 + Y1) / 2
         if p["hinge_side"] == "left":
-            return [(Y0 + GAP, ym + ov, "B", 1.0), (ym - ov, Y1 + OVERLAP, "A", 0.0)]
-        return [(ym - ov, Y1 - GAP, "B", -1.0), (Y0 - OVERLAP, ym + ov, "A", 0.0)]
+            return [(Y0 + LEAF_GAP, ym + ov, "B", 1.0), (ym - ov, Y1 + MEMBER_OVERLAP, "A", 0.0)]
+        return [(ym - ov, Y1 - LEAF_GAP, "B", -1.0), (Y0 - MEMBER_OVERLAP, ym + ov, "A", 0.0)]
 
     def _travel(self, p, g) -> float:
         if g["n"] == 3:
             return 0.45 * (g["Y1"] - g["Y0"]) / 3
-        return 0.9 * ((g["Y1"] - g["Y0"]) / 2 - 0.03 - 2 * GAP)
+        return 0.9 * ((g["Y1"] - g["Y0"]) / 2 - 0.03 - 2 * LEAF_GAP)
 
     def _sliding(self, p, g) -> list[Part]:
         """Two tracks between lips on the head and sill: a fixed sash outside, the sliding
@@ -264,18 +263,18 @@ class Window(PartsFactory):
         xf0, xf1, sd2 = g["xf0"], g["xf1"], g["sd2"]
         Y0, Y1, Z0, Z1, sw = g["Y0"], g["Y1"], g["Z0"], g["Z1"], p["sash_width"]
         xa, xb = g["tracks"]
-        lips = [(xf0, xf0 + 0.008), (xa + sd2 + GAP, xb - GAP), (xb + sd2 + GAP, xf1)]
+        lips = [(xf0, xf0 + 0.008), (xa + sd2 + LEAF_GAP, xb - LEAF_GAP), (xb + sd2 + LEAF_GAP, xf1)]
         for l0, l1 in lips:
-            for za, zb in ((Z0 - OVERLAP, Z0 + 0.012), (Z1 - 0.012, Z1 + OVERLAP)):
-                out.append(Part(box_between((l0, Y0 - OVERLAP, za), (l1, Y1 + OVERLAP, zb)), "frame"))
+            for za, zb in ((Z0 - MEMBER_OVERLAP, Z0 + 0.012), (Z1 - 0.012, Z1 + MEMBER_OVERLAP)):
+                out.append(Part(box_between((l0, Y0 - MEMBER_OVERLAP, za), (l1, Y1 + MEMBER_OVERLAP, zb)), "frame"))
         rows = _grid(int(p["grid_rows"]), Z1 - Z0)
         for i, (y0, y1, track, direction) in enumerate(self._sliding_layout(p, g)):
             cols = _grid(int(p["grid_cols"]), y1 - y0)
             if track == "A":
-                out += glazed_sash(xa, xa + sd2, y0, y1, Z0 - OVERLAP, Z1 + OVERLAP, sw, cols, rows, "base")
+                out += glazed_sash(xa, xa + sd2, y0, y1, Z0 - MEMBER_OVERLAP, Z1 + MEMBER_OVERLAP, sw, cols, rows, "base")
                 continue
             link = f"sash_{i}"
-            out += glazed_sash(xb, xb + sd2, y0, y1, Z0 + GAP, Z1 - GAP, sw, cols, rows, link)
+            out += glazed_sash(xb, xb + sd2, y0, y1, Z0 + LEAF_GAP, Z1 - LEAF_GAP, sw, cols, rows, link)
             yh = y0 + sw / 2 if direction > 0 else y1 - sw / 2
             out.append(Part(bar_handle((xb + sd2, yh, (Z0 + Z1) / 2), min(0.16, 0.4 * (Z1 - Z0)), True,
                                        0.022, 0.012), "handle", link))
@@ -362,7 +361,7 @@ class BayWindow(PartsFactory):
         pts = [(xo, -W / 2), (xo - D, -W / 2 + inset), (xo - D, W / 2 - inset), (xo, W / 2)]
         roof_h = 0.06 + (D + self.EAVE) * math.tan(math.radians(28.0)) if p["roof_style"] == "hipped" else 0.09
         return {"W": W, "H": H, "T": T, "D": D, "pts": np.array(pts), "roof_h": roof_h,
-                "cy": W / 2 - LINING + REVEAL, "cz": H - self.BOARD + REVEAL}
+                "cy": W / 2 - LINING + CASING_REVEAL, "cz": H - self.BOARD + CASING_REVEAL}
 
     def _outside(self, g, grow: float) -> sg.Polygon:
         """The bay's plan outside the wall face, grown by `grow` beyond its glazing."""
@@ -382,15 +381,15 @@ class BayWindow(PartsFactory):
             top = H + g["roof_h"]
             pts = [(x, y, z) for x, y in outer for z in (0.0, top)]
             return [Part(hull(pts), "frame"),
-                    Part(box_between((-T / 2 - OVERLAP, -half_w, 0.0), (x_room, half_w, g["cz"] + cw)), "wood")]
-        board_outline = self._outside(g, 0.03).union(sg.box(-T / 2 - OVERLAP, -W / 2, T / 2, W / 2)).union(
-            sg.box(T / 2 - OVERLAP, -half_w, x_room, half_w))
+                    Part(box_between((-T / 2 - MEMBER_OVERLAP, -half_w, 0.0), (x_room, half_w, g["cz"] + cw)), "wood")]
+        board_outline = self._outside(g, 0.03).union(sg.box(-T / 2 - MEMBER_OVERLAP, -W / 2, T / 2, W / 2)).union(
+            sg.box(T / 2 - MEMBER_OVERLAP, -half_w, x_room, half_w))
         out = [Part(prism(_coords(board_outline), 0.0, self.BOARD), "wood"),
-               Part(prism(_coords(self._outside(g, 0.03).union(sg.box(-T / 2 - OVERLAP, -W / 2, T / 2, W / 2))),
+               Part(prism(_coords(self._outside(g, 0.03).union(sg.box(-T / 2 - MEMBER_OVERLAP, -W / 2, T / 2, W / 2))),
                           H - self.BOARD, H), "wood")]
-        lining = [box_between((-T / 2, -W / 2, self.BOARD - OVERLAP), (T / 2, -W / 2 + LINING, H - self.BOARD + OVERLAP)),
-                  box_between((-T / 2, W / 2 - LINING, self.BOARD - OVERLAP), (T / 2, W / 2, H - self.BOARD + OVERLAP))]
-        lining += casing(T / 2, 1, -g["cy"], g["cy"], self.BOARD - OVERLAP, g["cz"], cw, CASING_T, True)
+        lining = [box_between((-T / 2, -W / 2, self.BOARD - MEMBER_OVERLAP), (T / 2, -W / 2 + LINING, H - self.BOARD + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - LINING, self.BOARD - MEMBER_OVERLAP), (T / 2, W / 2, H - self.BOARD + MEMBER_OVERLAP))]
+        lining += casing(T / 2, 1, -g["cy"], g["cy"], self.BOARD - MEMBER_OVERLAP, g["cz"], cw, CASING_T, True)
         out += [Part(s, "frame") for s in lining]
         out += self._glazing(p, g)
         out += self._roof(p, g)
@@ -399,7 +398,7 @@ class BayWindow(PartsFactory):
     def _glazing(self, p, g) -> list[Part]:
         """The three glazed panels along the bay's edges and the posts at its corners."""
         pts, fd, fw = g["pts"], self.FRAME_D, p["frame_width"]
-        zb, zt = self.BOARD - OVERLAP, g["H"] - self.BOARD + OVERLAP
+        zb, zt = self.BOARD - MEMBER_OVERLAP, g["H"] - self.BOARD + MEMBER_OVERLAP
         out: list[Part] = []
         edges = list(zip(pts[:-1], pts[1:]))
         for k, (a, b) in enumerate(edges):
@@ -427,7 +426,7 @@ class BayWindow(PartsFactory):
         H, T, W = g["H"], g["T"], g["W"]
         eave = self._outside(g, self.EAVE)
         coords = np.asarray(eave.exterior.coords)[:-1]
-        fascia = prism(_coords(eave), H - 0.05, H + OVERLAP)
+        fascia = prism(_coords(eave), H - 0.05, H + MEMBER_OVERLAP)
         if p["roof_style"] == "flat":
             cap = prism(_coords(eave), H, H + g["roof_h"])
             return [Part(fascia, "frame"), Part(cap, "stone")]
@@ -469,9 +468,9 @@ def _panel(s0: float, s1: float, zb: float, zt: float, fd: float, fw: float, lit
     bars = []  # a little thinner than the frame, so that no faces lie flush with its faces
     for i in range(1, lites):
         y = iy0 + (iy1 - iy0) * i / lites
-        bars.append(box_between((0.002, y - fw / 2, iz0 - OVERLAP), (fd - 0.002, y + fw / 2, iz1 + OVERLAP)))
+        bars.append(box_between((0.002, y - fw / 2, iz0 - MEMBER_OVERLAP), (fd - 0.002, y + fw / 2, iz1 + MEMBER_OVERLAP)))
     if transom:
         z = iz1 - 0.22 * (iz1 - iz0)
-        bars.append(box_between((0.004, iy0 - OVERLAP, z - fw / 3), (fd - 0.004, iy1 + OVERLAP, z + fw / 3)))
+        bars.append(box_between((0.004, iy0 - MEMBER_OVERLAP, z - fw / 3), (fd - 0.004, iy1 + MEMBER_OVERLAP, z + fw / 3)))
     out += [(b, "frame") for b in bars]
     return out

@@ -1,6 +1,6 @@
 """Doors: a hinged interior door set, a barn-style sliding door and a front door.
 
-Frame conventions (see architecture.py): the wall is the YZ plane centred on x=0, the opening's
+Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, the opening's
 width along Y, its bottom at z=0; hinged leaves sit in the middle of the wall (so that their
 handles reach equally far out of both faces and the bounding box stays symmetric about the wall)
 in front of a stop on their -X side, and swing into +X about the +X edge on their hinge side.
@@ -14,11 +14,13 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators.architecture import (
-    GAP,
+from indoorgen.assets.base import Joint, Param, register
+from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.shapes.architectural import (
+    CASING_REVEAL,
     GLASS,
-    OVERLAP,
+    LEAF_GAP,
+    MEMBER_OVERLAP,
     casing,
     grid_cells,
     hull,
@@ -27,7 +29,6 @@ from indoorgen.assets.generators.architecture import (
     round_knob,
     slab,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle, hinge_motion
 from indoorgen.assets.shapes.primitives import Part, box, box_between, rod, torus
@@ -37,8 +38,6 @@ from indoorgen.model.tags import Semantics as S
 STANDOFF = 0.065
 #: distance from the latch edge to the handle's centre (m)
 BACKSET = 0.065
-#: the casing's inner edge stands back this far from the jamb's face (m)
-REVEAL = 0.004
 #: door slots and their materials
 DOOR_MATERIALS = {"frame": {"painted_wood": 4.0, "oak": 1.5, "walnut": 0.7},
                   "door": {"painted_wood": 3.0, "oak": 1.5, "walnut": 1.0, "pine_planks": 0.5},
@@ -80,7 +79,7 @@ def leaf(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float, zones
                     cuts.append(box_between((min(xa, xb), cy0, cz0), (max(xa, xb), cy1, cz1)))
                     if zone.kind == "raised":
                         bw = min(0.04, 0.25 * (cy1 - cy0), 0.25 * (cz1 - cz0))
-                        xb, xt = xf - side * (dp + OVERLAP), xf - side * 0.002
+                        xb, xt = xf - side * (dp + MEMBER_OVERLAP), xf - side * 0.002
                         pts = [(xb, cy0 + 0.003, cz0 + 0.003), (xb, cy1 - 0.003, cz0 + 0.003),
                                (xb, cy0 + 0.003, cz1 - 0.003), (xb, cy1 - 0.003, cz1 - 0.003),
                                (xt, cy0 + bw, cz0 + bw), (xt, cy1 - bw, cz0 + bw),
@@ -101,10 +100,10 @@ def _glazing(x0, x1, y0, y1, z0, z1, slot, link) -> list[Part]:
     out = [Part(box_between((xm - GLASS / 2, y0 - 0.006, z0 - 0.006),
                             (xm + GLASS / 2, y1 + 0.006, z1 + 0.006)), "glass", link)]
     for xa, xb in ((x1 - b, x1), (x0, x0 + b)):
-        beads = [box_between((xa, y0 - OVERLAP, z0 - OVERLAP), (xb, y0 + b, z1 + OVERLAP)),
-                 box_between((xa, y1 - b, z0 - OVERLAP), (xb, y1 + OVERLAP, z1 + OVERLAP)),
-                 box_between((xa, y0, z0 - OVERLAP), (xb, y1, z0 + b)),
-                 box_between((xa, y0, z1 - b), (xb, y1, z1 + OVERLAP))]
+        beads = [box_between((xa, y0 - MEMBER_OVERLAP, z0 - MEMBER_OVERLAP), (xb, y0 + b, z1 + MEMBER_OVERLAP)),
+                 box_between((xa, y1 - b, z0 - MEMBER_OVERLAP), (xb, y1 + MEMBER_OVERLAP, z1 + MEMBER_OVERLAP)),
+                 box_between((xa, y0, z0 - MEMBER_OVERLAP), (xb, y1, z0 + b)),
+                 box_between((xa, y0, z1 - b), (xb, y1, z1 + MEMBER_OVERLAP))]
         out.append(Part(solid_union(beads), slot, link))
     return out
 
@@ -163,11 +162,43 @@ def handle_pair(style: str, face_x: float, y: float, z: float, toward: float) ->
 def max_swing(wall: float, leaf_face: float, casing_t: float, gap: float) -> float:
     """The widest opening (rad, 90 to 100 degrees) at which a leaf hinged at its +X face
     `leaf_face`, `gap` from the jamb, clears the jamb's corner at the wall face and the casing
-    standing REVEAL back from it."""
+    standing CASING_REVEAL back from it."""
     margin = 0.0007
     a = math.atan((gap - margin) / max(wall / 2 - leaf_face, 1e-6))
-    b = math.atan((gap + REVEAL - margin) / max(wall / 2 + casing_t - leaf_face, 1e-6))
+    b = math.atan((gap + CASING_REVEAL - margin) / max(wall / 2 + casing_t - leaf_face, 1e-6))
     return min(math.radians(100.0), math.pi / 2 + min(a, b))
+
+
+def _frame_block(g: dict[str, Any], wall: float, casing_t: float, casing_w: float) -> Part:
+    """A door set's frame as one block (its placeholder): the lining across the wall and the
+    casings on both faces, whose inner edges are at +-g["cy"] and head at g["cz"]."""
+    return Part(box_between((-wall / 2 - casing_t, -g["cy"] - casing_w, 0.0),
+                            (wall / 2 + casing_t, g["cy"] + casing_w, g["cz"] + casing_w)), "frame")
+
+
+def _casings(g: dict[str, Any], wall: float, casing_t: float, casing_w: float) -> list[m3d.Manifold]:
+    """The architraves on both faces of a wall `wall` thick around a door set's opening."""
+    out: list[m3d.Manifold] = []
+    for side in (1, -1):
+        out += casing(side * wall / 2, side, -g["cy"], g["cy"], 0.0, g["cz"], casing_w, casing_t, True)
+    return out
+
+
+def _hinged_placeholder(g: dict[str, Any], wall: float, casing_t: float, casing_w: float
+                        ) -> list[Part]:
+    """The placeholder of a hinged door set: its frame block and a leaf block reaching out of
+    both wall faces as far as the casings or the handles."""
+    reach = max(wall / 2 + casing_t, g["lx1"] + STANDOFF)
+    return [_frame_block(g, wall, casing_t, casing_w),
+            Part(box_between((-reach, g["ly0"], g["lz0"]), (reach, g["ly1"], g["lz1"])), "door", "leaf")]
+
+
+def _leaf_joint(hinge_side: str, g: dict[str, Any], wall: float, casing_t: float) -> Joint:
+    """The revolute joint of a hinged leaf (g["lx0"..."lz1"]), swinging into +X as far as the
+    jamb and the casings let it (`max_swing`)."""
+    upper = max_swing(wall, g["lx1"], casing_t, LEAF_GAP)
+    m = hinge_motion(hinge_side, g["lx1"], g["ly0"], g["ly1"], 0.0, 0.0, "leaf")
+    return make_joint("leaf_joint", m, 0.0, upper)
 
 
 # ------------------------------------------------------------------------- interior door
@@ -177,7 +208,7 @@ class InteriorDoor(PartsFactory):
     wall faces and a leaf on a revolute joint (hinged left or right, swinging into +X up to
     about 95 degrees). Leaves are flat, panelled (2-6 raised or recessed panels), glazed (lites
     above a panel) or louvred, with a lever or knob on both faces. Surfaces: ``opening`` (the
-    rough opening in the wall's centre plane; see architecture.opening_size)."""
+    rough opening in the wall's centre plane; see shapes.architectural.opening_size)."""
 
     name = "interior_door"
     tags = frozenset({S.Object, S.Architecture, S.Door, S.InteriorDoor})
@@ -206,32 +237,29 @@ class InteriorDoor(PartsFactory):
 
     def _g(self, p: dict[str, Any]) -> dict[str, float]:
         W, H, jt, lt = p["width"], p["height"], p["jamb_thickness"], p["leaf_thickness"]
-        return {"ly0": -W / 2 + jt + GAP, "ly1": W / 2 - jt - GAP, "lz0": 0.01, "lz1": H - jt - GAP,
+        return {"ly0": -W / 2 + jt + LEAF_GAP, "ly1": W / 2 - jt - LEAF_GAP, "lz0": 0.01, "lz1": H - jt - LEAF_GAP,
                 "lx0": -lt / 2, "lx1": lt / 2,
-                "cy": W / 2 - jt + REVEAL, "cz": H - jt + REVEAL}
+                "cy": W / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
     def parts(self, p, detail):
         T, ct, cw = p["wall_thickness"], p["casing_thickness"], p["casing_width"]
         g = self._g(p)
         if not detail:
-            reach = max(T / 2 + ct, g["lx1"] + STANDOFF)
-            return [Part(box_between((-T / 2 - ct, -g["cy"] - cw, 0.0), (T / 2 + ct, g["cy"] + cw, g["cz"] + cw)), "frame"),
-                    Part(box_between((-reach, g["ly0"], g["lz0"]), (reach, g["ly1"], g["lz1"])), "door", "leaf")]
+            return _hinged_placeholder(g, T, ct, cw)
         return self._frame(p, g) + self._leaf(p, g)
 
     def _frame(self, p, g) -> list[Part]:
         W, H, T = p["width"], p["height"], p["wall_thickness"]
         jt, ct, cw = p["jamb_thickness"], p["casing_thickness"], p["casing_width"]
-        sx0, sx1 = g["lx0"] - GAP - 0.012, g["lx0"] - GAP
+        sx0, sx1 = g["lx0"] - LEAF_GAP - 0.012, g["lx0"] - LEAF_GAP
         sp = 0.012  # how far the stop reaches into the opening
-        pieces = [box_between((-T / 2, -W / 2, 0.0), (T / 2, -W / 2 + jt, H - jt + OVERLAP)),
-                  box_between((-T / 2, W / 2 - jt, 0.0), (T / 2, W / 2, H - jt + OVERLAP)),
+        pieces = [box_between((-T / 2, -W / 2, 0.0), (T / 2, -W / 2 + jt, H - jt + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - jt, 0.0), (T / 2, W / 2, H - jt + MEMBER_OVERLAP)),
                   box_between((-T / 2, -W / 2, H - jt), (T / 2, W / 2, H)),
-                  box_between((sx0, -W / 2 + jt - OVERLAP, 0.0), (sx1, -W / 2 + jt + sp, H - jt + OVERLAP)),
-                  box_between((sx0, W / 2 - jt - sp, 0.0), (sx1, W / 2 - jt + OVERLAP, H - jt + OVERLAP)),
-                  box_between((sx0, -W / 2 + jt, H - jt - sp), (sx1, W / 2 - jt, H - jt + OVERLAP))]
-        for side in (1, -1):
-            pieces += casing(side * T / 2, side, -g["cy"], g["cy"], 0.0, g["cz"], cw, ct, True)
+                  box_between((sx0, -W / 2 + jt - MEMBER_OVERLAP, 0.0), (sx1, -W / 2 + jt + sp, H - jt + MEMBER_OVERLAP)),
+                  box_between((sx0, W / 2 - jt - sp, 0.0), (sx1, W / 2 - jt + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
+                  box_between((sx0, -W / 2 + jt, H - jt - sp), (sx1, W / 2 - jt, H - jt + MEMBER_OVERLAP))]
+        pieces += _casings(g, T, ct, cw)
         return [Part(s, "frame") for s in pieces]
 
     def _leaf(self, p, g) -> list[Part]:
@@ -247,10 +275,7 @@ class InteriorDoor(PartsFactory):
         return parts
 
     def joints(self, p):
-        g = self._g(p)
-        upper = max_swing(p["wall_thickness"], g["lx1"], p["casing_thickness"], GAP)
-        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, 0.0, "leaf")
-        return [make_joint("leaf_joint", m, 0.0, upper)]
+        return [_leaf_joint(p["hinge_side"], self._g(p), p["wall_thickness"], p["casing_thickness"])]
 
     def extra_surfaces(self, p):
         return [opening_surface(-p["width"] / 2, p["width"] / 2, 0.0, p["height"])]
@@ -306,18 +331,18 @@ class SlidingDoor(PartsFactory):
         return {"W": W, "H": H, "T": T, "lt": lt, "ct": ct, "lx0": lx0, "lx1": lx0 + lt,
                 "ly0": ly0, "ly1": ly1, "lz0": lz0, "lz1": lz1, "rz0": rail_z0, "rz1": rail_z1,
                 "rx": lx0 + lt / 2, "wr": wr, "sgn": sgn, "travel": travel, "wheel_in": wheel_in,
-                "ry0": lo_y, "ry1": hi_y, "cy": W / 2 - 0.02 + REVEAL, "cz": H - 0.02 + REVEAL}
+                "ry0": lo_y, "ry1": hi_y, "cy": W / 2 - 0.02 + CASING_REVEAL, "cz": H - 0.02 + CASING_REVEAL}
 
     def parts(self, p, detail):
         g = self._g(p)
         T, cw, ct = g["T"], p["casing_width"], g["ct"]
-        wheel_top = g["rz1"] + GAP + 2 * g["wr"]
+        wheel_top = g["rz1"] + LEAF_GAP + 2 * g["wr"]
         front = g["lx1"] + (0.06 if p["handle"] == "bar" else 0.012)  # the pull, or hanger bolts
         if p["leaf_style"] in ("x_brace", "z_brace"):
             front = max(front, g["lx1"] + 0.017)  # the applied frame and a flush cup in it
         if not detail:
-            return [Part(box_between((-T / 2 - ct, -g["cy"] - cw, 0.0), (T / 2 + ct, g["cy"] + cw, g["cz"] + cw)), "frame"),
-                    Part(box_between((T / 2 - OVERLAP, g["ry0"], self._board_z0(p, g)),
+            return [_frame_block(g, T, ct, cw),
+                    Part(box_between((T / 2 - MEMBER_OVERLAP, g["ry0"], self._board_z0(p, g)),
                                      (g["rx"] + 0.012, g["ry1"], g["rz1"] + 0.025)), "metal"),
                     Part(box_between((g["lx0"], g["ly0"], g["lz0"]), (front, g["ly1"], wheel_top)), "door", "leaf")]
         return self._frame(p, g) + self._track(p, g) + self._leaf(p, g)
@@ -325,11 +350,10 @@ class SlidingDoor(PartsFactory):
     def _frame(self, p, g) -> list[Part]:
         T, W, H, cw, ct = g["T"], g["W"], g["H"], p["casing_width"], g["ct"]
         jt = 0.02
-        pieces = [box_between((-T / 2, -W / 2, 0.0), (T / 2, -W / 2 + jt, H - jt + OVERLAP)),
-                  box_between((-T / 2, W / 2 - jt, 0.0), (T / 2, W / 2, H - jt + OVERLAP)),
+        pieces = [box_between((-T / 2, -W / 2, 0.0), (T / 2, -W / 2 + jt, H - jt + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - jt, 0.0), (T / 2, W / 2, H - jt + MEMBER_OVERLAP)),
                   box_between((-T / 2, -W / 2, H - jt), (T / 2, W / 2, H))]
-        for side in (1, -1):
-            pieces += casing(side * T / 2, side, -g["cy"], g["cy"], 0.0, g["cz"], cw, ct, True)
+        pieces += _casings(g, T, ct, cw)
         return [Part(s, "frame") for s in pieces]
 
     @staticmethod
@@ -343,12 +367,12 @@ class SlidingDoor(PartsFactory):
         T, rx = g["T"], g["rx"]
         rail = box_between((rx - 0.004, g["ry0"], g["rz0"]), (rx + 0.004, g["ry1"], g["rz1"]))
         bz0 = self._board_z0(p, g)
-        board = box_between((T / 2 - OVERLAP, g["ry0"], bz0), (T / 2 + g["ct"], g["ry1"], g["rz1"] + 0.02))
+        board = box_between((T / 2 - MEMBER_OVERLAP, g["ry0"], bz0), (T / 2 + g["ct"], g["ry1"], g["rz1"] + 0.02))
         n = max(2, int((g["ry1"] - g["ry0"]) / 0.4) + 1)
         zc = (g["rz0"] + g["rz1"]) / 2
-        spacers = [rod((T / 2 + g["ct"] - OVERLAP, y, zc), (rx + 0.006, y, zc), 0.01, 12)
+        spacers = [rod((T / 2 + g["ct"] - MEMBER_OVERLAP, y, zc), (rx + 0.006, y, zc), 0.01, 12)
                    for y in np.linspace(g["ry0"] + 0.05, g["ry1"] - 0.05, n)]
-        stops = [box_between((rx - 0.012, y - 0.015, g["rz1"] - OVERLAP), (rx + 0.012, y + 0.015, g["rz1"] + 0.025))
+        stops = [box_between((rx - 0.012, y - 0.015, g["rz1"] - MEMBER_OVERLAP), (rx + 0.012, y + 0.015, g["rz1"] + 0.025))
                  for y in (g["ry0"] + 0.015, g["ry1"] - 0.015)]
         return [Part(board, "frame"), Part(solid_union([rail] + spacers + stops), "metal")]
 
@@ -376,7 +400,7 @@ class SlidingDoor(PartsFactory):
     def _braces(x1, y0, y1, z0, z1, style) -> m3d.Manifold:
         """An applied frame (stiles and rails 15 mm proud of the +X face) with diagonal braces."""
         b, d = 0.11, 0.015
-        xa, xb = x1 - OVERLAP, x1 + d
+        xa, xb = x1 - MEMBER_OVERLAP, x1 + d
         zm = (z0 + z1) / 2
         pieces = [box_between((xa, y0, z0), (xb, y0 + b, z1)), box_between((xa, y1 - b, z0), (xb, y1, z1)),
                   box_between((xa, y0, z0), (xb, y1, z0 + b)), box_between((xa, y0, z1 - b), (xb, y1, z1)),
@@ -394,9 +418,9 @@ class SlidingDoor(PartsFactory):
         roll on it."""
         out = []
         x1, wr, rx = g["lx1"], g["wr"], g["rx"]
-        zw = g["rz1"] + GAP + wr
+        zw = g["rz1"] + LEAF_GAP + wr
         for y in (g["ly0"] + g["wheel_in"], g["ly1"] - g["wheel_in"]):
-            strap = box_between((x1 - OVERLAP, y - 0.02, g["lz1"] - 0.18), (x1 + 0.006, y + 0.02, zw + 0.02))
+            strap = box_between((x1 - MEMBER_OVERLAP, y - 0.02, g["lz1"] - 0.18), (x1 + 0.006, y + 0.02, zw + 0.02))
             axle = rod((rx - 0.01, y, zw), (x1 + 0.006, y, zw), 0.008, 12)
             wheel = rod((rx - 0.009, y, zw), (rx + 0.009, y, zw), wr, 24)
             bolts = [rod((x1, y, z), (x1 + 0.012, y, z), 0.008, 8) for z in (g["lz1"] - 0.14, g["lz1"] - 0.06)]
@@ -437,8 +461,8 @@ def _diagonal(xa: float, xb: float, ya: float, za: float, yb: float, zb: float, 
     n = np.array([-d[1], d[0]]) / np.linalg.norm(d) * w / 2
     pts = [(x, y + s * n[0], z + s * n[1]) for (y, z) in ((ya, za), (yb, zb)) for s in (-1, 1)
            for x in (xa, xb)]
-    clip = box_between((xa - 0.01, min(ya, yb) - 0.01, min(za, zb) - OVERLAP),
-                       (xb + 0.01, max(ya, yb) + 0.01, max(za, zb) + OVERLAP))
+    clip = box_between((xa - 0.01, min(ya, yb) - 0.01, min(za, zb) - MEMBER_OVERLAP),
+                       (xb + 0.01, max(ya, yb) + 0.01, max(za, zb) + MEMBER_OVERLAP))
     return hull(pts) ^ clip
 
 
@@ -493,44 +517,41 @@ class ExteriorDoor(PartsFactory):
         d1 = d0 + W
         lites = []
         if nl:
-            lites.append((y_left + jt, d0 + OVERLAP))
+            lites.append((y_left + jt, d0 + MEMBER_OVERLAP))
         if nr:
-            lites.append((d1 - OVERLAP, total / 2 - jt))
+            lites.append((d1 - MEMBER_OVERLAP, total / 2 - jt))
         return {"W": W, "H": H, "T": T, "jt": jt, "lt": lt, "th": th, "total": total,
                 "d0": d0, "d1": d1, "lites": lites, "posts": [d0, d1 - jt] + ([y_left] if nl else []) + ([total / 2 - jt] if nr else []),
-                "ly0": d0 + jt + GAP, "ly1": d1 - jt - GAP, "lz0": th + GAP, "lz1": H - jt - GAP,
+                "ly0": d0 + jt + LEAF_GAP, "ly1": d1 - jt - LEAF_GAP, "lz0": th + LEAF_GAP, "lz1": H - jt - LEAF_GAP,
                 "lx0": -lt / 2, "lx1": lt / 2,
-                "cy": total / 2 - jt + REVEAL, "cz": H - jt + REVEAL}
+                "cy": total / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
     def parts(self, p, detail):
         g = self._g(p)
         T, ct, cw = g["T"], self.CASING_T, p["casing_width"]
         if not detail:
-            reach = max(T / 2 + ct, g["lx1"] + STANDOFF)
-            return [Part(box_between((-T / 2 - ct, -g["cy"] - cw, 0.0), (T / 2 + ct, g["cy"] + cw, g["cz"] + cw)), "frame"),
-                    Part(box_between((-reach, g["ly0"], g["lz0"]), (reach, g["ly1"], g["lz1"])), "door", "leaf")]
+            return _hinged_placeholder(g, T, ct, cw)
         return self._frame(p, g) + self._leaf(p, g)
 
     def _frame(self, p, g) -> list[Part]:
         T, H, jt, th, ct, cw = g["T"], g["H"], g["jt"], g["th"], self.CASING_T, p["casing_width"]
         total = g["total"]
         lx0 = g["lx0"]
-        sx0, sx1 = lx0 - GAP - 0.015, lx0 - GAP
+        sx0, sx1 = lx0 - LEAF_GAP - 0.015, lx0 - LEAF_GAP
         sp = 0.015
         out = [Part(self._threshold(g, ct), "stone")]
         pieces = [box_between((-T / 2, -total / 2, H - jt), (T / 2, total / 2, H))]
         for y in g["posts"]:
-            pieces.append(box_between((-T / 2, y, 0.3 * th), (T / 2, y + jt, H - jt + OVERLAP)))
+            pieces.append(box_between((-T / 2, y, 0.3 * th), (T / 2, y + jt, H - jt + MEMBER_OVERLAP)))
         d0, d1 = g["d0"] + jt, g["d1"] - jt
-        pieces += [box_between((sx0, d0 - OVERLAP, th - OVERLAP), (sx1, d0 + sp, H - jt + OVERLAP)),
-                   box_between((sx0, d1 - sp, th - OVERLAP), (sx1, d1 + OVERLAP, H - jt + OVERLAP)),
-                   box_between((sx0, d0, H - jt - sp), (sx1, d1, H - jt + OVERLAP))]
-        for side in (1, -1):
-            pieces += casing(side * T / 2, side, -g["cy"], g["cy"], 0.0, g["cz"], cw, ct, True)
+        pieces += [box_between((sx0, d0 - MEMBER_OVERLAP, th - MEMBER_OVERLAP), (sx1, d0 + sp, H - jt + MEMBER_OVERLAP)),
+                   box_between((sx0, d1 - sp, th - MEMBER_OVERLAP), (sx1, d1 + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
+                   box_between((sx0, d0, H - jt - sp), (sx1, d1, H - jt + MEMBER_OVERLAP))]
+        pieces += _casings(g, T, ct, cw)
         out += [Part(s, "frame") for s in pieces]
         for ya, yb in g["lites"]:  # fixed side lites: glass over a raised panel
-            zb = th - OVERLAP
-            zt = H - jt + OVERLAP
+            zb = th - MEMBER_OVERLAP
+            zt = H - jt + MEMBER_OVERLAP
             zones = [Zone(zb + 0.12 + 0.35 + 0.08, zt - 0.1, "glass", 1, 1), Zone(zb + 0.12, zb + 0.12 + 0.35, "raised")]
             out += leaf(g["lx0"], g["lx1"], ya, yb, zb, zt, zones, min(0.07, 0.25 * (yb - ya)), "base",
                         slot="frame")
@@ -567,12 +588,12 @@ class ExteriorDoor(PartsFactory):
         if style == "craftsman":  # the dentil shelf under the lites, outside only (on the +X
             zt = hi - 0.45        # face it would hit the hinge jamb when the leaf is open)
             parts.append(Part(box_between((x0 - 0.025, y0 + stile - 0.02, zt + 0.02),
-                                          (x0 + OVERLAP, y1 - stile + 0.02, zt + 0.05)), "door", "leaf"))
+                                          (x0 + MEMBER_OVERLAP, y1 - stile + 0.02, zt + 0.05)), "door", "leaf"))
         left = p["hinge_side"] == "left"
         yh = y1 - BACKSET if left else y0 + BACKSET
         hw = [handle_pair(p["handle"], x1, yh, zl, -1.0 if left else 1.0),
-              solid_union([rod((x1 - OVERLAP, yh, zl + 0.16), (x1 + 0.012, yh, zl + 0.16), 0.024, 16),
-                           rod((x0 + OVERLAP, yh, zl + 0.16), (x0 - 0.012, yh, zl + 0.16), 0.024, 16),
+              solid_union([rod((x1 - MEMBER_OVERLAP, yh, zl + 0.16), (x1 + 0.012, yh, zl + 0.16), 0.024, 16),
+                           rod((x0 + MEMBER_OVERLAP, yh, zl + 0.16), (x0 - 0.012, yh, zl + 0.16), 0.024, 16),
                            box_between((x1 + 0.011, yh - 0.004, zl + 0.145), (x1 + 0.025, yh + 0.004, zl + 0.175))])]
         if p["knocker"]:
             hw.append(self._knocker(x0, yh if style in ("half_lite", "full_lite") else (y0 + y1) / 2,
@@ -591,9 +612,7 @@ class ExteriorDoor(PartsFactory):
 
     def joints(self, p):
         g = self._g(p)
-        upper = max_swing(g["T"], g["lx1"], self.CASING_T, GAP)
-        m = hinge_motion(p["hinge_side"], g["lx1"], g["ly0"], g["ly1"], 0.0, 0.0, "leaf")
-        return [make_joint("leaf_joint", m, 0.0, upper)]
+        return [_leaf_joint(p["hinge_side"], g, g["T"], self.CASING_T)]
 
     def extra_surfaces(self, p):
         g = self._g(p)

@@ -1,7 +1,8 @@
-"""Architecture: what the door, window and staircase generators share, and `opening_size`.
+"""Architectural parts: what the door, window and staircase generators share, and `opening_size`.
 
-The generators live in doors.py (interior_door, sliding_door, exterior_door), windows.py
-(window, bay_window) and stairs.py (staircase, stair_railing).
+The generators live in generators/openings/doors.py (interior_door, sliding_door,
+exterior_door), generators/openings/windows.py (window, bay_window) and generators/stairs.py
+(staircase, stair_railing); floorplan/fixtures.py sizes wall openings with `opening_size`.
 
 Door and window frame: the wall is the YZ plane, its thickness along X centred on x=0 (+X is the
 side a door swings into and the room side of a window; -X the other room or the outside), the
@@ -28,12 +29,15 @@ from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, lathe, rod
 from indoorgen.model.tags import Subpart
 
-#: how far touching pieces overlap so that each link unions into one shell (m)
-OVERLAP = 0.001
-#: clearance around door leaves and window sashes in their frames (m, > parts.MOVING_GAP)
-GAP = 0.003
+#: how far touching members (jambs, rails, treads, balusters) overlap so that each link unions
+#: into one shell (m; finer than primitives.OVERLAP)
+MEMBER_OVERLAP = 0.001
+#: clearance around door leaves and window sashes in their frames (m, > moving_parts.MOVING_GAP)
+LEAF_GAP = 0.003
 #: glass pane thickness (m)
 GLASS = 0.006
+#: a casing's inner edge stands back this far from the face of the jamb or lining it frames (m)
+CASING_REVEAL = 0.004
 
 #: side lites of an exterior door: choice -> count
 SIDELITE_COUNT = {"none": 0, "left": 1, "right": 1, "both": 2}
@@ -69,7 +73,8 @@ def hull(points: Sequence[Sequence[float]]) -> m3d.Manifold:
     return m3d.Manifold.hull_points(np.asarray(points, float))
 
 
-def prism(points: Sequence[Sequence[float]], lo: float, hi: float, axis: str = "z") -> m3d.Manifold:
+def prism(points: Sequence[Sequence[float]] | np.ndarray, lo: float, hi: float, axis: str = "z"
+          ) -> m3d.Manifold:
     """A 2D polygon extruded from `lo` to `hi` along `axis`: "z" takes (x, y) points, "y" takes
     (x, z) points and "x" takes (y, z) points. The polygon may be concave."""
     pts = np.asarray(points, float)
@@ -107,8 +112,8 @@ def slab(y0: float, y1: float, z0: float, z1: float, x0: float, x1: float, detai
     """A board x0..x1 x y0..y1 x z0..z1 with slightly eased edges when detailed."""
     lo, hi = np.array([x0, y0, z0]), np.array([x1, y1, z1])
     if detail and radius > 1e-4:
-        return bevel_box(hi - lo, (lo + hi) / 2, radius, 1)
-    return box_between(lo, hi)
+        return bevel_box(tuple(hi - lo), tuple((lo + hi) / 2), radius, 1)
+    return box_between(tuple(lo), tuple(hi))
 
 
 def casing(face_x: float, side: int, y0: float, y1: float, z0: float, z_head: float,
@@ -116,12 +121,12 @@ def casing(face_x: float, side: int, y0: float, y1: float, z0: float, z_head: fl
     """An architrave on one wall face around an opening: two legs whose inner edges are at y0
     and y1, standing from z0, and a head whose lower edge is at z_head; `width` wide and
     `thickness` proud of the face at x=face_x (side=+1 the +X face, -1 the -X face). Its back
-    sinks OVERLAP into what it covers."""
-    xa, xb = ((face_x - OVERLAP, face_x + thickness) if side > 0
-              else (face_x - thickness, face_x + OVERLAP))
+    sinks MEMBER_OVERLAP into what it covers."""
+    xa, xb = ((face_x - MEMBER_OVERLAP, face_x + thickness) if side > 0
+              else (face_x - thickness, face_x + MEMBER_OVERLAP))
     r = min(0.004, thickness * 0.3)
-    return [slab(y0 - width, y0, z0, z_head + OVERLAP, xa, xb, detail, r),
-            slab(y1, y1 + width, z0, z_head + OVERLAP, xa, xb, detail, r),
+    return [slab(y0 - width, y0, z0, z_head + MEMBER_OVERLAP, xa, xb, detail, r),
+            slab(y1, y1 + width, z0, z_head + MEMBER_OVERLAP, xa, xb, detail, r),
             slab(y0 - width, y1 + width, z_head, z_head + width, xa, xb, detail, r)]
 
 
@@ -148,15 +153,15 @@ def grid_cells(y0: float, y1: float, z0: float, z1: float, cols: int, rows: int,
 def muntins(y0: float, y1: float, z0: float, z1: float, x0: float, x1: float, cols: int,
             rows: int, bar: float = 0.02) -> list[m3d.Manifold]:
     """Glazing bars dividing the pane y0..y1 x z0..z1 into cols x rows lites, x0..x1 deep, their
-    ends sunk OVERLAP into the surrounding frame."""
+    ends sunk MEMBER_OVERLAP into the surrounding frame."""
     out = []
     for i in range(1, cols):
         y = y0 + (y1 - y0) * i / cols
-        out.append(box_between((x0, y - bar / 2, z0 - OVERLAP), (x1, y + bar / 2, z1 + OVERLAP)))
+        out.append(box_between((x0, y - bar / 2, z0 - MEMBER_OVERLAP), (x1, y + bar / 2, z1 + MEMBER_OVERLAP)))
     e = min(0.002, 0.1 * (x1 - x0))  # horizontal bars a little shallower: no flush faces
     for j in range(1, rows):
         z = z0 + (z1 - z0) * j / rows
-        out.append(box_between((x0 + e, y0 - OVERLAP, z - bar / 2), (x1 - e, y1 + OVERLAP, z + bar / 2)))
+        out.append(box_between((x0 + e, y0 - MEMBER_OVERLAP, z - bar / 2), (x1 - e, y1 + MEMBER_OVERLAP, z + bar / 2)))
     return out
 
 
@@ -186,7 +191,7 @@ def lever(face_x: float, y: float, z: float, toward: float, standoff: float = 0.
     face_x + standoff."""
     x1 = face_x + standoff
     return solid_union([
-        rod((face_x - OVERLAP, y, z), (face_x + 0.008, y, z), rose, 16),
+        rod((face_x - MEMBER_OVERLAP, y, z), (face_x + 0.008, y, z), rose, 16),
         rod((face_x + 0.007, y, z), (x1 - 0.01, y, z), 0.009, 12),
         bevel_box((0.018, length + 0.02, 0.016), (x1 - 0.009, y + toward * (length / 2), z), 0.005, 1),
     ])
@@ -200,7 +205,7 @@ def round_knob(face_x: float, y: float, z: float, standoff: float = 0.065,
     k = radius
     head = lathe([(0.0, 0.0), (0.55 * k, 0.0), (k, 0.35 * k), (0.95 * k, 0.85 * k), (0.6 * k, 1.2 * k),
                   (0.0, 1.25 * k)], 16).rotate((0.0, 90.0, 0.0)).translate((x1 - 1.25 * k, y, z))
-    return solid_union([rod((face_x - OVERLAP, y, z), (face_x + 0.008, y, z), 0.026, 16),
+    return solid_union([rod((face_x - MEMBER_OVERLAP, y, z), (face_x + 0.008, y, z), 0.026, 16),
                         rod((face_x + 0.007, y, z), (x1 - 1.2 * k, y, z), 0.01, 12), head])
 
 
@@ -217,17 +222,17 @@ def baluster(x: float, y: float, z0: float, z1: float, style: str, yaw_deg: floa
         return solid_union([
             oriented_box((x, y, z0 + end / 2), (0.035, 0.035, end), yaw_deg),
             oriented_box((x, y, z1 - end / 2), (0.035, 0.035, end), yaw_deg),
-            rod((x, y, z0 + end - OVERLAP), (x, y, z1 - end + OVERLAP), 0.014, 12)])
+            rod((x, y, z0 + end - MEMBER_OVERLAP), (x, y, z1 - end + MEMBER_OVERLAP), 0.014, 12)])
     return rod((x, y, z0), (x, y, z1), 0.008, 8)
 
 
 def handrail(p0: Sequence[float], p1: Sequence[float], style: str) -> m3d.Manifold:
     """A handrail whose top centre runs from p0 to p1: "round" a 45 mm rail, "flat" a
     70 x 40 mm moulded rail."""
-    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+    a, b = np.asarray(p0, float), np.asarray(p1, float)
     if style == "round":
-        return rod(p0 - (0, 0, 0.0225), p1 - (0, 0, 0.0225), 0.0225, 12)
-    return beam(p0 - (0, 0, 0.02), p1 - (0, 0, 0.02), 0.07, 0.04)
+        return rod(tuple(a - (0, 0, 0.0225)), tuple(b - (0, 0, 0.0225)), 0.0225, 12)
+    return beam(tuple(a - (0, 0, 0.02)), tuple(b - (0, 0, 0.02)), 0.07, 0.04)
 
 
 def post(x: float, y: float, z0: float, z1: float, size: float, yaw_deg: float = 0.0,
