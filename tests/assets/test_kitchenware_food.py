@@ -9,7 +9,8 @@ import pytest
 import trimesh
 
 from indoorgen.assets.base import factories_with, get_factory
-from indoorgen.assets.generators import food, tableware_more
+from indoorgen.assets.generators import food
+from indoorgen.assets.shapes import vessels
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 
@@ -162,7 +163,7 @@ def test_a_fruit_dropped_in_the_middle_lands_on_the_floor():
     f = get_factory("fruit_bowl")
     p = f.resolve({"foot_ring": False})
     surf, opening = food._inner_surface(p)
-    floor = tableware_more.bowl_vessel(p).floor_z
+    floor = vessels.bowl_vessel(p).floor_z
     r = 0.04
     z = food._drop(np.array([[0, 0, 0, r]]), np.zeros((1, 2)), surf, np.zeros((0, 4)))
     assert abs(z[0] - (floor + r)) < 1e-6
@@ -179,7 +180,7 @@ def test_fruits_lie_in_the_bowl():
         assert len(fruit)
         assert np.linalg.norm(fruit[:, :2], axis=1).max() <= p["radius"] + 1e-3
         _, offset, _ = f._layout(f.resolve(p))  # design frame -> asset frame
-        floor = tableware_more.bowl_vessel(p).floor_z + offset[2]  # the inner floor, under fruit
+        floor = vessels.bowl_vessel(p).floor_z + offset[2]  # the inner floor, under fruit
         assert fruit[:, 2].min() > floor - 0.005
         assert 3 <= len(f._fruits(p)) <= p["n_fruits"]
 

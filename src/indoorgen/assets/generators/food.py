@@ -16,7 +16,11 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators.tableware_more import (
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_rect
+from indoorgen.assets.shapes.vessels import (
     SECTIONS,
     bowl_base_radius,
     bowl_params,
@@ -25,14 +29,11 @@ from indoorgen.assets.generators.tableware_more import (
     round_bottom,
     solid_revolve,
 )
-from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, rod
-from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
-#: how far touching pieces sink into each other so that their union is one shell (m)
-SINK = 0.0015
+#: how far a fruit sinks into what it rests on (the bowl, another fruit), so that they are
+#: one shell (m)
+FRUIT_SINK = 0.0015
 
 
 # ------------------------------------------------------------------------------------- cans
@@ -466,6 +467,15 @@ def _drop(spheres: np.ndarray, xy: np.ndarray, surf: np.ndarray, placed: np.ndar
     return (need - spheres[None, :, 2]).max(axis=1)
 
 
+def _lowest(spheres: np.ndarray, xy: np.ndarray, surf: np.ndarray, placed: np.ndarray
+            ) -> tuple[np.ndarray, float]:
+    """The position among `xy` (m, 2) where a fruit's contact spheres come to rest lowest
+    (`_drop`), and the height of its origin there."""
+    z = _drop(spheres, xy, surf, placed)
+    i = int(np.argmin(z))
+    return xy[i], z[i]
+
+
 def _inner_surface(p: dict[str, Any]) -> tuple[np.ndarray, float]:
     """(r, z) points at most 4 mm apart along a bowl's inner surface, and the opening's
     radius."""
@@ -524,16 +534,14 @@ class FruitBowl(PartsFactory):
             if room <= 0:
                 continue
             rho, th = room * np.sqrt(rng.random(8)), rng.uniform(0, 2 * math.pi, 8)
-            xy = np.stack([rho * np.cos(th), rho * np.sin(th)], axis=1)
-            for rolled in (False, True):
-                if rolled:
-                    xy = best[None, :] + ring
-                    r = np.linalg.norm(xy, axis=1, keepdims=True)
-                    xy = np.vstack([best, xy * np.minimum(1.0, room / np.maximum(r, 1e-9))])
-                z = _drop(fruit.contact, xy, surf, placed)
-                i = int(np.argmin(z))
-                best, z_best = xy[i], z[i]
-            off = np.array([best[0], best[1], z_best - SINK])
+            dropped = np.stack([rho * np.cos(th), rho * np.sin(th)], axis=1)
+            landed, _ = _lowest(fruit.contact, dropped, surf, placed)
+            # then it rolls to the lowest spot on the rings around where it landed (or stays)
+            around = landed[None, :] + ring
+            r = np.linalg.norm(around, axis=1, keepdims=True)
+            around = around * np.minimum(1.0, room / np.maximum(r, 1e-9))
+            best, z_best = _lowest(fruit.contact, np.vstack([landed, around]), surf, placed)
+            off = np.array([best[0], best[1], z_best - FRUIT_SINK])
             placed = np.vstack([placed, fruit.contact + np.append(off, 0.0)])
             out.append((fruit, off))
         return out
