@@ -2,7 +2,7 @@
 mirror cabinets. Each hangs from the wall at its back (-X): its back plate(s) are flat at the
 bounding box's back, and its "back" surface lies on (the first) plate's back face.
 
-Hardware is listed as primitives (see `bathroom.Prim`), so the placeholder boxes
+Hardware is listed as primitives (see `bathroom._parts.Prim`), so the placeholder boxes
 come from exact bounds without building any solid.
 """
 from __future__ import annotations
@@ -14,11 +14,11 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators.bathroom import FIXTURE_MATERIALS, OV, Prim, prim_bounds, prim_solid
+from indoorgen.assets.generators.bathroom._parts import FIXTURE_MATERIALS, Prim, prim_bounds, prim_solid
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import Front, cabinet_fronts
-from indoorgen.assets.shapes.primitives import Part, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -49,8 +49,8 @@ def _towel(x: float, y: float, z: float, r: float, width: float, drop: float,
     and hangs `drop` in front and `back_drop` behind it."""
     wrap = r + TOWEL
     return [("rod", (x, y - width / 2, z), (x, y + width / 2, z), wrap),
-            ("box", (x + r - OV, y - width / 2, z - drop), (x + wrap, y + width / 2, z)),
-            ("box", (x - wrap, y - width / 2, z - back_drop), (x - r + OV, y + width / 2, z))]
+            ("box", (x + r - OVERLAP, y - width / 2, z - drop), (x + wrap, y + width / 2, z)),
+            ("box", (x - wrap, y - width / 2, z - back_drop), (x - r + OVERLAP, y + width / 2, z))]
 
 
 def _parts(groups: list[tuple[list[Prim], str]], detail: bool) -> list[Part]:
@@ -120,7 +120,7 @@ class TowelBar(_WallHardware):
         hw: list[Prim] = []
         for y in (-L / 2, L / 2):
             hw += [_plate(p["rosette"], rs, y, 0.0),
-                   ("rod", (PLATE - OV, y, 0.0), (bars[0], y, 0.0), 0.009),
+                   ("rod", (PLATE - OVERLAP, y, 0.0), (bars[0], y, 0.0), 0.009),
                    ("sphere", (bars[0], y, 0.0), max(p["bar_size"] / 2 + 0.004, 0.011))]
         hw += [self._bar(p, x, -L / 2, L / 2) for x in bars]
         towel: list[Prim] = []
@@ -159,7 +159,7 @@ class TowelRing(_WallHardware):
         R = p["ring_diameter"] / 2 - r
         zc = -0.02 - R  # the ring hangs from the arm's end
         hw: list[Prim] = [_plate(p["plate"], p["plate_size"], 0.0, 0.0),
-                          ("rod", (PLATE - OV, 0.0, 0.0), (x, 0.0, 0.0), 0.007),
+                          ("rod", (PLATE - OVERLAP, 0.0, 0.0), (x, 0.0, 0.0), 0.007),
                           ("sphere", (x, 0.0, 0.0), 0.011)]
         rv = min(0.005, 0.85 * r)  # hangers and uprights: thinner, ending inside the tube
         if p["ring"] == "round":
@@ -215,10 +215,10 @@ class ToiletRollHolder(_WallHardware):
         x, y0, y1 = self._spindle(p)
         ps, ra = p["plate_size"], p["spindle_radius"]
         hw: list[Prim] = [_plate(p["plate"], ps, y0, 0.0),
-                          ("rod", (PLATE - OV, y0, 0.0), (x, y0, 0.0), ra),
+                          ("rod", (PLATE - OVERLAP, y0, 0.0), (x, y0, 0.0), ra),
                           ("sphere", (x, y0, 0.0), ra * 1.3)]
         if p["style"] == "bar":
-            hw += [_plate(p["plate"], ps, y1, 0.0), ("rod", (PLATE - OV, y1, 0.0), (x, y1, 0.0), ra),
+            hw += [_plate(p["plate"], ps, y1, 0.0), ("rod", (PLATE - OVERLAP, y1, 0.0), (x, y1, 0.0), ra),
                    ("sphere", (x, y1, 0.0), ra * 1.3), ("rod", (x, y0, 0.0), (x, y1, 0.0), ra)]
         else:
             hw += [("rod", (x, y0, 0.0), (x, y1 - 0.01, 0.0), ra), ("sphere", (x, y1 - 0.01, 0.0), ra * 1.4)]
@@ -300,7 +300,7 @@ class RobeHook(_WallHardware):
         r = p["prong_radius"]
         xm = PLATE + 0.55 * (reach - PLATE)
         end = (reach, 0.0, z + rise)
-        out: list[Prim] = [("rod", (PLATE - OV, 0.0, z), (xm, 0.0, z - 0.006), r),
+        out: list[Prim] = [("rod", (PLATE - OVERLAP, 0.0, z), (xm, 0.0, z - 0.006), r),
                            ("sphere", (xm, 0.0, z - 0.006), r),
                            ("rod", (xm, 0.0, z - 0.006), end, r)]
         if p["tip"] == "ball":
@@ -372,25 +372,25 @@ class BathroomMirrorCabinet(PartsFactory):
         W, H, D, t = g["W"], g["H"], g["D"], g["t"]
         out = carcass(D, W, 0.0, H, t, back=0.006, shelves=[g["z_in"]] if p["open_shelf"] else ())
         for z in g["shelves"]:  # glass shelves on the sides
-            out.append(Part(box_between((-D / 2 + 0.006 - OV, -W / 2 + t - OV, z - 0.006),
-                                        (D / 2 - 0.015, W / 2 - t + OV, z)), "glass"))
+            out.append(Part(box_between((-D / 2 + 0.006 - OVERLAP, -W / 2 + t - OVERLAP, z - 0.006),
+                                        (D / 2 - 0.015, W / 2 - t + OVERLAP, z)), "glass"))
         if detail:
             for parts, _ in self._fronts(p, g):
                 out += parts
                 if p["door_style"] == "framed":
                     leaf = parts[0].solid.bounding_box()
-                    out.append(Part(box_between((leaf[3] - OV, leaf[1] + 0.03, leaf[2] + 0.03),
+                    out.append(Part(box_between((leaf[3] - OVERLAP, leaf[1] + 0.03, leaf[2] + 0.03),
                                                 (leaf[3] + 0.003, leaf[4] - 0.03, leaf[5] - 0.03)),
                                     "mirror", parts[0].link))
         else:
             x1 = D / 2 + 0.002 + 0.018 + (0.003 if p["door_style"] == "framed" else 0.0)
             out.append(Part(box_between((-D / 2, -W / 2, g["z_d0"]), (x1, W / 2, H)), "mirror"))
         if p["light"] == "top":
-            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, H - OV),
+            out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, H - OVERLAP),
                                         (D / 2, W / 2 - 0.04, H + 0.025)), "emissive"))
         elif p["light"] == "bottom":
             out.append(Part(box_between((D / 2 - 0.05, -W / 2 + 0.04, -0.015),
-                                        (D / 2 - 0.01, W / 2 - 0.04, OV)), "emissive"))
+                                        (D / 2 - 0.01, W / 2 - 0.04, OVERLAP)), "emissive"))
         return out
 
     def joints(self, p):
