@@ -11,27 +11,39 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._kitchen_common import (
-    OVERLAP,
-    back_surface,
-    hinge_motion,
+from indoorgen.assets.generators._cabinet_parts import (
     interior_rect,
     joint_for,
     open_shell,
     pull_bar,
+    window_leaf,
+)
+from indoorgen.assets.generators.appliances._parts import (
     rack_surface,
     rects_polygon,
-    slide_motion,
     slotted_plate,
-    window_leaf,
     wire_rack,
 )
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import MOVING_GAP, knob
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe
+from indoorgen.assets.shapes.moving_parts import (
+    MOVING_GAP,
+    hinge_motion,
+    knob,
+    slide_motion,
+)
+from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
+    Part,
+    bevel_box,
+    box,
+    box_between,
+    cylinder,
+    lathe,
+)
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 
 #: per burner count: burners (u, v, size class) and their grate cells (u0, u1, v0, v1), in
 #: fractions of the burner area's half extents (u along X, v along Y)
@@ -158,6 +170,17 @@ def hob_surfaces(style: str, region: tuple[float, float, float, float], z_top: f
         out.append(support_polygon(f"grate_{i}", (0.0, 0.0, z_top + GRATE_HEIGHT),
                                    rects_polygon(bars, (), 0.0005)))
     return out
+
+
+def back_surface(x_back: float, region_yz: sg.Polygon) -> Surface:
+    """A `back` surface (normal -X) on the plane x = x_back covering `region_yz` (a polygon in
+    (y, z)): for wall-mounted objects whose back is not the whole bounding rectangle."""
+    c = region_yz.centroid
+    oy, oz = float(c.x), float(c.y)
+    # u = +Y, v = n x u = -Z: 2D coordinates are (y - oy, oz - z)
+    poly = sg.Polygon([(y - oy, oz - z) for y, z in region_yz.exterior.coords])
+    return Surface("back", Subpart.Back, np.array([x_back, oy, oz]), np.array([-1.0, 0.0, 0.0]),
+                   np.array([0.0, 1.0, 0.0]), poly)
 
 
 # ------------------------------------------------------------------------------- cooktop
@@ -506,7 +529,7 @@ class Range(PartsFactory):
         return [joint_for(m, slide=s) for _, m, s in self._moving(p)]
 
     def extra_surfaces(self, p):
-        D, W, H, zf = p["depth"], p["width"], p["height"], p["foot_height"]
+        D, W, H = p["depth"], p["width"], p["height"]
         g = self._geom(p)
         lo, hi = self._cavity(p)
         out = [*hob_surfaces(p["hob"], g["region"], H, g["n"], p["grates"] == "continuous", False),

@@ -6,16 +6,25 @@ from typing import Any
 import manifold3d as m3d
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._kitchen_common import (
-    OVERLAP,
-    hinge_motion,
+from indoorgen.assets.generators._cabinet_parts import (
     joint_for,
     open_shell,
-    slide_motion,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.moving_parts import MOVING_GAP
-from indoorgen.assets.shapes.primitives import Part, box, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.moving_parts import (
+    MOVING_GAP,
+    hinge_motion,
+    slide_motion,
+)
+from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
+    Part,
+    box,
+    box_between,
+    cylinder,
+    lathe,
+    rod,
+)
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
