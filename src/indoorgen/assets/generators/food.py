@@ -1,7 +1,7 @@
 """Food: drink cans and food tins, cereal/cracker boxes, chip bags and pouches, and fruit bowls.
 
 Packaged food is closed, so each is a solid (no hidden voids). A fruit bowl is a hollow bowl
-(`tableware_more.bowl_vessel`) with fruits dropped into it one by one: each fruit is a cluster
+(`shapes.vessels.bowl_vessel`) with fruits dropped into it one by one: each fruit is a cluster
 of spheres (an orange is one, an apple is one with dimples, a banana is a bent chain of them),
 lowered until it touches the bowl's inner surface or a fruit already placed, then sunk 1.5 mm
 so that everything unions into one shell.

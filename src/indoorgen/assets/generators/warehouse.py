@@ -9,11 +9,10 @@ import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
-OVERLAP = 0.002
 MAX_RACK_HEIGHT = 6.0  # levels are dropped beyond this (m)
 
 
