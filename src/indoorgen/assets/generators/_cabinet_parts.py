@@ -6,7 +6,7 @@ Design frame as everywhere: front +X, width along Y, Z up; fronts face +X.
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from collections.abc import Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -14,14 +14,8 @@ import numpy as np
 from indoorgen.assets.base import Joint, Surface
 from indoorgen.assets.parts_factory import make_joint
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import (
-    DoorJoint,
-)
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    box_between,
-    rod,
-)
+from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.primitives import Part, box_between, rod
 from indoorgen.model.tags import Subpart
 
 #: how far a bar handle's outer face stands in front of the leaf it is mounted on (m)

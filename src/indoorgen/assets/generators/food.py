@@ -9,8 +9,9 @@ so that everything unions into one shell.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -96,6 +97,7 @@ class Can(PartsFactory):
         return solid_union([plate - hole, rivet])
 
     def parts(self, p, detail):
+        """The can's solids: detailed, or the blocks of its placeholder."""
         R, H = self._radius(p), p["height"]
         lab = self._label(p)
         r_max = R + (0.001 if p["kind"] == "food" else 0.0)
@@ -111,6 +113,7 @@ class Can(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The can's surfaces besides its bounding box's: bottom."""
         R = self._radius(p)
         if p["kind"] == "drink":
             return [round_bottom("bottom", 0.8 * R)]
@@ -172,6 +175,7 @@ class FoodBox(PartsFactory):
         return cut, pane
 
     def parts(self, p, detail):
+        """The food box's solids: detailed, or the blocks of its placeholder."""
         H, W, D, r = p["height"], p["width"], p["depth"], p["edge_radius"]
         if not detail:
             top = H + (self.FLAP if p["feature"] == "flap" else 0.002 if p["feature"] == "spout"
@@ -186,6 +190,7 @@ class FoodBox(PartsFactory):
         return [Part(self._rot(p, q.solid), q.slot) for q in out]
 
     def extra_surfaces(self, p):
+        """The food box's surfaces besides its bounding box's: top."""
         H, W, D, r = p["height"], p["width"], p["depth"], p["edge_radius"]
         m, f = r + 0.001, p["feature"]
         if p["lying"]:  # the front (+X) faces up at z = D; the old top points to -X
@@ -318,6 +323,7 @@ class FoodBag(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The food bag's solids: detailed, or the blocks of its placeholder."""
         slot = self._slot(p)
         X, Y, Z = self._extent(p)
         if not detail:
@@ -364,7 +370,7 @@ def _apple(r: float, rng: np.random.Generator) -> _Fruit:
     phi = np.linspace(0.0, math.pi, 11)
     rho = r * np.sin(phi) * (1 + 0.04 * np.sin(phi - 0.3))
     z = -r * np.cos(phi) - dimple * np.clip((phi - 0.8 * math.pi) / (0.2 * math.pi), 0, 1) ** 2
-    prof = list(zip(rho.tolist(), z.tolist()))
+    prof = list(zip(rho.tolist(), z.tolist(), strict=True))
     prof[0], prof[-1] = (0.0, -r), (0.0, r - dimple)
     tilt = rng.uniform(-0.25, 0.25, 2) * r
     k = math.cos(math.pi / 16) * math.cos(math.pi / 20)
@@ -512,6 +518,7 @@ class FruitBowl(PartsFactory):
               "layout": Param(0, 999, kind="int", doc="which fruits go where (a variant number)")}
 
     def bottom_is_solid(self, params):
+        """Whether the bowl rests on a flat base, not on a foot ring."""
         return not self.resolve(params)["foot_ring"]
 
     def _fruits(self, p) -> list[tuple[_Fruit, np.ndarray]]:
@@ -547,6 +554,7 @@ class FruitBowl(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The fruit bowl's solids: detailed, or the blocks of its placeholder."""
         fruits = self._fruits(p)
         if not detail:
             top = max([p["height"]] + [o[2] + f.top for f, o in fruits])
@@ -555,5 +563,5 @@ class FruitBowl(PartsFactory):
             Part(s, "food") for f, o in fruits for s in f.solids(o)]
 
     def extra_surfaces(self, p):
-        # no interior surface: the fruit fill the bowl's floor, nothing else goes in
+        """The fruit bowl's surfaces besides its bounding box's: bottom (no interior: fruit fill it)."""
         return [round_bottom("bottom", bowl_base_radius(p))]

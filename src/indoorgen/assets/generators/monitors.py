@@ -6,13 +6,7 @@ import numpy as np
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    cylinder,
-)
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder
 from indoorgen.model.tags import Semantics as S
 
 ASPECTS = {"16:9": 9 / 16, "16:10": 10 / 16, "21:9": 9 / 21}
@@ -53,6 +47,7 @@ class Monitor(PartsFactory):
         return solid.translate(tuple(-pivot)).rotate((0.0, -tilt, 0.0)).translate(tuple(pivot))
 
     def parts(self, p, detail):
+        """The monitor's solids: detailed, or the blocks of its placeholder."""
         W, th, bz, bd = p["screen_width"], p["panel_thickness"], p["bezel"], p["base_depth"]
         Hs, zc, xn, pivot = self._panel_frame(p)
         tilt, bg = p["tilt"], p["bulge"]

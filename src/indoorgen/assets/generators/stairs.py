@@ -79,13 +79,16 @@ class Flight:
     end_floor: bool
 
     def rotation(self) -> np.ndarray:
+        """The flight's turn about Z (its quarter), as a 3x3 matrix."""
         c, s = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter % 4]
         return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]], float)
 
     def place(self, solid: m3d.Manifold) -> m3d.Manifold:
+        """A solid built in the flight's own frame, turned and moved to where the flight is."""
         return solid.rotate((0.0, 0.0, 90.0 * self.quarter)).translate((self.ox, self.oy, 0.0))
 
     def point(self, x: float, y: float, z: float = 0.0) -> np.ndarray:
+        """A point of the flight's own frame in the staircase's frame."""
         return self.rotation() @ np.array([x, y, z]) + np.array([self.ox, self.oy, 0.0])
 
 
@@ -258,7 +261,7 @@ class Staircase(PartsFactory):
                 for k in (0.25, 0.75):
                     xs.append(i * go - nos + k * (go + nos))
                     bases.append(z0 + (i + 1) * r - 0.005)
-        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot) for x, zb in zip(xs, bases)]
+        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot) for x, zb in zip(xs, bases, strict=True)]
         return out
 
     # ---------------------------------------------------------------- landings
@@ -408,7 +411,7 @@ class Staircase(PartsFactory):
         angles = np.linspace(a_start, a_end, k + 1)
         pts = [np.array([ry * math.cos(a), ry * math.sin(a), self._spiral_rail_height(g, q, a)]) for a in angles]
         segs = []
-        for p0, p1 in zip(pts[:-1], pts[1:]):
+        for p0, p1 in zip(pts[:-1], pts[1:], strict=True):
             d = (p1 - p0) / np.linalg.norm(p1 - p0) * 0.012
             segs.append(rod(p0 - d - (0, 0, 0.0225), p1 + d - (0, 0, 0.0225), 0.0225, 12))
         out = [Part(seg, "wood") for seg in segs]
@@ -438,6 +441,7 @@ class Staircase(PartsFactory):
 
     # ------------------------------------------------------------------- parts
     def parts(self, p, detail):
+        """The staircase's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         if p["style"] == "spiral":
             return self._spiral(p, g) if detail else self._spiral_cheap(p, g)
@@ -522,6 +526,7 @@ class Staircase(PartsFactory):
 
     # ---------------------------------------------------------------- surfaces
     def extra_surfaces(self, p):
+        """The staircase's surfaces besides its bounding box's: landing_<j>, tread_<k>."""
         g = self._g(p)
         if p["style"] == "spiral":
             return self._spiral_surfaces(p, g)
@@ -624,6 +629,7 @@ class StairRailing(PartsFactory):
         return np.linspace(-half, half, k + 1)
 
     def parts(self, p, detail):
+        """The stair railing's solids: detailed, or the blocks of its placeholder."""
         L, H, ps = p["length"], p["height"], p["post_size"]
         top = H + 0.06
         e = ps / 2 + 0.01
@@ -636,7 +642,7 @@ class StairRailing(PartsFactory):
         z0 = 0.04 if p["shoe_rail"] else 0.0
         if p["shoe_rail"]:
             out.append(Part(box_between((-0.03, ys[0], 0.0), (0.03, ys[-1], 0.04 + MEMBER_OVERLAP)), "frame"))
-        for ya, yb in zip(ys[:-1], ys[1:]):
+        for ya, yb in zip(ys[:-1], ys[1:], strict=True):
             a, b = ya + ps / 2 - MEMBER_OVERLAP, yb - ps / 2 + MEMBER_OVERLAP
             if p["infill"] == "glass":
                 infill.append(box_between((-0.006, a, z0 - MEMBER_OVERLAP if z0 else 0.06), (0.006, b, H - 0.03)))

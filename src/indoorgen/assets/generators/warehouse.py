@@ -127,6 +127,7 @@ class PalletRack(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The pallet rack's solids: detailed, or the blocks of its placeholder."""
         out = []
         for y in self._frames_y(p):
             out += self._frame(p, y, detail)
@@ -136,6 +137,7 @@ class PalletRack(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The pallet rack's surfaces besides its bounding box's: level_<i>_bay_<j>."""
         D = p["depth"]
         out = []
         for i, z in enumerate(self._levels(p)):
@@ -227,6 +229,7 @@ class WoodenPallet(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The wooden pallet's solids: detailed, or the blocks of its placeholder."""
         L, Wd, t = p["length"], p["width"], p["deck_thickness"]
         H = self._height(p)
         if not detail:
@@ -237,6 +240,7 @@ class WoodenPallet(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The wooden pallet's surfaces besides its bounding box's: top."""
         L, Wd = p["length"], p["width"]
         H = self._height(p)
         m, eps, c = 0.01, 0.0005, self.CHAMFER
@@ -244,7 +248,7 @@ class WoodenPallet(PartsFactory):
                  (-Wd / 2 + m, L / 2 - m)]
         boards = self._top_boards(p)
         holes = []
-        for (_, b), (a, _) in zip(boards, boards[1:]):
+        for (_, b), (a, _) in zip(boards[:-1], boards[1:], strict=True):
             g0, g1 = b - c, a + c  # the gap, widened by the boards' chamfers
             holes.append([(g0, -L / 2 + m + eps), (g1, -L / 2 + m + eps), (g1, L / 2 - m - eps),
                           (g0, L / 2 - m - eps)])

@@ -19,7 +19,8 @@ marks the wall. Place any of them by putting the ``opening`` surface on the wall
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np

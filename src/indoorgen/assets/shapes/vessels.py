@@ -9,8 +9,9 @@ kitchenware and food generators (a fruit bowl is a bowl).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -146,7 +147,7 @@ def bowl_outer(p: dict[str, Any], n: int = 10) -> list[tuple[float, float]]:
     rs = rb + (R - rb) * f
     if fh == 0:
         zs[0] += min(0.003, 0.3 * H)
-    pts += list(zip(rs.tolist(), zs.tolist()))[0 if fh == 0 else 1:]
+    pts += list(zip(rs.tolist(), zs.tolist(), strict=True))[0 if fh == 0 else 1:]
     if lip:
         pts.append((R + flare, H))
     return pts
@@ -165,6 +166,7 @@ def bowl_base_radius(p: dict[str, Any]) -> float:
 
 
 def bowl_vessel(p: dict[str, Any]) -> Vessel:
+    """The hollow of a bowl with `bowl_params`: its outer profile, walls and floor."""
     floor = bowl_foot_height(p) + p["base_thickness"]
     return revolve_vessel(bowl_outer(p), p["wall_thickness"], floor)
 

@@ -3,7 +3,7 @@ no 3D booleans) and the surfaces on top of their bars.
 """
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -22,7 +22,7 @@ def _slot_rects(size_u: float, size_v: float, pitch: float, bar: float, border: 
     n = max(1, int(round((size_v - 2 * border + bar) / pitch)))
     edges = np.linspace(border - bar / 2, size_v - border + bar / 2, n + 1)
     return [(border, size_u - border, e0 + bar / 2, e1 - bar / 2)
-            for e0, e1 in zip(edges[:-1], edges[1:]) if e1 - e0 - bar > 0.002]
+            for e0, e1 in zip(edges[:-1], edges[1:], strict=True) if e1 - e0 - bar > 0.002]
 
 
 def rects_polygon(add: Sequence[Rect], sub: Sequence[Rect] = (), inset: float = 0.0) -> sg.Polygon:

@@ -26,21 +26,8 @@ from indoorgen.assets.generators.appliances._parts import (
 )
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import (
-    MOVING_GAP,
-    hinge_motion,
-    knob,
-    slide_motion,
-)
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-    cylinder,
-    lathe,
-)
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, knob, slide_motion
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -74,7 +61,7 @@ def hob_layout(region: tuple[float, float, float, float], n: int, knobs: bool
     burners, cells = BURNER_LAYOUTS[n]
     cells = [(cx + a * hx, cx + b * hx, cy + c * hy, cy + d * hy) for a, b, c, d in cells]
     out = []
-    for (u, v, k), (a, b, c, d) in zip(burners, cells):
+    for (u, v, k), (a, b, c, d) in zip(burners, cells, strict=True):
         r = min(BURNER_RADII[k], 0.3 * (b - a), 0.3 * (d - c))
         out.append((cx + u * hx, cy + v * hy, r))
     return out, cells
@@ -97,9 +84,9 @@ def _grates(cells, burners, continuous: bool) -> list[list[tuple[float, float, f
     """The bars of each separate grate: one grate per cell (shrunk apart by a few mm), or one
     continuous grate whose cells share their frame bars."""
     if continuous:
-        return [[q for c, bn in zip(cells, burners) for q in _grate_bars(c, bn)]]
+        return [[q for c, bn in zip(cells, burners, strict=True) for q in _grate_bars(c, bn)]]
     g = 0.004
-    return [_grate_bars((a + g, b - g, c + g, d - g), bn) for (a, b, c, d), bn in zip(cells, burners)]
+    return [_grate_bars((a + g, b - g, c + g, d - g), bn) for (a, b, c, d), bn in zip(cells, burners, strict=True)]
 
 
 def hob_parts(style: str, region: tuple[float, float, float, float], z_top: float, n: int,
@@ -214,6 +201,7 @@ class Cooktop(PartsFactory):
         return p["depth"], W, t, n
 
     def parts(self, p, detail):
+        """The cooktop's solids: detailed, or the blocks of its placeholder."""
         D, W, t, n = self._dims(p)
         glass = p["style"] == "glass"
         r = min(p["corner_radius"], 0.3 * t) if detail else 0.0
@@ -229,6 +217,7 @@ class Cooktop(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The cooktop's surfaces besides its bounding box's: the hob's (grates or glass) and bottom."""
         D, W, t, n = self._dims(p)
         m = 0.02 if not (p["style"] == "glass" and p["frame"]) else 0.025
         return [*hob_surfaces(p["style"], (-D / 2, D / 2, -W / 2, W / 2), t, n, p["grates"] == "continuous",
@@ -369,6 +358,7 @@ class Oven(PartsFactory):
                            p["handle"], f"door_{i}") for i, (z0, z1) in enumerate(self._doors(p))]
 
     def parts(self, p, detail):
+        """The oven's solids: detailed, or the blocks of its placeholder."""
         D, W = p["depth"], p["width"]
         H = self._height(p)
         fx = D / 2 + self.FASCIA
@@ -395,9 +385,11 @@ class Oven(PartsFactory):
         return out
 
     def joints(self, p):
+        """The oven's joints: each drop-down door's."""
         return [joint_for(m) for _, m in self._door_parts(p)]
 
     def extra_surfaces(self, p):
+        """The oven's surfaces besides its bounding box's: each cavity's floor and racks (interior_<i>)."""
         out: list[Surface] = []
         for z0, z1 in self._doors(p):
             lo, hi = self._cavity_box(p, z0, z1)
@@ -479,6 +471,7 @@ class Range(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The range's solids: detailed, or the blocks of its placeholder."""
         D, W, H, zf = p["depth"], p["width"], p["height"], p["foot_height"]
         g = self._geom(p)
         bgh = p["backguard_height"]
@@ -526,9 +519,11 @@ class Range(PartsFactory):
         return out
 
     def joints(self, p):
+        """The range's joints: the oven door's and, with a drawer, the drawer's."""
         return [joint_for(m, slide=s) for _, m, s in self._moving(p)]
 
     def extra_surfaces(self, p):
+        """The range's surfaces besides its bounding box's: the hob's, bottom (plinth), the oven's floor and racks."""
         D, W, H = p["depth"], p["width"], p["height"]
         g = self._geom(p)
         lo, hi = self._cavity(p)
@@ -573,6 +568,7 @@ class RangeHood(PartsFactory):
         return ch, top, top + p["chimney_height"]
 
     def parts(self, p, detail):
+        """The range hood's solids: detailed, or the blocks of its placeholder."""
         D, W = p["depth"], p["width"]
         cw, cd = p["chimney_width"], min(p["chimney_depth"], D - 0.1)
         ch, top, H = self._profile(p)
@@ -623,6 +619,7 @@ class RangeHood(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The range hood's surfaces besides its bounding box's: back (its outline on the wall)."""
         D, W = p["depth"], p["width"]
         cw = p["chimney_width"]
         ch, top, H = self._profile(p)

@@ -8,28 +8,11 @@ from typing import Any
 import manifold3d as m3d
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import (
-    HANDLE_PROUD,
-    joint_for,
-    open_shell,
-    pull_bar,
-)
-from indoorgen.assets.generators.appliances._parts import (
-    rack_surface,
-    slotted_plate,
-    wire_rack,
-)
+from indoorgen.assets.generators._cabinet_parts import HANDLE_PROUD, joint_for, open_shell, pull_bar
+from indoorgen.assets.generators.appliances._parts import rack_surface, slotted_plate, wire_rack
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.moving_parts import (
-    MOVING_GAP,
-    hinge_motion,
-)
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box_between,
-    cylinder,
-)
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, cylinder
 from indoorgen.assets.shapes.surfaces import bottom_rect
 from indoorgen.model.tags import Semantics as S
 
@@ -149,6 +132,7 @@ class Dishwasher(PartsFactory):
         return MOVING_GAP + p["door_thickness"] + (HANDLE_PROUD if p["handle"] == "bar" else 0.005)
 
     def parts(self, p, detail):
+        """The dishwasher's solids: detailed, or the blocks of its placeholder."""
         D, W, H, zk = p["depth"], p["width"], p["height"], p["kick_height"]
         top_extra = 0.002 if p["panel"] == "integrated" else 0.0
         if not detail:
@@ -178,9 +162,11 @@ class Dishwasher(PartsFactory):
         return out
 
     def joints(self, p):
+        """The dishwasher's joint: its drop-down door's."""
         return [joint_for(self._door(p)[1])]
 
     def extra_surfaces(self, p):
+        """The dishwasher's surfaces besides its bounding box's: bottom, interior_<i> (baskets)."""
         D, W = p["depth"], p["width"]
         out = [bottom_rect((-0.03, 0, 0), D / 2 - 0.03, W / 2 - 0.02)]
         extent = self._basket_extent(p)

@@ -6,25 +6,10 @@ from typing import Any
 import manifold3d as m3d
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import (
-    joint_for,
-    open_shell,
-)
+from indoorgen.assets.generators._cabinet_parts import joint_for, open_shell
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.moving_parts import (
-    MOVING_GAP,
-    hinge_motion,
-    slide_motion,
-)
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box,
-    box_between,
-    cylinder,
-    lathe,
-    rod,
-)
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, slide_motion
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box, box_between, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
@@ -118,6 +103,7 @@ class WashingMachine(PartsFactory):
         return parts, slide_motion("drawer", (x1, (y0 + y1) / 2, z0)), (cavity, 0.8 * depth)
 
     def parts(self, p, detail):
+        """The washing machine's solids: detailed, or the blocks of its placeholder."""
         D, W, H, ph, fh = p["depth"], p["width"], p["height"], p["panel_height"], p["foot_height"]
         R, zc, yc = self._door_geom(p)
         s = 1.0 if p["knob_side"] == "right" else -1.0
@@ -185,9 +171,11 @@ class WashingMachine(PartsFactory):
                 for a, b, slot in items]
 
     def joints(self, p):
+        """The washing machine's joints: the porthole door's and the detergent drawer's."""
         _, m, (_, slide) = self._drawer(p)
         return [joint_for(self._door(p)[1]), joint_for(m, slide=slide)]
 
     def extra_surfaces(self, p):
+        """The washing machine's surfaces besides its bounding box's: top."""
         D, W, H = p["depth"], p["width"], p["height"]
         return [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02)]

@@ -4,25 +4,10 @@ from __future__ import annotations
 from typing import Any
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import (
-    joint_for,
-    pull_bar,
-    window_leaf,
-)
+from indoorgen.assets.generators._cabinet_parts import joint_for, pull_bar, window_leaf
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.moving_parts import (
-    MOVING_GAP,
-    hinge_motion,
-    knob,
-)
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    bevel_box,
-    box_between,
-    circle_polygon,
-    cylinder,
-)
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, knob
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box_between, circle_polygon, cylinder
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -82,6 +67,7 @@ class Microwave(PartsFactory):
         return MOVING_GAP + self.DOOR_T + extra
 
     def parts(self, p, detail):
+        """The microwave's solids: detailed, or the blocks of its placeholder."""
         D, W, H, fh = p["depth"], p["width"], p["height"], p["foot_height"]
         if not detail:
             return [Part(box_between((-D / 2, -W / 2, fh), (D / 2, W / 2, H)), "appliance"),
@@ -134,9 +120,11 @@ class Microwave(PartsFactory):
         return out
 
     def joints(self, p):
+        """The microwave's joint: its door's."""
         return [joint_for(self._door(p)[1])]
 
     def extra_surfaces(self, p):
+        """The microwave's surfaces besides its bounding box's: top, interior_0 (turntable)."""
         D, W, H, fh = p["depth"], p["width"], p["height"], p["foot_height"]
         cx0, cx1, cy0, cy1, cz0, _ = self._cavity(p)
         r = min(p["corner_radius"], 0.3 * (H - fh))

@@ -20,22 +20,10 @@ from indoorgen.assets.generators._cabinet_parts import (
     pull_bar,
     window_leaf,
 )
-from indoorgen.assets.generators.appliances._parts import (
-    rack_surface,
-    wire_rack,
-)
+from indoorgen.assets.generators.appliances._parts import rack_surface, wire_rack
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.moving_parts import (
-    MOVING_GAP,
-    DoorJoint,
-    hinge_motion,
-    slide_motion,
-)
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    bevel_box,
-    box_between,
-)
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, hinge_motion, slide_motion
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 
@@ -236,6 +224,7 @@ class Fridge(PartsFactory):
         return za, za + L
 
     def parts(self, p, detail):
+        """The fridge's solids: detailed, or the blocks of its placeholder."""
         D, W, H, zb, dt = p["depth"], p["width"], p["height"], p["base_height"], p["door_thickness"]
         if not detail:
             x1 = D / 2 + self.DOOR_GAP + dt + self._handle_proud(p)
@@ -270,11 +259,13 @@ class Fridge(PartsFactory):
         return levels
 
     def joints(self, p):
+        """The fridge's joints, one per door and freezer drawer."""
         D = p["depth"]
         return [joint_for(self._leaf_parts(p, leaf)[1], slide=0.7 * (D - COLD_WALL - 0.05))
                 for leaf in self._leaves(p)]
 
     def extra_surfaces(self, p):
+        """The fridge's surfaces besides its bounding box's: top, bottom, interior_<i> (floors, shelves)."""
         D, W, H = p["depth"], p["width"], p["height"]
         w = COLD_WALL
         levels = [(z0 + LINER, D / 2 - 0.06) for z0, _ in self._compartments(p).values()]
@@ -344,6 +335,7 @@ class BeverageFridge(PartsFactory):
         return parts, hinge_motion(hs, x1, y0, y1, z0, z1, "door")
 
     def parts(self, p, detail):
+        """The beverage fridge's solids: detailed, or the blocks of its placeholder."""
         D, W, H, zb = p["depth"], p["width"], p["height"], p["base_height"]
         if not detail:
             proud = 0.045 if p["handle"] == "bar" else 0.03
@@ -377,9 +369,11 @@ class BeverageFridge(PartsFactory):
         return out
 
     def joints(self, p):
+        """The beverage fridge's joint: its glass door's."""
         return [joint_for(self._door(p)[1])]
 
     def extra_surfaces(self, p):
+        """The beverage fridge's surfaces besides its bounding box's: top, bottom, interior_<i> (floor, shelves)."""
         D, W, H = p["depth"], p["width"], p["height"]
         cx0, cx1, cy0, cy1, cz0, _ = self._cavity(p)
         out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),

@@ -9,7 +9,7 @@ its hollow plus a wall thickness by construction. Small fittings are lists of pr
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from collections.abc import Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -255,10 +255,11 @@ def bowl_cavity_levels(shape: str, lx: float, ly: float, depth: float, cx: float
     """The stacked outlines of a basin's hollow: opening lx (X) by ly (Y) centred on (cx, cy)
     at z_top, `depth` deep, narrowing towards a rounded bottom ("rect": rounded-rectangle
     sections, otherwise elliptical). The first level lies 5 cm above z_top (it cuts the top)."""
-    if shape == "rect":
-        sec = lambda s: rounded_rect(lx * s, ly * s, radius * s, (cx, cy))
-    else:
-        sec = lambda s: ellipse(lx * s / 2, ly * s / 2, (cx, cy), 48)
+    def sec(s: float) -> m3d.CrossSection:
+        if shape == "rect":
+            return rounded_rect(lx * s, ly * s, radius * s, (cx, cy))
+        return ellipse(lx * s / 2, ly * s / 2, (cx, cy), 48)
+
     prof = ((-0.05, 1.0), (0.0, 1.0), (0.3, 0.97), (0.6, 0.88), (0.85, 0.7), (1.0, 0.45))
     return [(z_top - t * depth, sec(s)) for t, s in prof]
 
@@ -303,5 +304,5 @@ def corner_outline(lx: float, ly: float, shape: str, cut: float, n: int = 24) ->
     else:
         c = (lx / 2 - cut, -ly / 2 + cut)
         a = np.linspace(-math.pi / 2, 0.0, n + 1)
-        pts = corners + list(zip(c[0] + cut * np.cos(a), c[1] + cut * np.sin(a)))
+        pts = corners + list(zip(c[0] + cut * np.cos(a), c[1] + cut * np.sin(a), strict=True))
     return m3d.CrossSection.hull_points(np.array(pts, float))

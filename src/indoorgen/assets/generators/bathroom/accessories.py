@@ -115,6 +115,7 @@ class TowelBar(_WallHardware):
         return ("box", (x - hx, y0, -r), (x + hx, y1, r))
 
     def groups(self, p):
+        """The towel bar's fittings as (primitives, material slot) groups."""
         L, rs = p["length"], p["rosette_size"]
         bars = self._bars(p)
         hw: list[Prim] = []
@@ -131,6 +132,7 @@ class TowelBar(_WallHardware):
         return [(hw, "metal"), (towel, "fabric")]
 
     def extra_surfaces(self, p):
+        """The towel bar's surfaces besides its bounding box's: back (a rosette's back face)."""
         return [_plate_back(p["rosette"], p["rosette_size"], -p["length"] / 2, 0.0)]
 
 
@@ -154,6 +156,7 @@ class TowelRing(_WallHardware):
     }
 
     def groups(self, p):
+        """The towel ring's fittings as (primitives, material slot) groups."""
         x = p["projection"]
         r = p["tube"] / 2
         R = p["ring_diameter"] / 2 - r
@@ -182,6 +185,7 @@ class TowelRing(_WallHardware):
         return [(hw, "metal"), (towel, "fabric")]
 
     def extra_surfaces(self, p):
+        """The towel ring's surfaces besides its bounding box's: back (its plate's back face)."""
         return [_plate_back(p["plate"], p["plate_size"], 0.0, 0.0)]
 
 
@@ -212,6 +216,7 @@ class ToiletRollHolder(_WallHardware):
         return x, -half, half
 
     def groups(self, p):
+        """The toilet-roll holder's fittings as (primitives, material slot) groups."""
         x, y0, y1 = self._spindle(p)
         ps, ra = p["plate_size"], p["spindle_radius"]
         hw: list[Prim] = [_plate(p["plate"], ps, y0, 0.0),
@@ -253,6 +258,7 @@ class ToiletRollHolder(_WallHardware):
         return sheet + back, (lo, hi)
 
     def parts(self, p, detail):
+        """The toilet-roll holder's solids: detailed, or the blocks of its placeholder."""
         out = []
         for prims, slot in self.groups(p):
             tubes = [q for q in prims if q[0] == "tube"]
@@ -274,6 +280,7 @@ class ToiletRollHolder(_WallHardware):
         return out
 
     def extra_surfaces(self, p):
+        """The holder's surfaces besides its bounding box's: back (its plate's back face)."""
         _, y0, _ = self._spindle(p)
         return [_plate_back(p["plate"], p["plate_size"], y0, 0.0)]
 
@@ -310,6 +317,7 @@ class RobeHook(_WallHardware):
         return out
 
     def groups(self, p):
+        """The robe hook's fittings as (primitives, material slot) groups."""
         ps = p["plate_size"]
         hw = [_plate(p["plate"], ps, 0.0, 0.0, HOOK_PLATE_ASPECT)]
         double = p["style"] == "double"
@@ -319,6 +327,7 @@ class RobeHook(_WallHardware):
         return [(hw, "metal")]
 
     def extra_surfaces(self, p):
+        """The robe hook's surfaces besides its bounding box's: back (its plate's back face)."""
         return [_plate_back(p["plate"], p["plate_size"], 0.0, 0.0, HOOK_PLATE_ASPECT)]
 
 
@@ -368,6 +377,7 @@ class BathroomMirrorCabinet(PartsFactory):
         return cabinet_fronts(g["D"] / 2, cells, 0.1, handle="none", slot=slot)
 
     def parts(self, p, detail):
+        """The mirror cabinet's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         W, H, D, t = g["W"], g["H"], g["D"], g["t"]
         out = carcass(D, W, 0.0, H, t, back=0.006, shelves=[g["z_in"]] if p["open_shelf"] else ())
@@ -394,10 +404,12 @@ class BathroomMirrorCabinet(PartsFactory):
         return out
 
     def joints(self, p):
+        """The mirror cabinet's joints, one per door."""
         g = self._g(p)
         return [make_joint(f"{m.link}_joint", m, 0.0, math.radians(100)) for _, m in self._fronts(p, g)]
 
     def extra_surfaces(self, p):
+        """The mirror cabinet's surfaces besides its bounding box's: interior_<i>, back, shelf."""
         g = self._g(p)
         W, H, D, t = g["W"], g["H"], g["D"], g["t"]
         x0, x1 = -D / 2 + 0.006, D / 2 - 0.015

@@ -28,14 +28,7 @@ from indoorgen.assets.generators.bathroom._parts import (
     rounded_rect,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box_between,
-    cylinder,
-    lathe,
-    rod,
-)
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -91,6 +84,7 @@ class BathtubAlcove(PartsFactory):
         return g["s"] * (g["l_in"] / 2 - 0.06 - 0.1)
 
     def parts(self, p, detail):
+        """The alcove tub's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         L, D, H = g["L"], g["D"], g["H"]
         front = D / 2 + (0.01 if p["apron_style"] == "panelled" else 0.0)
@@ -118,6 +112,7 @@ class BathtubAlcove(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The alcove tub's surfaces besides its bounding box's: rim, basin, bottom."""
         g = self._g(p)
         L, D = g["L"], g["D"]
         cav = self._cavity(p, g)
@@ -165,6 +160,7 @@ class BathtubFreestanding(PartsFactory):
     }
 
     def bottom_is_solid(self, params):
+        """Whether the tub stands on its whole bottom (flush or on a plinth), not on feet."""
         return self.resolve(params)["base"] != "feet"
 
     def _g(self, p) -> dict[str, Any]:
@@ -174,10 +170,12 @@ class BathtubFreestanding(PartsFactory):
         H = p["height"]
         top = H + (p["end_rise"] if slipper else 0.0)
         t = p["wall_thickness"]
-        if p["shape"] == "rounded_rect":
-            sec = lambda s: rounded_rect(2 * A * s, 2 * B * s, 0.5 * A * s)
-        else:
-            sec = lambda s: ellipse(A * s, B * s, (0.0, 0.0), 64)
+
+        def sec(s: float) -> m3d.CrossSection:
+            if p["shape"] == "rounded_rect":
+                return rounded_rect(2 * A * s, 2 * B * s, 0.5 * A * s)
+            return ellipse(A * s, B * s, (0.0, 0.0), 64)
+
         return dict(A=A, B=B, H=H, top=top, zb=zb, t=t, sec=sec, slipper=slipper,
                     rolled=p["rolled_rim"] and not slipper, z_f=zb + t + 0.005)
 
@@ -194,6 +192,7 @@ class BathtubFreestanding(PartsFactory):
         return -(g["B"] * p["flare"] - g["t"] - 0.2)
 
     def parts(self, p, detail):
+        """The freestanding tub's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         A, B, zb, top, t, sec = g["A"], g["B"], g["zb"], g["top"], g["t"], g["sec"]
         e = 0.02 if g["rolled"] else 0.0
@@ -203,7 +202,10 @@ class BathtubFreestanding(PartsFactory):
         else:
             f = p["flare"]
             zs = np.unique(np.r_[np.linspace(zb + 0.04, g["H"], 7), top])
-            off = lambda cs, d: cs.offset(d, m3d.JoinType.Round, 2.0, 24)
+
+            def off(cs: m3d.CrossSection, d: float) -> m3d.CrossSection:
+                return cs.offset(d, m3d.JoinType.Round, 2.0, 24)
+
             body = hull_stack([(zb, off(sec(f), -0.035)), (zb + 0.012, off(sec(f), -0.012))]
                                + [(float(z), sec(self._size(p, g, z))) for z in zs])
             if g["rolled"]:
@@ -252,11 +254,12 @@ class BathtubFreestanding(PartsFactory):
             y0 = -0.2 * g["B"]
             ys = np.concatenate([[-B], np.linspace(y0, B, 12)])
             zs = H + rise * (np.clip(ys - y0, 0.0, None) / (g["B"] - y0)) ** 2
-        pts = [(sx * A, y, z) for y, z in zip(ys, zs) for sx in (-1, 1)]
+        pts = [(sx * A, y, z) for y, z in zip(ys, zs, strict=True) for sx in (-1, 1)]
         pts += [(sx * A, y, g["top"] + 1.0) for y in (-B, B) for sx in (-1, 1)]
         return m3d.Manifold.hull_points(np.array(pts, float))
 
     def extra_surfaces(self, p):
+        """The freestanding tub's surfaces besides its bounding box's: basin, bottom."""
         g = self._g(p)
         floor = outline_polygon(self._floor(p, g), 0.005).difference(
             sg.Point(0.0, self._drain_y(p, g)).buffer(0.04, 16))
@@ -316,7 +319,10 @@ class BathtubCorner(PartsFactory):
         cut = p["front_cut"] * min(lx, ly)
         outline = corner_outline(lx, ly, p["shape"], cut)
         k = -(lx + ly) / 2 + (p["rim_width"] + p["corner_deck"]) * math.sqrt(2) + 0.25
-        rnd = lambda cs, r: cs.offset(-r, m3d.JoinType.Round, 2.0, 24).offset(r, m3d.JoinType.Round, 2.0, 24)
+
+        def rnd(cs: m3d.CrossSection, r: float) -> m3d.CrossSection:  # rounds inner corners by r
+            return cs.offset(-r, m3d.JoinType.Round, 2.0, 24).offset(r, m3d.JoinType.Round, 2.0, 24)
+
         opening = rnd(_halfplane_cut(outline.offset(-p["rim_width"], m3d.JoinType.Round, 2.0, 24), k), 0.12)
         z_f = H - min(p["basin_depth"], H - 0.1)
         return dict(lx=lx, ly=ly, H=H, outline=outline, opening=opening, z_f=z_f, k=k,
@@ -340,6 +346,7 @@ class BathtubCorner(PartsFactory):
                 for q in faucet(0.0, 0.0, g["H"], "lever", 0.18, 0.16)]
 
     def parts(self, p, detail):
+        """The corner tub's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         lx, ly, H = g["lx"], g["ly"], g["H"]
         if not detail:
@@ -371,6 +378,7 @@ class BathtubCorner(PartsFactory):
         return g["outline"].offset(-0.025, m3d.JoinType.Miter, 2.0).translate((-0.025, 0.025)) ^ g["outline"]
 
     def extra_surfaces(self, p):
+        """The corner tub's surfaces besides its bounding box's: rim, basin, bottom."""
         g = self._g(p)
         rim = outline_polygon(g["outline"], 0.005).difference(outline_polygon(g["opening"]).buffer(0.005))
         if p["deck_tap"]:

@@ -25,12 +25,7 @@ from indoorgen.assets.generators.bathroom._parts import (
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box_between,
-    rod,
-)
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -123,7 +118,7 @@ class ShowerEnclosure(PartsFactory):
         """Vertical bar handles on the faces of a +X-facing glass leaf (side +1: outside, -1:
         inside; x_face is the outer face for +1, the inner face for -1)."""
         out = []
-        for s, xf in zip(sides, (x_face,) * len(sides)):
+        for s, xf in zip(sides, (x_face,) * len(sides), strict=True):
             xb = xf + s * 0.03
             out += [("rod", (xb, y, zc - 0.15), (xb, y, zc + 0.15), 0.01),
                     ("rod", (xf - s * OVERLAP, y, zc - 0.12), (xb, y, zc - 0.12), 0.007),
@@ -241,6 +236,7 @@ class ShowerEnclosure(PartsFactory):
                 ("cyl", p["head_radius"], 0.014, (xr + arm, 0.0, zh - 0.03))]
 
     def parts(self, p, detail):
+        """The shower's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         if detail:
             return self._fixed(p, g) + [q for parts, _, _ in self._moving(p, g) for q in parts]
@@ -259,10 +255,12 @@ class ShowerEnclosure(PartsFactory):
                 Part(box_between((-D / 2, -W / 2, g["z0"]), (max(x1, D / 2), W / 2, max(z1, hh[2]))), "glass")]
 
     def joints(self, p):
+        """The shower's joints, one per hinged or sliding door."""
         g = self._g(p)
         return [make_joint(f"{m.link}_joint", m, 0.0, up) for _, m, up in self._moving(p, g)]
 
     def extra_surfaces(self, p):
+        """The shower's surfaces besides its bounding box's: tray, bottom, back."""
         g = self._g(p)
         rec = self._recess(p, g)
         c = outline_polygon(rec).centroid

@@ -31,14 +31,7 @@ from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, MOVING_GAP, Front, cabinet_fronts
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box_between,
-    circle_polygon,
-    cylinder,
-    lathe,
-)
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -97,6 +90,7 @@ class BathroomSinkPedestal(PartsFactory):
                                   g["H"], radius=max(p["corner_radius"], 0.03))
 
     def parts(self, p, detail):
+        """The pedestal sink's solids: detailed, or the blocks of its placeholder."""
         g = self._geometry(p)
         H, W, D = g["H"], g["W"], g["D"]
         # the basin's underside reaches the bowl's skin (a wall below the bowl's floor)
@@ -129,6 +123,7 @@ class BathroomSinkPedestal(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The pedestal sink's surfaces besides its bounding box's: bottom, deck_<i>."""
         g = self._geometry(p)
         rp = p["pedestal_radius"] * {"column": 1.25, "tapered": 1.35, "flared": 1.6}[p["pedestal_style"]]
         out = [support_polygon("bottom", (g["cx"], 0, 0), circle_polygon(rp * 0.995, 48),
@@ -175,8 +170,13 @@ def vessel(shape: str, lx: float, ly: float, height: float, wall: float, flare: 
     has_foot = foot >= 0.005
     zb = cz + (foot if has_foot else 0.0)
     zt = cz + height
-    size = lambda u: flare + (1.0 - flare) * u ** curve
-    zu = lambda u: zb + 0.012 + u * (zt - zb - 0.012)
+
+    def size(u: float) -> float:  # section scale at height fraction u
+        return flare + (1.0 - flare) * u ** curve
+
+    def zu(u: float) -> float:  # height at fraction u
+        return zb + 0.012 + u * (zt - zb - 0.012)
+
     us = (0.0, 0.08, 0.2, 0.4, 0.6, 0.8, 1.0)
     z_floor = zb + max(wall, 0.012) + 0.006
     floor = sec(size(0.08)).offset(-wall - 0.02, m3d.JoinType.Round, 2.0, 24)
@@ -184,7 +184,10 @@ def vessel(shape: str, lx: float, ly: float, height: float, wall: float, flare: 
 
     def solid() -> m3d.Manifold:
         body = hull_stack([(zb, sec(flare - 0.03))] + [(zu(u), sec(size(u))) for u in us])
-        inset = lambda u: sec(size(u)).offset(-wall, m3d.JoinType.Round, 2.0, 24)
+
+        def inset(u: float) -> m3d.CrossSection:
+            return sec(size(u)).offset(-wall, m3d.JoinType.Round, 2.0, 24)
+
         cav = [(zt + 0.05, inset(1.0))] + [(zu(u), inset(u)) for u in reversed(us)
                                            if zu(u) > z_floor + 0.02] + [(z_floor, floor)]
         if lip:
@@ -237,6 +240,7 @@ class CountertopBasin(PartsFactory):
                       p["foot_height"], p["lip"], p["corner_radius"])
 
     def parts(self, p, detail):
+        """The countertop basin's solids: detailed, or the blocks of its placeholder."""
         shape, lx, ly = _vessel_args(p)
         if not detail:
             return [Part(box_between(*vessel_bounds(lx, ly, p["height"], p["lip"])), "porcelain")]
@@ -245,6 +249,7 @@ class CountertopBasin(PartsFactory):
                 Part(cylinder(0.022, 0.0035, (0.0, 0.0, z_floor - 0.003), 24), "metal")]
 
     def extra_surfaces(self, p):
+        """The countertop basin's surfaces besides its bounding box's: bottom, basin."""
         _, footprint, floor, z_floor = self._build(p)
         basin = outline_polygon(floor, 0.003).difference(sg.Point(0, 0).buffer(0.026, 16))
         return [support_polygon("bottom", (0, 0, 0), outline_polygon(footprint, 0.0005),
@@ -354,7 +359,7 @@ class Vanity(PartsFactory):
             elif kind == "column":
                 k = 3 if z1 - z0 > 0.5 else 2
                 hs = np.linspace(z0, z1, k + 1)
-                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:])]
+                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:], strict=True)]
             elif p["front_style"] == "drawers":
                 top = z1
                 if under:
@@ -362,7 +367,7 @@ class Vanity(PartsFactory):
                     fixed.append((y0, y1, top, z1))
                 k = 2 if top - z0 > 0.3 else 1
                 hs = np.linspace(z0, top, k + 1)
-                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:])]
+                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:], strict=True)]
             elif y1 - y0 > 0.55:
                 ym = (y0 + y1) / 2
                 cells += [Front(y0, ym, z0, z1, "left"), Front(ym, y1, z0, z1, "right")]
@@ -391,9 +396,10 @@ class Vanity(PartsFactory):
         return [(hull_stack(skin) - cut, "porcelain"), (drain, "metal")], cut
 
     def parts(self, p, detail):
+        """The vanity's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         W, D, H, tt, zb = g["W"], g["D"], g["H"], g["tt"], g["zb"]
-        dividers = [y1 + BOARD / 2 for (_, y1, _), _n in zip(g["bays"][:-1], g["bays"][1:])]
+        dividers = [y1 + BOARD / 2 for (_, y1, _), _n in zip(g["bays"][:-1], g["bays"][1:], strict=True)]
         # (the placeholder's block of carcass and fronts stands for the boards)
         out = [Part(s.solid, "wood") for s in carcass(D, W, zb, H - tt + OVERLAP, BOARD, back=0.006,
                                                       dividers=dividers, top=False)] if detail else []
@@ -438,6 +444,7 @@ class Vanity(PartsFactory):
         return out
 
     def joints(self, p):
+        """The vanity's joints, one per door and drawer."""
         g = self._g(p)
         depth = g["D"] - 0.006 - 0.03
         return [make_joint(f"{m.link}_joint", m, 0.0, math.radians(100)) if m.kind == "revolute"
@@ -445,6 +452,7 @@ class Vanity(PartsFactory):
                 for _, m in self._fronts(p, g)]
 
     def extra_surfaces(self, p):
+        """The vanity's surfaces besides its bounding box's: countertop(_<i>), interior_<k>, back, bottom."""
         g = self._g(p)
         W, D, H = g["W"], g["D"], g["H"]
         top = sg.box(-D / 2 + g["bs"] + 0.01, -W / 2 + 0.01, D / 2 + g["oh"] - 0.01, W / 2 - 0.01)
@@ -476,4 +484,5 @@ class Vanity(PartsFactory):
         return out
 
     def bottom_is_solid(self, params):
+        """Whether the vanity stands on a plinth (its whole bottom), not on legs."""
         return self.resolve(params)["base_style"] == "plinth"

@@ -25,11 +25,7 @@ from indoorgen.assets.generators.bathroom._parts import (
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    box_between,
-)
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -78,6 +74,7 @@ class Toilet(PartsFactory):
     }
 
     def bottom_is_solid(self, params):
+        """Whether the toilet stands on its foot (floor-standing), not hung on the wall."""
         return self.resolve(params)["style"] != "wall_hung"
 
     # ---- layout
@@ -178,6 +175,7 @@ class Toilet(PartsFactory):
 
     # ---- generator protocol
     def parts(self, p, detail):
+        """The toilet's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         H, a, b, x_e = g["H"], g["a"], g["b"], g["x_e"]
         out: list[Part] = []
@@ -216,6 +214,7 @@ class Toilet(PartsFactory):
         return math.pi / 2 + math.asin(min(room / length, 0.3))
 
     def joints(self, p):
+        """The toilet's joints: seat_joint, lid_joint."""
         g = self._g(p)
         up = self._open_limit(g, g["x_hl"], g["front"] - g["x_hl"])
         axis = np.array([0.0, -1.0, 0.0])
@@ -224,6 +223,7 @@ class Toilet(PartsFactory):
         return [make_joint("seat_joint", seat, 0.0, up), make_joint("lid_joint", lid, 0.0, up)]
 
     def extra_surfaces(self, p):
+        """The toilet's surfaces besides its bounding box's: back, bottom."""
         g = self._g(p)
         H, cw = g["H"], g["cw"]
         if g["wall"]:

@@ -28,10 +28,7 @@ from indoorgen.assets.shapes.moving_parts import (
     knob,
     slide_motion,
 )
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    box_between,
-)
+from indoorgen.assets.shapes.primitives import Part, box_between
 
 #: how far the raised frame of a shaker front stands proud of the leaf (m)
 SHAKER_DEPTH = 0.006

@@ -11,18 +11,10 @@ import math
 from typing import Any
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._cabinet_parts import (
-    DOOR_OPEN,
-)
+from indoorgen.assets.generators._cabinet_parts import DOOR_OPEN
 from indoorgen.assets.generators.kitchen._parts import Unit, unit_parts
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    OVERLAP,
-    Part,
-    bevel_box,
-    box,
-    box_between,
-)
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 
@@ -116,15 +108,18 @@ class KitchenBaseCabinet(PartsFactory):
         return [Unit(-W / 2, W / 2, p["layout"], int(p["n_drawers"]), p["hinge_side"])]
 
     def parts(self, p, detail):
+        """The kitchen base cabinet's solids: detailed, or the blocks of its placeholder."""
         D, W = p["depth"], p["width"]
         out, _, _ = _run_parts(p, self._units(p), detail, False)
         out.append(_countertop(p, -D / 2, D / 2 + p["overhang"], -W / 2, W / 2, detail))
         return out
 
     def joints(self, p):
+        """The base cabinet's joints, one per door and drawer."""
         return _run_parts(p, self._units(p), False, False)[1]
 
     def extra_surfaces(self, p):
+        """The base cabinet's surfaces besides its bounding box's: top (countertop), bottom, interior_<i>."""
         D, W, H, kd = p["depth"], p["width"], p["height"], p["toe_kick_depth"]
         x1 = D / 2 + p["overhang"]
         return [support_rect("top", ((x1 - D / 2) / 2, 0, H), (x1 + D / 2) / 2 - 0.02, W / 2 - 0.02),
@@ -145,7 +140,7 @@ def run_units(p: dict[str, Any]) -> list[Unit]:
         layouts = [pattern[i % len(pattern)] for i in range(n)]
     y = -sum(ws) / 2
     out = []
-    for i, (w, lay) in enumerate(zip(ws, layouts)):
+    for i, (w, lay) in enumerate(zip(ws, layouts, strict=True)):
         out.append(Unit(y, y + w, lay, 3 if i % 2 == 0 else 4, "left" if i % 2 == 0 else "right"))
         y += w
     return out
@@ -181,6 +176,7 @@ class CountertopRun(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """The countertop run's solids: detailed, or the blocks of its placeholder."""
         units = run_units(p)
         D, H = p["depth"], p["height"]
         y0, y1 = units[0].y0, units[-1].y1
@@ -193,9 +189,11 @@ class CountertopRun(PartsFactory):
         return out
 
     def joints(self, p):
+        """The run's joints, one per door and drawer of each unit."""
         return _run_parts(p, run_units(p), False, True)[1]
 
     def extra_surfaces(self, p):
+        """The run's surfaces besides its bounding box's: top (countertop), bottom, u<i>_interior_<j>."""
         units = run_units(p)
         D, H, kd = p["depth"], p["height"], p["toe_kick_depth"]
         y0, y1 = units[0].y0, units[-1].y1
@@ -238,6 +236,7 @@ class KitchenIsland(PartsFactory):
         return units, x0, x1, units[0].y0 - side, units[-1].y1 + side
 
     def parts(self, p, detail):
+        """The kitchen island's solids: detailed, or the blocks of its placeholder."""
         p = dict(p, toe_kick_depth=0.06)
         units, x0, x1, y0, y1 = self._geometry(p)
         D, H, ct = p["depth"], p["height"], p["countertop_thickness"]
@@ -263,10 +262,12 @@ class KitchenIsland(PartsFactory):
 
     def joints(self, p):
         # doors of the end units must stop at 90 degrees against a waterfall slab
+        """The island's joints, one per door and drawer (90 degrees at most beside waterfall ends)."""
         angle = math.radians(90) if p["end_style"] == "waterfall" else DOOR_OPEN
         return _run_parts(dict(p, toe_kick_depth=0.06), run_units(p), False, True, angle)[1]
 
     def extra_surfaces(self, p):
+        """The island's surfaces besides its bounding box's: top (countertop), u<i>_interior_<j>."""
         units, x0, x1, y0, y1 = self._geometry(p)
         H = p["height"]
         return [support_rect("top", ((x0 + x1) / 2, (y0 + y1) / 2, H), (x1 - x0) / 2 - 0.02,
@@ -313,11 +314,14 @@ class KitchenWallCabinet(PartsFactory):
                           p["door_style"], top=True, high=True, n_shelves=k)
 
     def parts(self, p, detail):
+        """The kitchen wall cabinet's solids: detailed, or the blocks of its placeholder."""
         return self._build(p, detail)[0]
 
     def joints(self, p):
+        """The wall cabinet's joints, one per door or flap."""
         return self._build(p, False)[1]
 
     def extra_surfaces(self, p):
+        """The wall cabinet's surfaces besides its bounding box's: bottom, interior_<i> (shelves)."""
         D, W = p["depth"], p["width"]
         return [bottom_rect((0, 0, 0), D / 2, W / 2), *self._build(p, False)[2]]

@@ -10,14 +10,7 @@ import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    box_between,
-    cylinder,
-    lathe,
-    rod,
-    torus,
-)
+from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, lathe, rod, torus
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 
@@ -120,13 +113,15 @@ class KitchenSink(PartsFactory):
         else:
             for s in (-1, 1):
                 yh = yf + s * 0.09
-                add(lambda: cylinder(0.02, 0.045, (xf, yh, zt), 16))
-                add(lambda: rod((xf - 0.025, yh, zt + 0.04), (xf + 0.025, yh, zt + 0.04), 0.005, 8))
-                add(lambda: rod((xf, yh - 0.025, zt + 0.04), (xf, yh + 0.025, zt + 0.04), 0.005, 8))
+                if solids:
+                    out += [cylinder(0.02, 0.045, (xf, yh, zt), 16),
+                            rod((xf - 0.025, yh, zt + 0.04), (xf + 0.025, yh, zt + 0.04), 0.005, 8),
+                            rod((xf, yh - 0.025, zt + 0.04), (xf, yh + 0.025, zt + 0.04), 0.005, 8)]
             lo[1], hi[1] = yf - 0.115, yf + 0.115
         return out, (tuple(lo), tuple(hi))
 
     def parts(self, p, detail):
+        """The kitchen sink's solids: detailed, or the blocks of its placeholder."""
         W, D = p["width"], p["depth"]
         L = self._sink_layout(p)
         zb, zt, bx0, bx1 = L["zb"], L["zt"], L["bx0"], L["bx1"]
@@ -173,6 +168,7 @@ class KitchenSink(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The kitchen sink's surfaces besides its bounding box's: top."""
         W, D = p["width"], p["depth"]
         L = self._sink_layout(p)
         w = self.WALL

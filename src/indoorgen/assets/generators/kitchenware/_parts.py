@@ -1,7 +1,7 @@
 """What the kitchenware generators share: swept tubes (handles) and the lid clearance."""
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import manifold3d as m3d
 import numpy as np

@@ -14,14 +14,7 @@ from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.kitchenware._parts import LID_GAP, sweep
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.moving_parts import DoorJoint
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    bevel_box,
-    box_between,
-    cylinder,
-    lathe,
-    torus,
-)
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, torus
 from indoorgen.assets.shapes.vessels import (
     SECTIONS,
     Vessel,
@@ -51,8 +44,8 @@ def lid_solids(radius: float, dome: float, z0: float, knob: str, skirt_r: float 
     u = np.linspace(0.0, 1.0, 9)
     r = radius * (1 - u)
     z = z0 + dome * _dome(u)
-    outer = list(zip(r.tolist(), (z + t).tolist()))
-    inner = list(zip(r.tolist(), z.tolist()))
+    outer = list(zip(r.tolist(), (z + t).tolist(), strict=True))
+    inner = list(zip(r.tolist(), z.tolist(), strict=True))
     prof = [(radius, z0)] + outer + inner[::-1][:-1]
     out = [lathe(prof, SECTIONS)]
     if skirt_r > 0:
@@ -201,6 +194,7 @@ class CookingPot(PartsFactory):
         return self._r_at(p, z) - 0.006, z, 1.3 * p["radius"] + 0.06, math.radians(10)
 
     def parts(self, p, detail):
+        """The cooking pot's solids: detailed, or the blocks of its placeholder."""
         R, H, hs = p["radius"], p["height"], p["handle_style"]
         rl, z0 = R + self.LIP + 0.003, self._lid_z0(p)
         zh = self._handle_z(p)
@@ -236,6 +230,7 @@ class CookingPot(PartsFactory):
         return out
 
     def joints(self, p):
+        """The pot's joint: its lid lifting off."""
         if not p["has_lid"]:
             return []
         lift = DoorJoint("prismatic", np.array([0.0, 0.0, 1.0]),
@@ -243,6 +238,7 @@ class CookingPot(PartsFactory):
         return [make_joint("lid", lift, 0.0, 0.12)]
 
     def extra_surfaces(self, p):
+        """The cooking pot's surfaces besides its bounding box's: bottom, interior."""
         v = self._vessel(p)
         rb = p["radius"] * p["taper"] - min(0.012, 0.1 * p["height"])
         return [round_bottom("bottom", rb), interior_floor("interior", v.floor_z, v.floor_r)]
@@ -277,7 +273,7 @@ class FryingPan(PartsFactory):
         arc = [(rb - c + c * math.sin(a), c - c * math.cos(a))
                for a in np.linspace(0.0, 0.5 * math.pi, 5)]
         t = np.linspace(0.0, 1.0, 6)[1:]
-        wall = list(zip((rb + (R - rb) * t ** 1.3).tolist(), (c + (D - c) * t).tolist()))
+        wall = list(zip((rb + (R - rb) * t ** 1.3).tolist(), (c + (D - c) * t).tolist(), strict=True))
         return [(0.0, 0.0)] + arc + wall
 
     def _vessel(self, p) -> Vessel:
@@ -291,6 +287,7 @@ class FryingPan(PartsFactory):
         return r_at - 0.006, z, p["handle_length"], math.radians(p["handle_angle"])
 
     def parts(self, p, detail):
+        """The frying pan's solids: detailed, or the blocks of its placeholder."""
         R, D, hs = p["radius"], p["depth"], p["handle_style"]
         zh = D - 0.012
         if not detail:
@@ -312,6 +309,7 @@ class FryingPan(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The frying pan's surfaces besides its bounding box's: bottom, interior."""
         v = self._vessel(p)
         return [round_bottom("bottom", p["radius"] * p["base_frac"] - 0.008),
                 interior_floor("interior", v.floor_z, v.floor_r)]
@@ -342,6 +340,7 @@ class PotLid(PartsFactory):
         return 0.008 if p["skirt"] else 0.0
 
     def parts(self, p, detail):
+        """The pot lid's solids: detailed, or the blocks of its placeholder."""
         R, z0, t = p["radius"], self._z0(p), p["thickness"]
         if not detail:
             return [cheap_cylinder(R, 0.0, lid_top(p["dome"], z0, p["knob_style"], t), "metal")]

@@ -10,11 +10,7 @@ from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.kitchenware._parts import LID_GAP
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.shapes.moving_parts import DoorJoint
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    cylinder,
-    lathe,
-)
+from indoorgen.assets.shapes.primitives import Part, cylinder, lathe
 from indoorgen.assets.shapes.vessels import (
     SECTIONS,
     cheap_cylinder,
@@ -70,13 +66,13 @@ class Jar(PartsFactory):
             zs = c + (neck_z - c) * t
             rs = 0.75 * R + 0.25 * R * np.sin(math.pi * np.minimum(t * 1.15, 1.0)) ** 0.7
             rs = np.maximum(rs, rn)
-            body = list(zip(rs.tolist(), zs.tolist()))
+            body = list(zip(rs.tolist(), zs.tolist(), strict=True))
             body[-1] = (rn, neck_z)
         else:
             a = 3.0 if p["shape"] == "mason" else 1.8
             t = np.linspace(0.0, 1.0, 8)
             rs = rn + (R - rn) * (1.0 - t ** a) ** (1.0 / a)
-            body = [(R, c)] + list(zip(rs.tolist(), (sz + (neck_z - sz) * t).tolist()))
+            body = [(R, c)] + list(zip(rs.tolist(), (sz + (neck_z - sz) * t).tolist(), strict=True))
         r0 = body[0][0]
         return [(0.0, 0.0), (r0 - c, 0.0)] + body + [(rn, H)]
 
@@ -98,11 +94,13 @@ class Jar(PartsFactory):
         return [lathe(prof + [(0.0, zt)], n)]
 
     def lid_top(self, p) -> float:
+        """Height of the lid's top (the knob of a domed lid) above the jar's underside (m)."""
         rn = self._dims(p)[0]
         zt = p["height"] + LID_GAP + 0.002
         return zt + (0.14 * (rn + LID_GAP + 0.0015) + 0.011 if p["lid_style"] == "dome" else 0.0)
 
     def parts(self, p, detail):
+        """The jar's solids: detailed, or the blocks of its placeholder."""
         rn = self._dims(p)[0]
         lid_slot = "metal" if p["lid_style"] == "screw" else "glass"
         if not detail:
@@ -112,11 +110,13 @@ class Jar(PartsFactory):
         return [Part(v.shell, "glass")] + [Part(s, lid_slot, "lid") for s in self._lid(p)]
 
     def joints(self, p):
+        """The jar's joint: its lid lifting off."""
         lift = DoorJoint("prismatic", np.array([0.0, 0.0, 1.0]),
                          np.array([0.0, 0.0, p["height"]]), "lid")
         return [make_joint("lid", lift, 0.0, 0.08)]
 
     def extra_surfaces(self, p):
+        """The jar's surfaces besides its bounding box's: bottom, interior."""
         n = self._sections(p)
         v = revolve_vessel(self._outer(p), p["wall_thickness"], 0.006, n)
         return [round_bottom("bottom", self._outer(p)[1][0], n),

@@ -7,7 +7,7 @@ section bent along a path by one vectorised warp, no booleans) whose ends rest o
 from __future__ import annotations
 
 import math
-from typing import Callable
+from collections.abc import Callable
 
 import manifold3d as m3d
 import numpy as np
@@ -17,12 +17,7 @@ from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.kitchenware._parts import sweep
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    bevel_box,
-    box_between,
-    cylinder,
-)
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -140,6 +135,7 @@ class Knife(PartsFactory):
         return ht + (0.0003 if p["handle_material"] == "wood" else 0.0)
 
     def parts(self, p, detail):
+        """The knife's solids: detailed, or the blocks of its placeholder."""
         L, w, Lh, hw, ht = self._dims(p)
         hmat = p["handle_material"]
         if not detail:
@@ -219,6 +215,7 @@ class Fork(PartsFactory):
             r, join_style="round", quad_segs=3)
 
     def parts(self, p, detail):
+        """The fork's solids: detailed, or the blocks of its placeholder."""
         L, W, Lh = p["head_length"], p["head_width"], p["handle_length"]
         t, hw = p["thickness"], p["handle_width"]
         th_end = 1.5 * t
@@ -266,6 +263,7 @@ class Spoon(PartsFactory):
         return (outer - inner).translate((0.0, 0.0, -0.0004)).trim_by_plane((0, 0, 1), 0.0)
 
     def parts(self, p, detail):
+        """The spoon's solids: detailed, or the blocks of its placeholder."""
         a, b, c, t = self._dims(p)
         Lh, hw = p["handle_length"], p["handle_width"]
         top = c + 0.35 * t  # the neck rises a little above the rim
@@ -320,6 +318,7 @@ class Chopsticks(PartsFactory):
         return np.array([xr - 0.008, -half, 0.0]), np.array([xr + 0.008, half, self.REST_H])
 
     def parts(self, p, detail):
+        """The chopsticks' solids: detailed, or the blocks of its placeholder."""
         L, r = p["length"], p["radius"]
         xr, slope, ang, off = self._geometry(p)
         mat = p["material"]
@@ -389,6 +388,7 @@ class Spatula(PartsFactory):
         return poly
 
     def parts(self, p, detail):
+        """The spatula's solids: detailed, or the blocks of its placeholder."""
         L, W, Lh = p["head_length"], p["head_width"], p["handle_length"]
         t, _, head_slot, handle_slot = self.STYLES[p["style"]]
         hw = p["handle_width"]
@@ -465,6 +465,7 @@ class CuttingBoard(PartsFactory):
                                         extrude_outline(poly, c, T - c)])
 
     def parts(self, p, detail):
+        """The cutting board's solids: detailed, or the blocks of its placeholder."""
         T, slot = p["thickness"], "plastic" if p["plastic"] else "wood"
         L, W = p["length"], p["width"]
         if not detail:
@@ -492,9 +493,11 @@ class CuttingBoard(PartsFactory):
         return top.simplify(1e-5)
 
     def bottom_is_solid(self, params):
+        """Whether the board's whole underside is solid (no hanging hole through it)."""
         return not self.resolve(params)["handle_hole"]
 
     def extra_surfaces(self, p):
+        """The cutting board's surfaces besides its bounding box's: top, bottom."""
         c = min(p["chamfer"], 0.3 * p["thickness"])
         outline = self._outlines(p)
         bottom = (outline[0].union(outline[1]) if len(outline) > 1 else outline[0]).buffer(

@@ -242,6 +242,7 @@ class InteriorDoor(PartsFactory):
                 "cy": W / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
     def parts(self, p, detail):
+        """The interior door's solids: detailed, or the blocks of its placeholder."""
         T, ct, cw = p["wall_thickness"], p["casing_thickness"], p["casing_width"]
         g = self._g(p)
         if not detail:
@@ -275,9 +276,11 @@ class InteriorDoor(PartsFactory):
         return parts
 
     def joints(self, p):
+        """The interior door's joint: its leaf's hinge."""
         return [_leaf_joint(p["hinge_side"], self._g(p), p["wall_thickness"], p["casing_thickness"])]
 
     def extra_surfaces(self, p):
+        """The interior door's surfaces besides its bounding box's: opening."""
         return [opening_surface(-p["width"] / 2, p["width"] / 2, 0.0, p["height"])]
 
 
@@ -334,6 +337,7 @@ class SlidingDoor(PartsFactory):
                 "ry0": lo_y, "ry1": hi_y, "cy": W / 2 - 0.02 + CASING_REVEAL, "cz": H - 0.02 + CASING_REVEAL}
 
     def parts(self, p, detail):
+        """The sliding door's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         T, cw, ct = g["T"], p["casing_width"], g["ct"]
         wheel_top = g["rz1"] + LEAF_GAP + 2 * g["wr"]
@@ -406,7 +410,7 @@ class SlidingDoor(PartsFactory):
                   box_between((xa, y0, z0), (xb, y1, z0 + b)), box_between((xa, y0, z1 - b), (xb, y1, z1)),
                   box_between((xa, y0, zm - b / 2), (xb, y1, zm + b / 2))]
         bays = [(z0 + b, zm - b / 2), (zm + b / 2, z1 - b)]
-        for k, (za, zb) in enumerate(bays):
+        for za, zb in bays:
             diags = [(1, -1)] if style == "z_brace" else [(1, -1), (-1, 1)]
             for flip in diags[:2]:
                 ya, yb = (y0 + b, y1 - b) if flip[0] > 0 else (y1 - b, y0 + b)
@@ -445,12 +449,14 @@ class SlidingDoor(PartsFactory):
         return cut_parts + [Part(cups - cut, "handle", "leaf")]
 
     def joints(self, p):
+        """The sliding door's joint: its leaf's slide."""
         g = self._g(p)
         m = DoorJoint("prismatic", np.array([0.0, g["sgn"], 0.0]),
                       np.array([g["rx"], (g["ly0"] + g["ly1"]) / 2, g["rz1"]]), "leaf")
         return [make_joint("leaf_joint", m, 0.0, g["travel"])]
 
     def extra_surfaces(self, p):
+        """The sliding door's surfaces besides its bounding box's: opening."""
         return [opening_surface(-p["width"] / 2, p["width"] / 2, 0.0, p["height"])]
 
 
@@ -527,6 +533,7 @@ class ExteriorDoor(PartsFactory):
                 "cy": total / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
     def parts(self, p, detail):
+        """The exterior door's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         T, ct, cw = g["T"], self.CASING_T, p["casing_width"]
         if not detail:
@@ -611,10 +618,12 @@ class ExteriorDoor(PartsFactory):
         return solid_union([plate, pivot, ring_])
 
     def joints(self, p):
+        """The exterior door's joint: its leaf's hinge."""
         g = self._g(p)
         return [_leaf_joint(p["hinge_side"], g, g["T"], self.CASING_T)]
 
     def extra_surfaces(self, p):
+        """The exterior door's surfaces besides its bounding box's: opening."""
         g = self._g(p)
         return [opening_surface(-g["total"] / 2, g["total"] / 2, 0.0, p["height"])]
 

@@ -129,6 +129,7 @@ class Window(PartsFactory):
 
     # ---- parts
     def parts(self, p, detail):
+        """The window's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         if not detail:
             half_w = g["cy"] + p["casing_width"] + HORN
@@ -155,8 +156,8 @@ class Window(PartsFactory):
                   box_between((-T / 2, -W / 2, H - LINING), (T / 2, W / 2, H))]
         frame = [ring(-W / 2 + LINING - MEMBER_OVERLAP, W / 2 - LINING + MEMBER_OVERLAP, STOOL - MEMBER_OVERLAP, H - LINING + MEMBER_OVERLAP,
                       g["xf0"], g["xf1"], fw + MEMBER_OVERLAP)]
-        mullions = [] if p["style"] == "sliding" else zip(g["cols"][:-1], g["cols"][1:])
-        for (a0, a1), (b0, _) in mullions:
+        mullions = [] if p["style"] == "sliding" else zip(g["cols"][:-1], g["cols"][1:], strict=True)
+        for (_, a1), (b0, _) in mullions:
             # set 3 mm back from both frame faces: no faces flush with the frame's
             frame.append(box_between((g["xf0"] + 0.003, a1 - MEMBER_OVERLAP, g["Z0"] - MEMBER_OVERLAP),
                                      (g["xf1"] - 0.003, b0 + MEMBER_OVERLAP, g["Z1"] + MEMBER_OVERLAP)))
@@ -282,6 +283,7 @@ class Window(PartsFactory):
 
     # ---- joints and surfaces
     def joints(self, p):
+        """The window's joints, one per opening sash (sash_<i>_joint)."""
         g = self._g(p)
         out = []
         if p["style"] == "sliding":
@@ -309,6 +311,7 @@ class Window(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The window's surfaces besides its bounding box's: opening, sill."""
         g = self._g(p)
         x0, x1 = g["xf1"] + 0.01, g["R"] - 0.005
         hw = g["W"] / 2 - LINING - 0.01
@@ -371,6 +374,7 @@ class BayWindow(PartsFactory):
         return grown.intersection(sg.box(-10.0, -10.0, -T / 2, 10.0))
 
     def parts(self, p, detail):
+        """The bay window's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         W, H, T = g["W"], g["H"], g["T"]
         cw = p["casing_width"]
@@ -400,7 +404,7 @@ class BayWindow(PartsFactory):
         pts, fd, fw = g["pts"], self.FRAME_D, p["frame_width"]
         zb, zt = self.BOARD - MEMBER_OVERLAP, g["H"] - self.BOARD + MEMBER_OVERLAP
         out: list[Part] = []
-        edges = list(zip(pts[:-1], pts[1:]))
+        edges = list(zip(pts[:-1], pts[1:], strict=True))
         for k, (a, b) in enumerate(edges):
             e = (b - a) / np.linalg.norm(b - a)
             n_in = np.array([e[1], -e[0]])
@@ -411,7 +415,7 @@ class BayWindow(PartsFactory):
             mat = np.array([[n_in[0], e[0], 0.0, a[0]], [n_in[1], e[1], 0.0, a[1]], [0.0, 0.0, 1.0, 0.0]])
             for solid, slot in _panel(s0, s1, zb, zt, fd, fw, lites, bool(p["transom"])):
                 out.append(Part(solid.transform(mat), slot))
-        for (a, b), (_, c) in zip(edges[:-1], edges[1:]):
+        for (a, b), (_, c) in zip(edges[:-1], edges[1:], strict=True):
             e1 = (b - a) / np.linalg.norm(b - a)
             e2 = (c - b) / np.linalg.norm(c - b)
             n1, n2 = np.array([e1[1], -e1[0]]), np.array([e2[1], -e2[0]])
@@ -436,6 +440,7 @@ class BayWindow(PartsFactory):
         return [Part(fascia, "frame"), Part(roof, "stone")]
 
     def extra_surfaces(self, p):
+        """The bay window's surfaces besides its bounding box's: opening, seat."""
         g = self._g(p)
         W, T = g["W"], g["T"]
         x_room = T / 2 + max(p["seat_overhang"], CASING_T)

@@ -13,11 +13,7 @@ import numpy as np
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    cylinder,
-    lathe,
-)
+from indoorgen.assets.shapes.primitives import Part, cylinder, lathe
 from indoorgen.assets.shapes.vessels import (
     SECTIONS,
     Vessel,
@@ -78,12 +74,12 @@ def bottle_outer(b: BottleSpec) -> list[tuple[float, float]]:
         z_r = np.linspace(0.2, 0.85, b.ribs) * b.shoulder_z
         d = np.abs(z[:, None] - z_r[None, :]).min(axis=1)
         r -= 0.0015 * (d < 0.0045)
-    pts += list(zip(r.tolist(), z.tolist()))
+    pts += list(zip(r.tolist(), z.tolist(), strict=True))
     t = np.linspace(0.0, 1.0, 10)[1:]
     a = b.shoulder_exp
     rs = b.neck_r + (float(r[-1]) - b.neck_r) * (1.0 - t ** a) ** (1.0 / a)
     zs = b.shoulder_z + (b.neck_z - b.shoulder_z) * t
-    pts += list(zip(rs.tolist(), zs.tolist()))
+    pts += list(zip(rs.tolist(), zs.tolist(), strict=True))
     zl = b.height - b.lip_h
     if b.support_ring:
         zr = zl - 0.006
@@ -171,6 +167,7 @@ class WineBottle(_Bottle):
     }
 
     def spec(self, p):
+        """The shape of the wine bottle these params make."""
         H, style = p["height"], p["style"]
         R = p["body_radius"] * (0.85 if style == "hock" else 1.0)
         neck_z = H * (1.0 - p["neck_frac"])
@@ -202,6 +199,7 @@ class BeerBottle(_Bottle):
     }
 
     def spec(self, p):
+        """The shape of the beer bottle these params make."""
         style = p["style"]
         H = p["height"] * (0.7 if style == "stubby" else 1.0)
         R = p["body_radius"] * (1.12 if style == "stubby" else 1.0)
@@ -235,6 +233,7 @@ class SodaBottle(_Bottle):
     }
 
     def spec(self, p):
+        """The shape of the soda bottle these params make."""
         H, style = p["height"], p["style"]
         R = p["body_radius"]
         neck = {"contour": 0.2, "pet": 0.1, "classic": 0.25}[style] * H

@@ -3,12 +3,7 @@ from __future__ import annotations
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    circle_polygon,
-    cylinder,
-    lathe,
-)
+from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.assets.shapes.vessels import (
     bowl_base_radius,
@@ -42,6 +37,7 @@ class Plate(PartsFactory):
     }
 
     def underside(self, p, n: int) -> list[tuple[float, float]]:
+        """The plate's underside as n + 1 (r, z) points from the foot's edge to the rim."""
         R, h, th = p["radius"], p["rim_height"], p["thickness"]
         rf = R * p["foot_frac"]
         lip = 0.12 * (R - rf) if p["rim_lip"] else 0.0
@@ -55,6 +51,7 @@ class Plate(PartsFactory):
         return pts
 
     def parts(self, p, detail):
+        """The plate's solids: detailed, or the blocks of its placeholder."""
         R, h, th = p["radius"], p["rim_height"], p["thickness"]
         if not detail:
             return [Part(cylinder(R, h, (0, 0, 0), 16, circumscribed=True), "ceramic")]
@@ -64,6 +61,7 @@ class Plate(PartsFactory):
         return [Part(lathe(prof, 64), "ceramic")]
 
     def extra_surfaces(self, p):
+        """The plate's surfaces besides its bounding box's: bottom, top."""
         rf = p["radius"] * p["foot_frac"]
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(rf * 0.995, 64),
                                 subpart=Subpart.Bottom, up=False),
@@ -83,14 +81,17 @@ class Bowl(PartsFactory):
     params = bowl_params(0.06, 0.13, 0.04, 0.09)
 
     def bottom_is_solid(self, params):
+        """Whether the bowl rests on a flat base, not on a foot ring."""
         return not self.resolve(params)["foot_ring"]
 
     def parts(self, p, detail):
+        """The bowl's solids: detailed, or the blocks of its placeholder."""
         if not detail:
             return [cheap_cylinder(p["radius"] + p["rim_flare"], 0.0, p["height"], "ceramic")]
         return [Part(bowl_vessel(p).shell, "ceramic")]
 
     def extra_surfaces(self, p):
+        """The bowl's surfaces besides its bounding box's: bottom, interior."""
         v = bowl_vessel(p)
         return [round_bottom("bottom", bowl_base_radius(p)),
                 interior_floor("interior", v.floor_z, v.floor_r)]

@@ -13,14 +13,7 @@ import numpy as np
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.primitives import (
-    Part,
-    bevel_box,
-    box_between,
-    circle_polygon,
-    lathe,
-    torus,
-)
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, circle_polygon, lathe, torus
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.assets.shapes.vessels import (
     SECTIONS,
@@ -66,6 +59,7 @@ class Cup(PartsFactory):
         return R, hr, H * 0.5
 
     def parts(self, p, detail):
+        """The cup's solids: detailed, or the blocks of its placeholder."""
         H, w, b = p["height"], p["wall_thickness"], p["base_thickness"]
         rb, rt = p["radius"] * p["bottom_frac"], p["radius"]
         out = []
@@ -91,6 +85,7 @@ class Cup(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The cup's surfaces besides its bounding box's: bottom."""
         rb = p["radius"] * p["bottom_frac"]
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(rb * 0.995, 48),
                                 subpart=Subpart.Bottom, up=False)]
@@ -141,7 +136,7 @@ class Mug(PartsFactory):
         pts = [(0.0, 0.0), (float(r[0]) - c, 0.0)]
         z = t * H
         z[0] = c
-        return pts + list(zip(r.tolist(), z.tolist()))
+        return pts + list(zip(r.tolist(), z.tolist(), strict=True))
 
     def _rmax(self, p) -> float:
         return float(max(q[0] for q in self._outer(p)))
@@ -173,6 +168,7 @@ class Mug(PartsFactory):
         return (loop ^ keep) - cavity
 
     def parts(self, p, detail):
+        """The mug's solids: detailed, or the blocks of its placeholder."""
         H = p["height"]
         R, t, zc, ry, yc = self._handle_dims(p)
         if not detail:
@@ -186,6 +182,7 @@ class Mug(PartsFactory):
         return [Part(v.shell, "ceramic"), Part(self._handle(p, v.cavity), "ceramic")]
 
     def extra_surfaces(self, p):
+        """The mug's surfaces besides its bounding box's: bottom, interior."""
         o = self._outer(p)
         v = revolve_vessel(o, p["wall_thickness"], p["base_thickness"])
         return [round_bottom("bottom", o[1][0]), interior_floor("interior", v.floor_z, v.floor_r)]
@@ -245,13 +242,14 @@ class Wineglass(PartsFactory):
         zb = z0 + (H - z0) * t
         foot = [(0.0, 0.0), (rf, 0.0), (rf, tf * 0.6), (rf - 0.004, tf), (2.5 * rs, tf + 0.004),
                 (rs, tf + 0.012), (rs, z0 - 0.004)]
-        return foot + list(zip(rb.tolist(), zb.tolist()))
+        return foot + list(zip(rb.tolist(), zb.tolist(), strict=True))
 
     def _vessel(self, p) -> Vessel:
         z0 = self._dims(p)[0]
         return revolve_vessel(self._outer(p), p["wall_thickness"], z0 + 0.006)
 
     def parts(self, p, detail):
+        """The wineglass's solids: detailed, or the blocks of its placeholder."""
         if detail:
             return [Part(self._vessel(p).shell, "glass")]
         z0 = self._dims(p)[0]
@@ -260,6 +258,7 @@ class Wineglass(PartsFactory):
                 cheap_cylinder(rmax, z0 - 0.004, p["height"], "glass")]
 
     def extra_surfaces(self, p):
+        """The wineglass's surfaces besides its bounding box's: bottom."""
         return [round_bottom("bottom", p["foot_radius"])]
 
 
@@ -299,19 +298,21 @@ class GlassTumbler(PartsFactory):
         c = 0.0015
         z = t * H
         z[0] = c
-        return [(0.0, 0.0), (float(r[0]) - c, 0.0)] + list(zip(r.tolist(), z.tolist()))
+        return [(0.0, 0.0), (float(r[0]) - c, 0.0)] + list(zip(r.tolist(), z.tolist(), strict=True))
 
     def _vessel(self, p) -> Vessel:
         return revolve_vessel(self._outer(p), p["wall_thickness"], p["base_thickness"],
                               self._sections(p))
 
     def parts(self, p, detail):
+        """The glass tumbler's solids: detailed, or the blocks of its placeholder."""
         if detail:
             return [Part(self._vessel(p).shell, "glass")]
         rmax = max(r for r, _ in self._outer(p))
         return [cheap_cylinder(rmax, 0.0, p["height"], "glass")]
 
     def extra_surfaces(self, p):
+        """The glass tumbler's surfaces besides its bounding box's: bottom, interior."""
         o, n = self._outer(p), self._sections(p)
         v = self._vessel(p)
         # polygons with the mesh's own vertex angles, just inside its n-gons
