@@ -190,7 +190,8 @@ class Staircase(PartsFactory):
         z_end = z0 + n * r - tt + (0.0 if fl.end_floor else MEMBER_OVERLAP)
         top += [((n - 1) * go, z_end), (x_e, z_end)]
         outline = sg.Polygon(top + [(x_e, z_cut - 10), (top[0][0], z_cut - 10)])
-        below = sg.Polygon([(x_s - 1, P(x_s - 1) - b2), (x_e + 1, P(x_e + 1) - b2), (x_e + 1, 1e3), (x_s - 1, 1e3)])
+        below = sg.Polygon([(x_s - 1, P(x_s - 1) - b2), (x_e + 1, P(x_e + 1) - b2), (x_e + 1, 1e3),
+                            (x_s - 1, 1e3)])
         cut = outline.intersection(below).intersection(sg.box(-10, z_cut, 100, 1e3))
         return np.asarray(cut.exterior.coords)[:-1]
 
@@ -261,7 +262,8 @@ class Staircase(PartsFactory):
                 for k in (0.25, 0.75):
                     xs.append(i * go - nos + k * (go + nos))
                     bases.append(z0 + (i + 1) * r - 0.005)
-        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot) for x, zb in zip(xs, bases, strict=True)]
+        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot)
+                for x, zb in zip(xs, bases, strict=True)]
         return out
 
     # ---------------------------------------------------------------- landings
@@ -300,7 +302,8 @@ class Staircase(PartsFactory):
         if g["inner_railed"] and f2.quarter == 2:
             side = g["s"]
             y = self._rail_y(g, side)
-            runs.append((f1.point((f1.n - 1) * g["go"] + POST / 2, y)[:2], f2.point(-g["nos"] - POST / 2, y)[:2]))
+            runs.append((f1.point((f1.n - 1) * g["go"] + POST / 2, y)[:2],
+                         f2.point(-g["nos"] - POST / 2, y)[:2]))
         if not g["outer_railed"]:
             return runs
         c = self._landing_corners(lg)
@@ -324,7 +327,8 @@ class Staircase(PartsFactory):
             q0, q1 = a + u * (POST / 2 - MEMBER_OVERLAP), b - u * (POST / 2 - MEMBER_OVERLAP)
             pts = [(x, y, zz) for x, y in (q0, q1) for zz in (z - 0.01, z + hh - 0.03)]
             n = np.array([-u[1], u[0]]) * 0.006
-            out.append(Part(hull([(x + sx * n[0], y + sx * n[1], zz) for x, y, zz in pts for sx in (-1, 1)]), "glass"))
+            out.append(Part(hull([(x + sx * n[0], y + sx * n[1], zz) for x, y, zz in pts for sx in (-1, 1)]),
+                            "glass"))
             return out
         ts = baluster_positions(L, SPACING, POST / 2 + 0.05)
         slot = "wood" if style == "spindle" else "metal"
@@ -368,7 +372,8 @@ class Staircase(PartsFactory):
         if p["closed_risers"]:
             for j in range(n - 1):
                 a = self._spiral_angle(g, q, j)
-                out.append(Part(prism(self._riser_footprint(a, s, q["R"] - 0.02), j * r - (MEMBER_OVERLAP if j else 0.0),
+                out.append(Part(prism(self._riser_footprint(a, s, q["R"] - 0.02),
+                                      j * r - (MEMBER_OVERLAP if j else 0.0),
                                       (j + 1) * r - tt + MEMBER_OVERLAP), "frame"))
         out += self._spiral_rail(p, g, q)
         return out
@@ -409,7 +414,8 @@ class Staircase(PartsFactory):
         (a_start, _, _), (a_end, _, _) = self._spiral_posts(g, q)
         k = max(2, int(math.ceil(abs(a_end - a_start) / math.radians(12.0))))
         angles = np.linspace(a_start, a_end, k + 1)
-        pts = [np.array([ry * math.cos(a), ry * math.sin(a), self._spiral_rail_height(g, q, a)]) for a in angles]
+        pts = [np.array([ry * math.cos(a), ry * math.sin(a),
+                         self._spiral_rail_height(g, q, a)]) for a in angles]
         segs = []
         for p0, p1 in zip(pts[:-1], pts[1:], strict=True):
             d = (p1 - p0) / np.linalg.norm(p1 - p0) * 0.012
@@ -495,7 +501,8 @@ class Staircase(PartsFactory):
         e = POST / 2 + 0.011
         for a, b in self._landing_runs(g, lg):
             lo, hi = np.minimum(a, b) - e, np.maximum(a, b) + e
-            out.append(Part(box_between((lo[0], lo[1], lg["z"] - g["tt"]), (hi[0], hi[1], lg["z"] + g["hh"] + 0.08)), "frame"))
+            out.append(Part(box_between((lo[0], lo[1], lg["z"] - g["tt"]),
+                                        (hi[0], hi[1], lg["z"] + g["hh"] + 0.08)), "frame"))
         return out
 
     def _spiral_cheap(self, p, g) -> list[Part]:
@@ -546,9 +553,11 @@ class Staircase(PartsFactory):
                 out.append(Surface(f"tread_{k}", Subpart.SupportSurface, rot @ c + t, up, u, rect))
                 k += 1
         for j, lg in enumerate(g["landings"]):
-            x0 = lg["x0"] + (0.13 if len(g["flights"]) == 2 and g["flights"][1].quarter != 2 else g["nos"] + POST + 0.03)
+            turn = len(g["flights"]) == 2 and g["flights"][1].quarter != 2
+            x0 = lg["x0"] + (0.13 if turn else g["nos"] + POST + 0.03)
             x1, y0, y1 = lg["x1"] - 0.13, lg["y0"] + 0.13, lg["y1"] - 0.13
-            out.append(support_rect(f"landing_{j}", ((x0 + x1) / 2, (y0 + y1) / 2, lg["z"]), (x1 - x0) / 2, (y1 - y0) / 2))
+            out.append(support_rect(f"landing_{j}", ((x0 + x1) / 2, (y0 + y1) / 2, lg["z"]), (x1 - x0) / 2,
+                                    (y1 - y0) / 2))
         return out
 
     def _spiral_surfaces(self, p, g) -> list[Surface]:
@@ -645,12 +654,14 @@ class StairRailing(PartsFactory):
         for ya, yb in zip(ys[:-1], ys[1:], strict=True):
             a, b = ya + ps / 2 - MEMBER_OVERLAP, yb - ps / 2 + MEMBER_OVERLAP
             if p["infill"] == "glass":
-                infill.append(box_between((-0.006, a, z0 - MEMBER_OVERLAP if z0 else 0.06), (0.006, b, H - 0.03)))
+                infill.append(box_between((-0.006, a, z0 - MEMBER_OVERLAP if z0 else 0.06),
+                                          (0.006, b, H - 0.03)))
             elif p["infill"] == "bars":
                 zs = np.arange(max(z0, 0.08) + 0.02, H - 0.06, p["baluster_spacing"])
                 infill += [rod((0.0, a, z), (0.0, b, z), 0.01, 8) for z in zs]
             else:
-                infill += [baluster(0.0, ya + t, z0 - MEMBER_OVERLAP if z0 else 0.0, H - 0.02, p["infill"], 90.0)
+                infill += [baluster(0.0, ya + t, z0 - MEMBER_OVERLAP if z0 else 0.0, H - 0.02, p["infill"],
+                                    90.0)
                            for t in baluster_positions(yb - ya, p["baluster_spacing"], ps / 2 + 0.04)]
         out += [Part(q, slot) for q in infill]
         return out

@@ -208,7 +208,8 @@ class WoodenPallet(PartsFactory):
                                             (x + bx / 2 - 0.002, y + by / 2 - 0.002, t + hb + o)), "wood"))
         z = t + hb
         for y in ys:  # cross boards along X
-            out.append(Part(self._board((-Wd / 2, y - by / 2, z), (Wd / 2, y + by / 2, z + t), detail), "wood"))
+            out.append(Part(self._board((-Wd / 2, y - by / 2, z), (Wd / 2, y + by / 2, z + t), detail),
+                            "wood"))
         return out
 
     def _stringer_parts(self, p, detail: bool) -> list[Part]:

@@ -158,11 +158,13 @@ def muntins(y0: float, y1: float, z0: float, z1: float, x0: float, x1: float, co
     out = []
     for i in range(1, cols):
         y = y0 + (y1 - y0) * i / cols
-        out.append(box_between((x0, y - bar / 2, z0 - MEMBER_OVERLAP), (x1, y + bar / 2, z1 + MEMBER_OVERLAP)))
+        out.append(box_between((x0, y - bar / 2, z0 - MEMBER_OVERLAP),
+                               (x1, y + bar / 2, z1 + MEMBER_OVERLAP)))
     e = min(0.002, 0.1 * (x1 - x0))  # horizontal bars a little shallower: no flush faces
     for j in range(1, rows):
         z = z0 + (z1 - z0) * j / rows
-        out.append(box_between((x0 + e, y0 - MEMBER_OVERLAP, z - bar / 2), (x1 - e, y1 + MEMBER_OVERLAP, z + bar / 2)))
+        out.append(box_between((x0 + e, y0 - MEMBER_OVERLAP, z - bar / 2),
+                               (x1 - e, y1 + MEMBER_OVERLAP, z + bar / 2)))
     return out
 
 

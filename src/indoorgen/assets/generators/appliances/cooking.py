@@ -86,7 +86,8 @@ def _grates(cells, burners, continuous: bool) -> list[list[tuple[float, float, f
     if continuous:
         return [[q for c, bn in zip(cells, burners, strict=True) for q in _grate_bars(c, bn)]]
     g = 0.004
-    return [_grate_bars((a + g, b - g, c + g, d - g), bn) for (a, b, c, d), bn in zip(cells, burners, strict=True)]
+    return [_grate_bars((a + g, b - g, c + g, d - g), bn)
+            for (a, b, c, d), bn in zip(cells, burners, strict=True)]
 
 
 def hob_parts(style: str, region: tuple[float, float, float, float], z_top: float, n: int,
@@ -523,7 +524,7 @@ class Range(PartsFactory):
         return [joint_for(m, slide=s) for _, m, s in self._moving(p)]
 
     def extra_surfaces(self, p):
-        """The range's surfaces besides its bounding box's: the hob's, bottom (plinth), the oven's floor and racks."""
+        """The range's surfaces besides its bounding box's: the hob's, bottom, the oven's floor and racks."""
         D, W, H = p["depth"], p["width"], p["height"]
         g = self._geom(p)
         lo, hi = self._cavity(p)

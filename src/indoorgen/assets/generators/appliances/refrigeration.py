@@ -373,7 +373,7 @@ class BeverageFridge(PartsFactory):
         return [joint_for(self._door(p)[1])]
 
     def extra_surfaces(self, p):
-        """The beverage fridge's surfaces besides its bounding box's: top, bottom, interior_<i> (floor, shelves)."""
+        """The beverage fridge's surfaces besides its bounding box's: top, bottom, interior_<i>."""
         D, W, H = p["depth"], p["width"], p["height"]
         cx0, cx1, cy0, cy1, cz0, _ = self._cavity(p)
         out = [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),

@@ -97,7 +97,8 @@ class BathtubAlcove(PartsFactory):
             outer = box_between((-D / 2, -L / 2, 0.0), (D / 2, L / 2, H))
         if p["apron_style"] == "panelled":
             border = 0.05
-            outer = outer + (box_between((D / 2 - OVERLAP, -L / 2 + 0.04, 0.05), (front, L / 2 - 0.04, H - 0.05))
+            outer = outer + (box_between((D / 2 - OVERLAP, -L / 2 + 0.04, 0.05),
+                                         (front, L / 2 - 0.04, H - 0.05))
                              - box_between((D / 2, -L / 2 + 0.04 + border, 0.05 + border),
                                            (front + 0.01, L / 2 - 0.04 - border, H - 0.05 - border)))
         out = [Part(hollow(outer, self._cavity(p, g)), "porcelain")]
@@ -235,7 +236,8 @@ class BathtubFreestanding(PartsFactory):
                             (0.036, zb), (0.045, zb + min(t / 2, 0.01)), (0.0, zb + min(t / 2, 0.01))]
                     out.append(Part(lathe(prof, 24).translate((fx, fy, 0.0)), "metal"))
                 else:
-                    out.append(Part(cylinder(0.045, zb + 0.01, (fx, fy, 0.0), 8, circumscribed=True), "metal"))
+                    out.append(Part(cylinder(0.045, zb + 0.01, (fx, fy, 0.0), 8, circumscribed=True),
+                                    "metal"))
         return out
 
     def _feet(self, p, g) -> list[tuple[float, float]]:

@@ -184,7 +184,8 @@ class ShowerEnclosure(PartsFactory):
         if p["layout"] == "walk_in":
             y0 = y_w - p["panel_fraction"] * W
             glass.append(box_between((x_f - t / 2, y0, z0), (x_f + t / 2, y_w + OVERLAP, z1)))
-            metal.append(box_between((x_f - t / 2 - 0.006, y_w - pw, z0), (x_f + t / 2 + 0.006, y_w + OVERLAP, z1)))
+            metal.append(box_between((x_f - t / 2 - 0.006, y_w - pw, z0),
+                                     (x_f + t / 2 + 0.006, y_w + OVERLAP, z1)))
             metal.append(rod((x_f, y0 + 0.05, z1 - 0.06), (x_w - OVERLAP, y0 + 0.05, z1 - 0.06), 0.01, 12))
         elif p["layout"] == "quadrant":
             (cx, cy), ra = g["c"], g["R_arc"]
@@ -199,7 +200,8 @@ class ShowerEnclosure(PartsFactory):
             glass.append(box_between((x_w - OVERLAP, y_s - t / 2, z0), (x_f + t / 2, y_s + t / 2, z1)))
             if p["door"] == "hinged":
                 h = self._hinged(g)
-                glass.append(box_between((x_f - t / 2, y_s - t / 2, z0), (x_f + t / 2, h["y0"] - MOVING_GAP, z1)))
+                glass.append(box_between((x_f - t / 2, y_s - t / 2, z0),
+                                         (x_f + t / 2, h["y0"] - MOVING_GAP, z1)))
                 for zh in (th + 0.3, g["z1"] - 0.3):  # hinges on the wall
                     metal.append(box_between((x_f - 0.02, h["y1"] + MOVING_GAP, zh - 0.04),
                                              (x_f + 0.02, y_w + OVERLAP, zh + 0.04)))
@@ -211,7 +213,8 @@ class ShowerEnclosure(PartsFactory):
             metal.append(box_between((x_f - t / 2 - 0.006, y_s - t / 2 - 0.006, z0),
                                      (x_f + t / 2 + 0.006, y_s + t / 2 + 0.006, z1)))  # corner clamp/post
         if p["layout"] != "walk_in":  # wall profile of the side panel
-            metal.append(box_between((x_w - OVERLAP, y_s - t / 2 - 0.006, z0), (x_w + pw, y_s + t / 2 + 0.006, z1)))
+            metal.append(box_between((x_w - OVERLAP, y_s - t / 2 - 0.006, z0),
+                                     (x_w + pw, y_s + t / 2 + 0.006, z1)))
         if g["framed"] and p["layout"] != "walk_in":  # top rail along the side panel
             x_end = g["c"][0] + 0.011 if p["layout"] == "quadrant" else x_f + t / 2 + 0.006
             metal.append(box_between((x_w - OVERLAP, y_s - t / 2 - 0.006, z1 - 0.03),
@@ -252,7 +255,8 @@ class ShowerEnclosure(PartsFactory):
         elif p["layout"] == "walk_in":
             z1 = g["z1"]
         return [Part(box_between((-D / 2, -W / 2, 0.0), (D / 2, W / 2, g["th"])), "ceramic"),
-                Part(box_between((-D / 2, -W / 2, g["z0"]), (max(x1, D / 2), W / 2, max(z1, hh[2]))), "glass")]
+                Part(box_between((-D / 2, -W / 2, g["z0"]), (max(x1, D / 2), W / 2, max(z1, hh[2]))),
+                     "glass")]
 
     def joints(self, p):
         """The shower's joints, one per hinged or sliding door."""

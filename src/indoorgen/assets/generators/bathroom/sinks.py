@@ -359,7 +359,8 @@ class Vanity(PartsFactory):
             elif kind == "column":
                 k = 3 if z1 - z0 > 0.5 else 2
                 hs = np.linspace(z0, z1, k + 1)
-                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:], strict=True)]
+                cells += [Front(y0, y1, float(a), float(b), "drawer")
+                          for a, b in zip(hs[:-1], hs[1:], strict=True)]
             elif p["front_style"] == "drawers":
                 top = z1
                 if under:
@@ -367,7 +368,8 @@ class Vanity(PartsFactory):
                     fixed.append((y0, y1, top, z1))
                 k = 2 if top - z0 > 0.3 else 1
                 hs = np.linspace(z0, top, k + 1)
-                cells += [Front(y0, y1, float(a), float(b), "drawer") for a, b in zip(hs[:-1], hs[1:], strict=True)]
+                cells += [Front(y0, y1, float(a), float(b), "drawer")
+                          for a, b in zip(hs[:-1], hs[1:], strict=True)]
             elif y1 - y0 > 0.55:
                 ym = (y0 + y1) / 2
                 cells += [Front(y0, ym, z0, z1, "left"), Front(ym, y1, z0, z1, "right")]
@@ -419,7 +421,8 @@ class Vanity(PartsFactory):
                                             (b["cx"] + hx, b["cy"] + hy, H - tt + OVERLAP)), "porcelain"))
             fh = 0.3 if p["basin_type"] == "vessel" else 0.16
             # a vessel's tap reaches over the bowl's middle, an undermount's 8 cm past its edge
-            reach = b["cx"] - b["fx"] if p["basin_type"] == "vessel" else b["cx"] - b["lx"] / 2 - b["fx"] + 0.08
+            reach = (b["cx"] - b["fx"] if p["basin_type"] == "vessel"
+                     else b["cx"] - b["lx"] / 2 - b["fx"] + 0.08)
             out += faucet_parts(b["fx"], b["cy"], H, p["faucet_style"], fh, reach, detail)
         out.append(Part(top - solid_union(cuts) if detail and cuts else top, "countertop"))
         if g["bs"]:

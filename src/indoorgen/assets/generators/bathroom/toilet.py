@@ -118,7 +118,8 @@ class Toilet(PartsFactory):
         H, cd, cw, ch = g["H"], g["cd"], g["cw"], g["ch"]
         if g["style"] == "two_piece":
             body = box_between((0.0, -cw / 2, H - 0.01), (cd, cw / 2, H + ch))
-            lid = box_between((0.0, -cw / 2 - 0.008, H + ch - OVERLAP), (cd + 0.008, cw / 2 + 0.008, H + ch + 0.025))
+            lid = box_between((0.0, -cw / 2 - 0.008, H + ch - OVERLAP),
+                              (cd + 0.008, cw / 2 + 0.008, H + ch + 0.025))
             return [Part(body, "porcelain"), Part(lid, "porcelain")]
         lv = [(H - 0.12, rounded_rect(cd + 0.05 + 0.08, cw, 0.04, ((cd + 0.05 - 0.08) / 2, 0.0))),
               (H + ch, rounded_rect(cd + 0.08, 0.92 * cw, 0.04, ((cd - 0.08) / 2, 0.0)))]
@@ -185,7 +186,8 @@ class Toilet(PartsFactory):
                 out += self._cistern(p, g)
             for s in (-1, 1):  # hinge posts under the lid's back edge
                 out.append(Part(box_between((g["x_hl"] + 0.004, s * 0.7 * b - 0.015, H - OVERLAP),
-                                            (g["x_h"] - MOVING_GAP, s * 0.7 * b + 0.015, g["z_s"] + g["ts"] - 0.001)),
+                                            (g["x_h"] - MOVING_GAP, s * 0.7 * b + 0.015,
+                                             g["z_s"] + g["ts"] - 0.001)),
                                 "metal"))
             out.append(Part(self._seat(g), "plastic", "seat"))
             out.append(Part(self._lid(g), "plastic", "lid"))

@@ -100,8 +100,10 @@ def _glazing(x0, x1, y0, y1, z0, z1, slot, link) -> list[Part]:
     out = [Part(box_between((xm - GLASS / 2, y0 - 0.006, z0 - 0.006),
                             (xm + GLASS / 2, y1 + 0.006, z1 + 0.006)), "glass", link)]
     for xa, xb in ((x1 - b, x1), (x0, x0 + b)):
-        beads = [box_between((xa, y0 - MEMBER_OVERLAP, z0 - MEMBER_OVERLAP), (xb, y0 + b, z1 + MEMBER_OVERLAP)),
-                 box_between((xa, y1 - b, z0 - MEMBER_OVERLAP), (xb, y1 + MEMBER_OVERLAP, z1 + MEMBER_OVERLAP)),
+        beads = [box_between((xa, y0 - MEMBER_OVERLAP, z0 - MEMBER_OVERLAP),
+                             (xb, y0 + b, z1 + MEMBER_OVERLAP)),
+                 box_between((xa, y1 - b, z0 - MEMBER_OVERLAP),
+                             (xb, y1 + MEMBER_OVERLAP, z1 + MEMBER_OVERLAP)),
                  box_between((xa, y0, z0 - MEMBER_OVERLAP), (xb, y1, z0 + b)),
                  box_between((xa, y0, z1 - b), (xb, y1, z1 + MEMBER_OVERLAP))]
         out.append(Part(solid_union(beads), slot, link))
@@ -237,7 +239,8 @@ class InteriorDoor(PartsFactory):
 
     def _g(self, p: dict[str, Any]) -> dict[str, float]:
         W, H, jt, lt = p["width"], p["height"], p["jamb_thickness"], p["leaf_thickness"]
-        return {"ly0": -W / 2 + jt + LEAF_GAP, "ly1": W / 2 - jt - LEAF_GAP, "lz0": 0.01, "lz1": H - jt - LEAF_GAP,
+        return {"ly0": -W / 2 + jt + LEAF_GAP, "ly1": W / 2 - jt - LEAF_GAP,
+                "lz0": 0.01, "lz1": H - jt - LEAF_GAP,
                 "lx0": -lt / 2, "lx1": lt / 2,
                 "cy": W / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
@@ -257,8 +260,10 @@ class InteriorDoor(PartsFactory):
         pieces = [box_between((-T / 2, -W / 2, 0.0), (T / 2, -W / 2 + jt, H - jt + MEMBER_OVERLAP)),
                   box_between((-T / 2, W / 2 - jt, 0.0), (T / 2, W / 2, H - jt + MEMBER_OVERLAP)),
                   box_between((-T / 2, -W / 2, H - jt), (T / 2, W / 2, H)),
-                  box_between((sx0, -W / 2 + jt - MEMBER_OVERLAP, 0.0), (sx1, -W / 2 + jt + sp, H - jt + MEMBER_OVERLAP)),
-                  box_between((sx0, W / 2 - jt - sp, 0.0), (sx1, W / 2 - jt + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
+                  box_between((sx0, -W / 2 + jt - MEMBER_OVERLAP, 0.0),
+                              (sx1, -W / 2 + jt + sp, H - jt + MEMBER_OVERLAP)),
+                  box_between((sx0, W / 2 - jt - sp, 0.0),
+                              (sx1, W / 2 - jt + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
                   box_between((sx0, -W / 2 + jt, H - jt - sp), (sx1, W / 2 - jt, H - jt + MEMBER_OVERLAP))]
         pieces += _casings(g, T, ct, cw)
         return [Part(s, "frame") for s in pieces]
@@ -348,7 +353,8 @@ class SlidingDoor(PartsFactory):
             return [_frame_block(g, T, ct, cw),
                     Part(box_between((T / 2 - MEMBER_OVERLAP, g["ry0"], self._board_z0(p, g)),
                                      (g["rx"] + 0.012, g["ry1"], g["rz1"] + 0.025)), "metal"),
-                    Part(box_between((g["lx0"], g["ly0"], g["lz0"]), (front, g["ly1"], wheel_top)), "door", "leaf")]
+                    Part(box_between((g["lx0"], g["ly0"], g["lz0"]), (front, g["ly1"], wheel_top)), "door",
+                         "leaf")]
         return self._frame(p, g) + self._track(p, g) + self._leaf(p, g)
 
     def _frame(self, p, g) -> list[Part]:
@@ -371,12 +377,14 @@ class SlidingDoor(PartsFactory):
         T, rx = g["T"], g["rx"]
         rail = box_between((rx - 0.004, g["ry0"], g["rz0"]), (rx + 0.004, g["ry1"], g["rz1"]))
         bz0 = self._board_z0(p, g)
-        board = box_between((T / 2 - MEMBER_OVERLAP, g["ry0"], bz0), (T / 2 + g["ct"], g["ry1"], g["rz1"] + 0.02))
+        board = box_between((T / 2 - MEMBER_OVERLAP, g["ry0"], bz0),
+                            (T / 2 + g["ct"], g["ry1"], g["rz1"] + 0.02))
         n = max(2, int((g["ry1"] - g["ry0"]) / 0.4) + 1)
         zc = (g["rz0"] + g["rz1"]) / 2
         spacers = [rod((T / 2 + g["ct"] - MEMBER_OVERLAP, y, zc), (rx + 0.006, y, zc), 0.01, 12)
                    for y in np.linspace(g["ry0"] + 0.05, g["ry1"] - 0.05, n)]
-        stops = [box_between((rx - 0.012, y - 0.015, g["rz1"] - MEMBER_OVERLAP), (rx + 0.012, y + 0.015, g["rz1"] + 0.025))
+        stops = [box_between((rx - 0.012, y - 0.015, g["rz1"] - MEMBER_OVERLAP),
+                             (rx + 0.012, y + 0.015, g["rz1"] + 0.025))
                  for y in (g["ry0"] + 0.015, g["ry1"] - 0.015)]
         return [Part(board, "frame"), Part(solid_union([rail] + spacers + stops), "metal")]
 
@@ -385,7 +393,8 @@ class SlidingDoor(PartsFactory):
         style, n = p["leaf_style"], int(p["n_boards"])
         out: list[Part]
         if style == "glass_grid":
-            out = leaf(x0, x1, y0, y1, z0, z1, [Zone(z0 + 0.1, z1 - 0.1, "glass", 2 if y1 - y0 > 0.8 else 1, n)],
+            out = leaf(x0, x1, y0, y1, z0, z1,
+                       [Zone(z0 + 0.1, z1 - 0.1, "glass", 2 if y1 - y0 > 0.8 else 1, n)],
                        0.09, "leaf")
         else:
             body = slab(y0, y1, z0, z1, x0, x1, True, 0.002)
@@ -393,7 +402,8 @@ class SlidingDoor(PartsFactory):
                 grooves = []
                 for yb in np.linspace(y0, y1, n + 1)[1:-1]:
                     for xf in (x0, x1):
-                        grooves.append(box_between((xf - 0.003, yb - 0.002, z0 - 0.01), (xf + 0.003, yb + 0.002, z1 + 0.01)))
+                        grooves.append(box_between((xf - 0.003, yb - 0.002, z0 - 0.01),
+                                                   (xf + 0.003, yb + 0.002, z1 + 0.01)))
                 body = body - m3d.Manifold.batch_boolean(grooves, m3d.OpType.Add)
             out = [Part(body, "door", "leaf")]
             if style in ("x_brace", "z_brace"):
@@ -424,10 +434,12 @@ class SlidingDoor(PartsFactory):
         x1, wr, rx = g["lx1"], g["wr"], g["rx"]
         zw = g["rz1"] + LEAF_GAP + wr
         for y in (g["ly0"] + g["wheel_in"], g["ly1"] - g["wheel_in"]):
-            strap = box_between((x1 - MEMBER_OVERLAP, y - 0.02, g["lz1"] - 0.18), (x1 + 0.006, y + 0.02, zw + 0.02))
+            strap = box_between((x1 - MEMBER_OVERLAP, y - 0.02, g["lz1"] - 0.18),
+                                (x1 + 0.006, y + 0.02, zw + 0.02))
             axle = rod((rx - 0.01, y, zw), (x1 + 0.006, y, zw), 0.008, 12)
             wheel = rod((rx - 0.009, y, zw), (rx + 0.009, y, zw), wr, 24)
-            bolts = [rod((x1, y, z), (x1 + 0.012, y, z), 0.008, 8) for z in (g["lz1"] - 0.14, g["lz1"] - 0.06)]
+            bolts = [rod((x1, y, z), (x1 + 0.012, y, z), 0.008, 8)
+                     for z in (g["lz1"] - 0.14, g["lz1"] - 0.06)]
             out.append(Part(solid_union([strap, axle, wheel] + bolts), "metal", "leaf"))
         return out
 
@@ -527,8 +539,10 @@ class ExteriorDoor(PartsFactory):
         if nr:
             lites.append((d1 - MEMBER_OVERLAP, total / 2 - jt))
         return {"W": W, "H": H, "T": T, "jt": jt, "lt": lt, "th": th, "total": total,
-                "d0": d0, "d1": d1, "lites": lites, "posts": [d0, d1 - jt] + ([y_left] if nl else []) + ([total / 2 - jt] if nr else []),
-                "ly0": d0 + jt + LEAF_GAP, "ly1": d1 - jt - LEAF_GAP, "lz0": th + LEAF_GAP, "lz1": H - jt - LEAF_GAP,
+                "d0": d0, "d1": d1, "lites": lites,
+                "posts": [d0, d1 - jt] + ([y_left] if nl else []) + ([total / 2 - jt] if nr else []),
+                "ly0": d0 + jt + LEAF_GAP, "ly1": d1 - jt - LEAF_GAP,
+                "lz0": th + LEAF_GAP, "lz1": H - jt - LEAF_GAP,
                 "lx0": -lt / 2, "lx1": lt / 2,
                 "cy": total / 2 - jt + CASING_REVEAL, "cz": H - jt + CASING_REVEAL}
 
@@ -551,15 +565,18 @@ class ExteriorDoor(PartsFactory):
         for y in g["posts"]:
             pieces.append(box_between((-T / 2, y, 0.3 * th), (T / 2, y + jt, H - jt + MEMBER_OVERLAP)))
         d0, d1 = g["d0"] + jt, g["d1"] - jt
-        pieces += [box_between((sx0, d0 - MEMBER_OVERLAP, th - MEMBER_OVERLAP), (sx1, d0 + sp, H - jt + MEMBER_OVERLAP)),
-                   box_between((sx0, d1 - sp, th - MEMBER_OVERLAP), (sx1, d1 + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
+        pieces += [box_between((sx0, d0 - MEMBER_OVERLAP, th - MEMBER_OVERLAP),
+                               (sx1, d0 + sp, H - jt + MEMBER_OVERLAP)),
+                   box_between((sx0, d1 - sp, th - MEMBER_OVERLAP),
+                               (sx1, d1 + MEMBER_OVERLAP, H - jt + MEMBER_OVERLAP)),
                    box_between((sx0, d0, H - jt - sp), (sx1, d1, H - jt + MEMBER_OVERLAP))]
         pieces += _casings(g, T, ct, cw)
         out += [Part(s, "frame") for s in pieces]
         for ya, yb in g["lites"]:  # fixed side lites: glass over a raised panel
             zb = th - MEMBER_OVERLAP
             zt = H - jt + MEMBER_OVERLAP
-            zones = [Zone(zb + 0.12 + 0.35 + 0.08, zt - 0.1, "glass", 1, 1), Zone(zb + 0.12, zb + 0.12 + 0.35, "raised")]
+            zones = [Zone(zb + 0.12 + 0.35 + 0.08, zt - 0.1, "glass", 1, 1),
+                     Zone(zb + 0.12, zb + 0.12 + 0.35, "raised")]
             out += leaf(g["lx0"], g["lx1"], ya, yb, zb, zt, zones, min(0.07, 0.25 * (yb - ya)), "base",
                         slot="frame")
         return out
@@ -595,13 +612,15 @@ class ExteriorDoor(PartsFactory):
         if style == "craftsman":  # the dentil shelf under the lites, outside only (on the +X
             zt = hi - 0.45        # face it would hit the hinge jamb when the leaf is open)
             parts.append(Part(box_between((x0 - 0.025, y0 + stile - 0.02, zt + 0.02),
-                                          (x0 + MEMBER_OVERLAP, y1 - stile + 0.02, zt + 0.05)), "door", "leaf"))
+                                          (x0 + MEMBER_OVERLAP, y1 - stile + 0.02, zt + 0.05)),
+                              "door", "leaf"))
         left = p["hinge_side"] == "left"
         yh = y1 - BACKSET if left else y0 + BACKSET
         hw = [handle_pair(p["handle"], x1, yh, zl, -1.0 if left else 1.0),
               solid_union([rod((x1 - MEMBER_OVERLAP, yh, zl + 0.16), (x1 + 0.012, yh, zl + 0.16), 0.024, 16),
                            rod((x0 + MEMBER_OVERLAP, yh, zl + 0.16), (x0 - 0.012, yh, zl + 0.16), 0.024, 16),
-                           box_between((x1 + 0.011, yh - 0.004, zl + 0.145), (x1 + 0.025, yh + 0.004, zl + 0.175))])]
+                           box_between((x1 + 0.011, yh - 0.004, zl + 0.145),
+                                       (x1 + 0.025, yh + 0.004, zl + 0.175))])]
         if p["knocker"]:
             hw.append(self._knocker(x0, yh if style in ("half_lite", "full_lite") else (y0 + y1) / 2,
                                     min(1.5, z1 - 0.3) if style != "craftsman" else (hi - 0.45 - 0.12)))
@@ -614,7 +633,8 @@ class ExteriorDoor(PartsFactory):
         # the plate's back sinks past the depth of a panel's pocket, so it holds on anywhere
         plate = box_between((x0 - 0.01, y - 0.03, z - 0.06), (x0 + 0.009, y + 0.03, z + 0.05))
         pivot = box_between((x0 - 0.03, y - 0.008, z + 0.01), (x0 - 0.009, y + 0.008, z + 0.03))
-        ring_ = torus(0.04, 0.007, (0.0, 0.0, 0.0), 24, 8).rotate((0.0, 90.0, 0.0)).translate((x0 - 0.024, y, z - 0.02))
+        ring_ = torus(0.04, 0.007, (0.0, 0.0, 0.0), 24, 8).rotate((0.0, 90.0, 0.0)).translate(
+            (x0 - 0.024, y, z - 0.02))
         return solid_union([plate, pivot, ring_])
 
     def joints(self, p):

@@ -133,7 +133,8 @@ class Window(PartsFactory):
         g = self._g(p)
         if not detail:
             half_w = g["cy"] + p["casing_width"] + HORN
-            return [Part(box_between((-g["R"], -half_w, 0.0), (g["R"], half_w, g["cz"] + p["casing_width"])), "frame")]
+            return [Part(box_between((-g["R"], -half_w, 0.0), (g["R"], half_w, g["cz"] + p["casing_width"])),
+                         "frame")]
         out = self._surround(p, g)
         style = p["style"]
         if style == "sliding":
@@ -151,10 +152,13 @@ class Window(PartsFactory):
         x_stool = g["xf0"] if ext else -T / 2
         wood = [box_between((x_stool, -W / 2, 0.0), (T / 2, W / 2, STOOL)),
                 box_between((T / 2 - MEMBER_OVERLAP, -half_w, 0.0), (R, half_w, STOOL))]
-        lining = [box_between((-T / 2, -W / 2, STOOL - MEMBER_OVERLAP), (T / 2, -W / 2 + LINING, H - LINING + MEMBER_OVERLAP)),
-                  box_between((-T / 2, W / 2 - LINING, STOOL - MEMBER_OVERLAP), (T / 2, W / 2, H - LINING + MEMBER_OVERLAP)),
+        lining = [box_between((-T / 2, -W / 2, STOOL - MEMBER_OVERLAP),
+                              (T / 2, -W / 2 + LINING, H - LINING + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - LINING, STOOL - MEMBER_OVERLAP),
+                              (T / 2, W / 2, H - LINING + MEMBER_OVERLAP)),
                   box_between((-T / 2, -W / 2, H - LINING), (T / 2, W / 2, H))]
-        frame = [ring(-W / 2 + LINING - MEMBER_OVERLAP, W / 2 - LINING + MEMBER_OVERLAP, STOOL - MEMBER_OVERLAP, H - LINING + MEMBER_OVERLAP,
+        frame = [ring(-W / 2 + LINING - MEMBER_OVERLAP, W / 2 - LINING + MEMBER_OVERLAP,
+                      STOOL - MEMBER_OVERLAP, H - LINING + MEMBER_OVERLAP,
                       g["xf0"], g["xf1"], fw + MEMBER_OVERLAP)]
         mullions = [] if p["style"] == "sliding" else zip(g["cols"][:-1], g["cols"][1:], strict=True)
         for (_, a1), (b0, _) in mullions:
@@ -171,7 +175,8 @@ class Window(PartsFactory):
                 return STOOL * (0.55 + 0.45 * (x + R) / (x_in + R))
 
             for xa, xb, hw in ((-T / 2, x_in, W / 2), (-R, -T / 2 + MEMBER_OVERLAP, half_w)):
-                out.append(Part(prism([(xa, 0.0), (xb, 0.0), (xb, top(xb)), (xa, top(xa))], -hw, hw, "y"), "stone"))
+                out.append(Part(prism([(xa, 0.0), (xb, 0.0), (xb, top(xb)), (xa, top(xa))], -hw, hw, "y"),
+                                "stone"))
             z_ex = top(-T / 2 - g["ct_ex"]) - MEMBER_OVERLAP
         out += [Part(s, "frame") for s in casing(-T / 2, -1, -cy, cy, z_ex, cz, cw, g["ct_ex"], True)]
         return out
@@ -188,16 +193,18 @@ class Window(PartsFactory):
             if i in moving:
                 link = f"sash_{i}"
                 out += glazed_sash(xf0, xf0 + sd, *self._sash_box(p, g, i), sw, cols, rows, link)
-                out.append(Part(ring(c0 - MEMBER_OVERLAP, c1 + MEMBER_OVERLAP, Z0 - MEMBER_OVERLAP, Z1 + MEMBER_OVERLAP,
-                                     xf0 + sd + LEAF_GAP, xf1, STOP + MEMBER_OVERLAP), "frame"))
+                out.append(Part(ring(c0 - MEMBER_OVERLAP, c1 + MEMBER_OVERLAP, Z0 - MEMBER_OVERLAP,
+                                     Z1 + MEMBER_OVERLAP, xf0 + sd + LEAF_GAP, xf1, STOP + MEMBER_OVERLAP),
+                                "frame"))
                 out.append(Part(self._handle(p, g, i), "handle", link))
             elif p["style"] == "fixed":  # glazed into the frame between beads
                 xm = (xf0 + xf1) / 2  # (sunk 2 mm into the frame: no face flush with a mullion's)
                 out += glazed_sash(xm - 0.015, xm + 0.015, c0 - 2 * MEMBER_OVERLAP, c1 + 2 * MEMBER_OVERLAP,
-                                   Z0 - 2 * MEMBER_OVERLAP, Z1 + 2 * MEMBER_OVERLAP, 0.015 + 2 * MEMBER_OVERLAP, cols, rows, "base")
+                                   Z0 - 2 * MEMBER_OVERLAP, Z1 + 2 * MEMBER_OVERLAP,
+                                   0.015 + 2 * MEMBER_OVERLAP, cols, rows, "base")
             else:  # the fixed middle light of a three-column casement
-                out += glazed_sash(xf0, xf0 + sd, c0 - 2 * MEMBER_OVERLAP, c1 + 2 * MEMBER_OVERLAP, Z0 - 2 * MEMBER_OVERLAP,
-                                   Z1 + 2 * MEMBER_OVERLAP, sw, cols, rows, "base")
+                out += glazed_sash(xf0, xf0 + sd, c0 - 2 * MEMBER_OVERLAP, c1 + 2 * MEMBER_OVERLAP,
+                                   Z0 - 2 * MEMBER_OVERLAP, Z1 + 2 * MEMBER_OVERLAP, sw, cols, rows, "base")
         return out
 
     def _hinge(self, p, g, i: int) -> str:
@@ -238,7 +245,8 @@ class Window(PartsFactory):
             z = (z0 + z1) / 2
             arm = box_between((x1 + 0.025, y - 0.006, z - 0.09), (x1 + 0.037, y + 0.006, z + 0.008))
         return solid_union([rod((x1 - MEMBER_OVERLAP, y, z), (x1 + 0.01, y, z), 0.011, 12),
-                            box_between((x1 + 0.008, y - 0.006, z - 0.008), (x1 + 0.03, y + 0.006, z + 0.008)), arm])
+                            box_between((x1 + 0.008, y - 0.006, z - 0.008),
+                                        (x1 + 0.03, y + 0.006, z + 0.008)), arm])
 
     def _sliding_layout(self, p, g) -> list[tuple[float, float, str, float]]:
         """Sashes (y0, y1, track "A" fixed outside / "B" sliding inside, direction of opening)."""
@@ -267,12 +275,14 @@ class Window(PartsFactory):
         lips = [(xf0, xf0 + 0.008), (xa + sd2 + LEAF_GAP, xb - LEAF_GAP), (xb + sd2 + LEAF_GAP, xf1)]
         for l0, l1 in lips:
             for za, zb in ((Z0 - MEMBER_OVERLAP, Z0 + 0.012), (Z1 - 0.012, Z1 + MEMBER_OVERLAP)):
-                out.append(Part(box_between((l0, Y0 - MEMBER_OVERLAP, za), (l1, Y1 + MEMBER_OVERLAP, zb)), "frame"))
+                out.append(Part(box_between((l0, Y0 - MEMBER_OVERLAP, za), (l1, Y1 + MEMBER_OVERLAP, zb)),
+                                "frame"))
         rows = _grid(int(p["grid_rows"]), Z1 - Z0)
         for i, (y0, y1, track, direction) in enumerate(self._sliding_layout(p, g)):
             cols = _grid(int(p["grid_cols"]), y1 - y0)
             if track == "A":
-                out += glazed_sash(xa, xa + sd2, y0, y1, Z0 - MEMBER_OVERLAP, Z1 + MEMBER_OVERLAP, sw, cols, rows, "base")
+                out += glazed_sash(xa, xa + sd2, y0, y1, Z0 - MEMBER_OVERLAP, Z1 + MEMBER_OVERLAP, sw, cols,
+                                   rows, "base")
                 continue
             link = f"sash_{i}"
             out += glazed_sash(xb, xb + sd2, y0, y1, Z0 + LEAF_GAP, Z1 - LEAF_GAP, sw, cols, rows, link)
@@ -362,7 +372,8 @@ class BayWindow(PartsFactory):
             inset = D / math.tan(a)
         xo = -T / 2
         pts = [(xo, -W / 2), (xo - D, -W / 2 + inset), (xo - D, W / 2 - inset), (xo, W / 2)]
-        roof_h = 0.06 + (D + self.EAVE) * math.tan(math.radians(28.0)) if p["roof_style"] == "hipped" else 0.09
+        roof_h = (0.06 + (D + self.EAVE) * math.tan(math.radians(28.0)) if p["roof_style"] == "hipped"
+                  else 0.09)
         return {"W": W, "H": H, "T": T, "D": D, "pts": np.array(pts), "roof_h": roof_h,
                 "cy": W / 2 - LINING + CASING_REVEAL, "cz": H - self.BOARD + CASING_REVEAL}
 
@@ -385,15 +396,18 @@ class BayWindow(PartsFactory):
             top = H + g["roof_h"]
             pts = [(x, y, z) for x, y in outer for z in (0.0, top)]
             return [Part(hull(pts), "frame"),
-                    Part(box_between((-T / 2 - MEMBER_OVERLAP, -half_w, 0.0), (x_room, half_w, g["cz"] + cw)), "wood")]
-        board_outline = self._outside(g, 0.03).union(sg.box(-T / 2 - MEMBER_OVERLAP, -W / 2, T / 2, W / 2)).union(
-            sg.box(T / 2 - MEMBER_OVERLAP, -half_w, x_room, half_w))
+                    Part(box_between((-T / 2 - MEMBER_OVERLAP, -half_w, 0.0),
+                                     (x_room, half_w, g["cz"] + cw)), "wood")]
+        head_outline = self._outside(g, 0.03).union(sg.box(-T / 2 - MEMBER_OVERLAP, -W / 2, T / 2, W / 2))
+        board_outline = head_outline.union(sg.box(T / 2 - MEMBER_OVERLAP, -half_w, x_room, half_w))
         out = [Part(prism(_coords(board_outline), 0.0, self.BOARD), "wood"),
-               Part(prism(_coords(self._outside(g, 0.03).union(sg.box(-T / 2 - MEMBER_OVERLAP, -W / 2, T / 2, W / 2))),
-                          H - self.BOARD, H), "wood")]
-        lining = [box_between((-T / 2, -W / 2, self.BOARD - MEMBER_OVERLAP), (T / 2, -W / 2 + LINING, H - self.BOARD + MEMBER_OVERLAP)),
-                  box_between((-T / 2, W / 2 - LINING, self.BOARD - MEMBER_OVERLAP), (T / 2, W / 2, H - self.BOARD + MEMBER_OVERLAP))]
-        lining += casing(T / 2, 1, -g["cy"], g["cy"], self.BOARD - MEMBER_OVERLAP, g["cz"], cw, CASING_T, True)
+               Part(prism(_coords(head_outline), H - self.BOARD, H), "wood")]
+        lining = [box_between((-T / 2, -W / 2, self.BOARD - MEMBER_OVERLAP),
+                              (T / 2, -W / 2 + LINING, H - self.BOARD + MEMBER_OVERLAP)),
+                  box_between((-T / 2, W / 2 - LINING, self.BOARD - MEMBER_OVERLAP),
+                              (T / 2, W / 2, H - self.BOARD + MEMBER_OVERLAP))]
+        lining += casing(T / 2, 1, -g["cy"], g["cy"], self.BOARD - MEMBER_OVERLAP, g["cz"], cw, CASING_T,
+                         True)
         out += [Part(s, "frame") for s in lining]
         out += self._glazing(p, g)
         out += self._roof(p, g)
@@ -469,13 +483,16 @@ def _panel(s0: float, s1: float, zb: float, zt: float, fd: float, fw: float, lit
     out = [(ring(s0, s1, zb, zt, 0.0, fd, fw), "frame")]
     iy0, iy1, iz0, iz1 = s0 + fw, s1 - fw, zb + fw, zt - fw
     xm = fd / 2
-    out.append((box_between((xm - 0.003, iy0 - 0.006, iz0 - 0.006), (xm + 0.003, iy1 + 0.006, iz1 + 0.006)), "glass"))
+    out.append((box_between((xm - 0.003, iy0 - 0.006, iz0 - 0.006), (xm + 0.003, iy1 + 0.006, iz1 + 0.006)),
+                "glass"))
     bars = []  # a little thinner than the frame, so that no faces lie flush with its faces
     for i in range(1, lites):
         y = iy0 + (iy1 - iy0) * i / lites
-        bars.append(box_between((0.002, y - fw / 2, iz0 - MEMBER_OVERLAP), (fd - 0.002, y + fw / 2, iz1 + MEMBER_OVERLAP)))
+        bars.append(box_between((0.002, y - fw / 2, iz0 - MEMBER_OVERLAP),
+                                (fd - 0.002, y + fw / 2, iz1 + MEMBER_OVERLAP)))
     if transom:
         z = iz1 - 0.22 * (iz1 - iz0)
-        bars.append(box_between((0.004, iy0 - MEMBER_OVERLAP, z - fw / 3), (fd - 0.004, iy1 + MEMBER_OVERLAP, z + fw / 3)))
+        bars.append(box_between((0.004, iy0 - MEMBER_OVERLAP, z - fw / 3),
+                                (fd - 0.004, iy1 + MEMBER_OVERLAP, z + fw / 3)))
     out += [(b, "frame") for b in bars]
     return out
