@@ -30,14 +30,14 @@ def open_shell(lo: Sequence[float], hi: Sequence[float], wall: float, back: floa
                open_top: bool = False) -> m3d.Manifold:
     """A hollow box spanning `lo`..`hi` with walls `wall` thick (the back, at low X, `back`
     thick), open at its +X face, or at its top face when `open_top` (a basin, a tray)."""
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    c0, c1 = np.asarray(lo, float), np.asarray(hi, float)
     b = wall if back is None else back
     if open_top:
-        inner = box_between((lo[0] + wall, lo[1] + wall, lo[2] + b),
-                            (hi[0] - wall, hi[1] - wall, hi[2] + 0.01))
+        inner = box_between((c0[0] + wall, c0[1] + wall, c0[2] + b),
+                            (c1[0] - wall, c1[1] - wall, c1[2] + 0.01))
     else:
-        inner = box_between((lo[0] + b, lo[1] + wall, lo[2] + wall),
-                            (hi[0] + 0.01, hi[1] - wall, hi[2] - wall))
+        inner = box_between((c0[0] + b, c0[1] + wall, c0[2] + wall),
+                            (c1[0] + 0.01, c1[1] - wall, c1[2] - wall))
     return box_between(lo, hi) - inner
 
 
@@ -46,10 +46,10 @@ def pull_bar(x_face: float, a: Sequence[float], b: Sequence[float], standoff: fl
     """A round pull bar on a +X-facing face at `x_face` running from a=(y, z) to b=(y, z), its
     outer side `standoff` in front of the face, held by two posts 8% in from its ends that
     sink 1 mm into the face."""
-    a, b = np.asarray(a, float), np.asarray(b, float)
+    pa, pb = np.asarray(a, float), np.asarray(b, float)
     xb = x_face + standoff - radius
-    bar = rod((xb, a[0], a[1]), (xb, b[0], b[1]), radius, sections)
-    posts = [rod((x_face - 0.001, *(a + t * (b - a))), (xb, *(a + t * (b - a))), radius * 0.8, 8)
+    bar = rod((xb, pa[0], pa[1]), (xb, pb[0], pb[1]), radius, sections)
+    posts = [rod((x_face - 0.001, *(pa + t * (pb - pa))), (xb, *(pa + t * (pb - pa))), radius * 0.8, 8)
              for t in (0.08, 0.92)]
     return solid_union([bar] + posts)
 

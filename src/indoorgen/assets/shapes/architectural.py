@@ -95,11 +95,11 @@ def beam(p0: Sequence[float], p1: Sequence[float], width: float, height: float) 
     """A straight member from p0 to p1 (their centres) whose section in the vertical plane is
     `width` (horizontal, across the run) by `height` (vertical): a sheared box for sloping
     handrails and stringers, whose ends are vertical."""
-    p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
-    d = p1[:2] - p0[:2]
+    a, b = np.asarray(p0, float), np.asarray(p1, float)
+    d = b[:2] - a[:2]
     n = np.array([-d[1], d[0], 0.0]) / max(float(np.linalg.norm(d)), 1e-12)
     pts = [p + sn * n * width / 2 + sz * np.array([0.0, 0.0, height / 2])
-           for p in (p0, p1) for sn in (-1, 1) for sz in (-1, 1)]
+           for p in (a, b) for sn in (-1, 1) for sz in (-1, 1)]
     return hull(pts)
 
 

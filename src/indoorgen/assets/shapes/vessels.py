@@ -71,7 +71,7 @@ def revolve_vessel(outer: Sequence[tuple[float, float]], wall: float, floor_z: f
     along the outside to the rim, its last point (r_rim, z_rim) being the outer top edge of the
     wall. The cavity is the section offset inward by `wall`, opened above the rim and cut flat
     at `floor_z` (which must be at least `wall` above the underside)."""
-    pts = [tuple(map(float, q)) for q in outer]
+    pts = [(float(q[0]), float(q[1])) for q in outer]
     r_rim, z_rim = pts[-1]
     full = mirrored_section(pts + [(0.0, z_rim)])
     column = _rect(-r_rim, z_rim - 1e-4, r_rim, z_rim + 1.0)
@@ -89,7 +89,7 @@ def revolve_vessel(outer: Sequence[tuple[float, float]], wall: float, floor_z: f
 def solid_revolve(outer: Sequence[tuple[float, float]], sections: int = SECTIONS) -> m3d.Manifold:
     """A full solid of revolution from an outer profile running from the axis at the bottom to
     its last point, closed back to the axis at that point's height."""
-    pts = [tuple(map(float, q)) for q in outer]
+    pts = [(float(q[0]), float(q[1])) for q in outer]
     return lathe(pts + [(0.0, pts[-1][1])], sections)
 
 

@@ -34,7 +34,7 @@ from indoorgen.model.tags import Subpart
 
 #: per burner count: burners (u, v, size class) and their grate cells (u0, u1, v0, v1), in
 #: fractions of the burner area's half extents (u along X, v along Y)
-BURNER_LAYOUTS = {
+BURNER_LAYOUTS: dict[int, tuple[list[tuple[float, float, int]], list[tuple[float, float, float, float]]]] = {
     2: ([(-0.5, 0.0, 1), (0.5, 0.0, 0)], [(-1, 0, -1, 1), (0, 1, -1, 1)]),
     3: ([(-0.5, -0.5, 0), (0.5, -0.5, 1), (0.0, 0.5, 2)], [(-1, 0, -1, 0), (0, 1, -1, 0), (-1, 1, 0, 1)]),
     4: ([(-0.5, -0.5, 1), (0.5, -0.5, 0), (-0.5, 0.5, 0), (0.5, 0.5, 2)],

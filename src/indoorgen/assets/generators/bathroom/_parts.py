@@ -191,10 +191,10 @@ def prim_solid(q: Prim) -> m3d.Manifold:
     return half.transform(np.array([[0.0, 0.0, 1.0, cx], [-1.0, 0.0, 0.0, cy], [0.0, -1.0, 0.0, cz]]))
 
 
-def prim_bounds(prims: Sequence[Prim]) -> tuple[np.ndarray, np.ndarray]:
+def prim_bounds(prims: Sequence[Prim]) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(lo, hi) corners of the box around primitives (exact: from their vertices)."""
     pts = np.vstack([prim_points(q) for q in prims])
-    return pts.min(axis=0), pts.max(axis=0)
+    return tuple(pts.min(axis=0)), tuple(pts.max(axis=0))
 
 
 def faucet(x: float, y: float, z: float, style: str, height: float, reach: float) -> list[Prim]:

@@ -276,7 +276,7 @@ class ToiletRollHolder(_WallHardware):
                     out.append(Part(box_between((cx - re, cy, cz - re), (cx + re, cy + w, cz + re)), slot))
         if p["style"] == "cover":
             solid, (lo, hi) = self._cover(p)
-            out.append(Part(solid if detail else box_between(lo, hi), "metal"))
+            out.append(Part(solid if detail else box_between(tuple(lo), tuple(hi)), "metal"))
         return out
 
     def extra_surfaces(self, p):

@@ -149,11 +149,12 @@ def _vessel_section(shape: str, lx: float, ly: float, r: float, center=(0.0, 0.0
 
 
 def vessel_bounds(lx: float, ly: float, height: float, lip: bool,
-                  center: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
+                  center: tuple[float, float, float] = (0.0, 0.0, 0.0)
+                  ) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(lo, hi) corners of the box around a `vessel` (its rim, or lip, is its widest part)."""
     e = 0.012 if lip else 0.0
     c = np.asarray(center, float)
-    return c - (lx / 2 + e, ly / 2 + e, 0.0), c + (lx / 2 + e, ly / 2 + e, height)
+    return tuple(c - (lx / 2 + e, ly / 2 + e, 0.0)), tuple(c + (lx / 2 + e, ly / 2 + e, height))
 
 
 def vessel(shape: str, lx: float, ly: float, height: float, wall: float, flare: float,

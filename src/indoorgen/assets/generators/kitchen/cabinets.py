@@ -31,7 +31,7 @@ PATTERNS = {
 WIDTH_WAVE = (0.0, 1.0, -0.6, 0.5, -1.0)
 
 
-def _counter_params(height=(0.86, 0.93)) -> dict[str, Param]:
+def _counter_params(height: tuple[float, float] = (0.86, 0.93)) -> dict[str, Param]:
     return {
         "depth": Param(0.55, 0.62, doc="carcass X extent, front to wall (m)"),
         "height": Param(*height, doc="height of the countertop's upper face (m)"),

@@ -100,22 +100,24 @@ def bottle_parts(b: BottleSpec, detail: bool) -> list[Part]:
                      + ([b.lip_r + clo[0]] if clo else []))
         return [cheap_cylinder(r_body, 0.0, b.neck_z, b.body_slot),
                 cheap_cylinder(r_neck, b.neck_z - 1e-3, top, b.body_slot)]
-    vessel = None if clo else revolve_vessel(outer, b.wall, b.punt + b.wall + 0.002)
-    out = [Part(solid_revolve(outer) if clo else vessel.shell, b.body_slot)]
+    vessel = None
     if clo:
         dr, down, up, slot = clo
-        out.append(Part(cylinder(b.lip_r + dr, down + up, (0, 0, b.height - down), SECTIONS),
-                        slot))
+        out = [Part(solid_revolve(outer), b.body_slot),
+               Part(cylinder(b.lip_r + dr, down + up, (0, 0, b.height - down), SECTIONS), slot)]
+    else:
+        vessel = revolve_vessel(outer, b.wall, b.punt + b.wall + 0.002)
+        out = [Part(vessel.shell, b.body_slot)]
     if b.label:
-        out.append(Part(_label(b, outer, vessel), "paper"))
+        out.append(Part(_label(b, b.label, outer, vessel), "paper"))
     return out
 
 
-def _label(b: BottleSpec, outer: list[tuple[float, float]], vessel: Vessel | None
-           ) -> m3d.Manifold:
-    """A paper band around the body from label z0 to z1: a ring reaching 0.4 mm beyond the
+def _label(b: BottleSpec, band: tuple[float, float], outer: list[tuple[float, float]],
+           vessel: Vessel | None) -> m3d.Manifold:
+    """A paper band around the body from z0 to z1 (`band`): a ring reaching 0.4 mm beyond the
     widest body radius there and sunk into the narrowest, clear of the cavity of open bottles."""
-    z0, z1 = b.label
+    z0, z1 = band
     rs = [r for r, z in outer if z0 - 0.005 <= z <= z1 + 0.005] or [b.body_r]
     r_out, r_in = max(rs) + 0.0004, min(rs) - 0.0005
     ring = lathe([(r_in, z0), (r_out, z0), (r_out, z1), (r_in, z1)], SECTIONS)
