@@ -1,5 +1,6 @@
-"""Bathroom generators: what the generic contract cannot know about them (hollow bowls and
-tubs, surfaces at their declared heights, toilet seat and lid hinges, wall mounting)."""
+"""Bathroom generators (generators/bathroom/): what the generic contract cannot know about them
+(hollow bowls and tubs, surfaces at their declared heights, toilet seat and lid hinges, wall
+mounting)."""
 from __future__ import annotations
 
 import math
@@ -10,20 +11,14 @@ import shapely.geometry as sg
 
 from indoorgen.assets.base import get_factory
 from indoorgen.model.tags import Semantics, Subpart
-from support.assetcheck import build, distances, make, sample_polygon
+from support.assetcheck import build, make
+from support.generatorcheck import check_wall_back, on_mesh
 
 FIXTURES = ["bathroom_sink_pedestal", "vanity", "countertop_basin", "bathtub_alcove",
             "bathtub_freestanding", "bathtub_corner", "toilet", "shower_enclosure"]
 WALL = ["towel_bar", "towel_ring", "toilet_roll_holder", "robe_hook", "bathroom_mirror_cabinet"]
 SEEDS = range(6)
 TOL = 1e-3
-
-
-def on_mesh(asset, surface) -> float:
-    """Largest distance from points of a surface to the mesh."""
-    pts = surface.to_world(sample_polygon(surface.polygon))
-    assert len(pts) >= 3
-    return float(distances(asset.mesh, pts).max())
 
 
 def hollow_above(asset, surface, height: float = 0.04) -> bool:
@@ -47,11 +42,7 @@ def test_bathroom_tags(name):
 # ----------------------------------------------------------------------------- wall mounts
 @pytest.mark.parametrize("name,seed", [(n, s) for n in WALL for s in SEEDS])
 def test_wall_mounted_back_lies_on_mesh(name, seed):
-    _, _, _, a = build(name, seed)
-    back = a.surface("back")
-    assert back.subpart == Subpart.Back and np.allclose(back.normal, (-1, 0, 0))
-    assert np.allclose(back.corners()[:, 0], a.mesh.bounds[0][0], atol=TOL)
-    assert on_mesh(a, back) < TOL
+    check_wall_back(build(name, seed)[3])
 
 
 @pytest.mark.parametrize("seed", SEEDS)
