@@ -10,7 +10,7 @@ import trimesh
 
 from indoorgen.assets.base import get_factory
 from indoorgen.assets.materials.base import material_names
-from indoorgen.model.tags import Subpart
+from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import distances, sample_polygon
 
 TOL = 1e-3
@@ -86,6 +86,13 @@ def check_thin_walled(placeholder, asset) -> None:
     """Much less material than the solid of the same outline (the placeholder's hull): hollow."""
     base = asset.link_mesh("base")
     assert base.volume < 0.45 * placeholder.mesh.convex_hull.volume, base.volume
+
+
+def check_small_objects(names) -> None:
+    """The generators `names` make small objects: size class "small", tagged SmallObject."""
+    for name in names:
+        f = get_factory(name)
+        assert f.size_class == "small" and Semantics.SmallObject in f.tags, name
 
 
 def check_material_choices(names) -> None:

@@ -3,19 +3,17 @@ leans on the row. These checks came with the kitchenware tests; the generators a
 family's."""
 from __future__ import annotations
 
-from indoorgen.assets.base import factories_with, get_factory
+from indoorgen.assets.base import factories_with
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build, distances, sample_polygon
-from support.generatorcheck import check_material_choices
+from support.generatorcheck import check_material_choices, check_small_objects
 
 NAMES = ["book_stack", "leaning_books"]
 SEEDS = range(5)
 
 
 def test_catalogue_lists_every_kind():
-    for name in NAMES:
-        f = get_factory(name)
-        assert f.size_class == "small" and Semantics.SmallObject in f.tags, name
+    check_small_objects(NAMES)
     assert set(NAMES) <= set(factories_with([Semantics.Book]))
 
 

@@ -9,16 +9,14 @@ from indoorgen.assets.generators import food
 from indoorgen.assets.shapes import vessels
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make
-from support.generatorcheck import check_material_choices
+from support.generatorcheck import check_material_choices, check_small_objects
 
 NAMES = ["can", "food_box", "food_bag", "fruit_bowl"]
 SEEDS = range(5)
 
 
 def test_catalogue_lists_every_kind():
-    for name in NAMES:
-        f = get_factory(name)
-        assert f.size_class == "small" and Semantics.SmallObject in f.tags, name
+    check_small_objects(NAMES)
     assert "fruit_bowl" in factories_with([Semantics.FruitBowl, Semantics.Food])
 
 

@@ -5,12 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from indoorgen.assets.base import factories_with, get_factory
+from indoorgen.assets.base import factories_with
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build, make
 from support.generatorcheck import (
     check_material_choices,
     check_open_inner_floor,
+    check_small_objects,
     check_thin_walled,
     first_hit_down,
 )
@@ -21,9 +22,7 @@ SEEDS = range(5)
 
 
 def test_catalogue_lists_every_kind():
-    for name in NAMES:
-        f = get_factory(name)
-        assert f.size_class == "small" and Semantics.SmallObject in f.tags, name
+    check_small_objects(NAMES)
     assert {"wine_bottle", "beer_bottle", "soda_bottle"} <= set(factories_with([Semantics.Bottle]))
 
 

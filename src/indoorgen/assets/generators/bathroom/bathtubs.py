@@ -34,19 +34,25 @@ from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
 
+class _BuiltInTub(PartsFactory):
+    """What the built-in tubs (alcove, corner) declare alike: a large porcelain fixture with
+    metal fittings, standing on its whole bottom."""
+
+    tags = frozenset({S.Object, S.Furniture, S.BathroomFixture, S.Bathtub})
+    size_class = "large"
+    slots = ["porcelain", "metal"]
+    material_choices = {k: FIXTURE_MATERIALS[k] for k in ("porcelain", "metal")}
+    solid_bottom = True
+
+
 @register
-class BathtubAlcove(PartsFactory):
+class BathtubAlcove(_BuiltInTub):
     """A built-in rectangular bathtub for a three-wall alcove: a block with a flat rim and a
     tiled-in back, its front an apron (flat, with a recessed toe kick, or panelled); the
     hollow tapers to a flat floor with a sloped backrest at one end and the drain and overflow
     at the other. Rim: support surface; floor of the hollow: interior surface."""
 
     name = "bathtub_alcove"
-    tags = frozenset({S.Object, S.Furniture, S.BathroomFixture, S.Bathtub})
-    size_class = "large"
-    slots = ["porcelain", "metal"]
-    material_choices = {k: FIXTURE_MATERIALS[k] for k in ("porcelain", "metal")}
-    solid_bottom = True
     params = {
         "length": Param(1.4, 1.8, doc="Y extent, along the back wall (m)"),
         "width": Param(0.7, 0.85, doc="X extent, wall to apron (m)"),
@@ -291,18 +297,13 @@ def _halfplane_cut(cs: m3d.CrossSection, k: float) -> m3d.CrossSection:
 
 
 @register
-class BathtubCorner(PartsFactory):
+class BathtubCorner(_BuiltInTub):
     """A corner bathtub for the corner between the back (-X) and left (+Y) walls: a block whose
     open front is a quarter circle or a diagonal (pentagonal plan), optionally on a recessed
     plinth; the hollow follows the front, leaving a triangular deck in the wall corner,
     optionally with a deck-mounted tap. Rim: support surface; floor: interior surface."""
 
     name = "bathtub_corner"
-    tags = frozenset({S.Object, S.Furniture, S.BathroomFixture, S.Bathtub})
-    size_class = "large"
-    slots = ["porcelain", "metal"]
-    material_choices = {k: FIXTURE_MATERIALS[k] for k in ("porcelain", "metal")}
-    solid_bottom = True
     params = {
         "shape": Param(kind="choice", choices=("quarter_round", "pentagon"), doc="plan of the front"),
         "length": Param(1.2, 1.6, doc="Y extent along the back wall (m)"),
