@@ -1,9 +1,10 @@
 """Doors: a hinged interior door set, a barn-style sliding door and a front door.
 
-Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, the opening's
-width along Y, its bottom at z=0; hinged leaves sit in the middle of the wall (so that their
-handles reach equally far out of both faces and the bounding box stays symmetric about the wall)
-in front of a stop on their -X side, and swing into +X about the +X edge on their hinge side.
+Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, the
+opening's width along Y, its bottom at z=0; hinged leaves sit in the middle of the wall (so that
+their handles reach equally far out of both faces and the bounding box stays symmetric about the
+wall) in front of a stop on their -X side, and swing into +X about the +X edge on their hinge
+side.
 """
 from __future__ import annotations
 

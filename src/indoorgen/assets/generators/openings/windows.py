@@ -1,8 +1,8 @@
 """Windows: casement, sliding, awning and fixed windows, and a bay window.
 
-Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, +X the room,
--X the outside; the window's width runs along Y and its rough opening's bottom is at z=0 (the
-caller lifts it to the sill height). The window frame sits near the outside face; lining boards
+Frame conventions (see shapes/architectural.py): the wall is the YZ plane centred on x=0, +X the
+room, -X the outside; the window's width runs along Y and its rough opening's bottom is at z=0
+(the caller lifts it to the sill height). The window frame sits near the outside face; lining boards
 wrap the rest of the wall thickness, an interior sill board (stool) and architraves finish the
 room side. Hinged sashes open outward (-X), about their outer edge.
 """

@@ -1,4 +1,4 @@
-"""Dishes: lathed plates and hollow bowls (the bowl's shape is `shapes.vessels`')."""
+"""Dishes: lathed plates and hollow bowls (bowls of `shapes.vessels`, shared with the fruit bowl)."""
 from __future__ import annotations
 
 from indoorgen.assets.base import Param, register
