@@ -1,7 +1,7 @@
 """Doors, windows, stairs and railings of a home from the asset catalogue.
 
 The catalogue's architecture generators (interior_door, exterior_door, window, staircase,
-stair_railing) share one frame (see `assets.generators.architecture`): the wall is the YZ plane
+stair_railing) share one frame (see `assets.shapes.architectural`): the wall is the YZ plane
 centred on x=0, +X the side a door swings into or the room side of a window, the opening's
 width along Y, its bottom at z=0; a straight staircase climbs toward +X, centred on the origin;
 a railing runs along Y. Each fixture here samples the generator's free parameters from its own
@@ -80,7 +80,7 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
     if got is None:
         return None
     f, params, asset = got
-    from indoorgen.assets.generators.architecture import opening_size
+    from indoorgen.assets.shapes.architectural import opening_size
     c = np.asarray(center, float)
     return _fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
                     opening_size(params))
@@ -94,7 +94,7 @@ def window(seed: int, name: str, center, inward: np.ndarray, width: float, heigh
     if got is None:
         return None
     f, params, asset = got
-    from indoorgen.assets.generators.architecture import opening_size
+    from indoorgen.assets.shapes.architectural import opening_size
     c = np.asarray(center, float)
     return _fixture("window", params, asset, inward,
                     np.array([c[0], c[1], elevation + sill]), opening_size(params))

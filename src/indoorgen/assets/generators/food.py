@@ -1,7 +1,7 @@
 """Food: drink cans and food tins, cereal/cracker boxes, chip bags and pouches, and fruit bowls.
 
 Packaged food is closed, so each is a solid (no hidden voids). A fruit bowl is a hollow bowl
-(`tableware_more.bowl_vessel`) with fruits dropped into it one by one: each fruit is a cluster
+(`shapes.vessels.bowl_vessel`) with fruits dropped into it one by one: each fruit is a cluster
 of spheres (an orange is one, an apple is one with dimples, a banana is a bent chain of them),
 lowered until it touches the bowl's inner surface or a fruit already placed, then sunk 1.5 mm
 so that everything unions into one shell.
@@ -9,14 +9,19 @@ so that everything unions into one shell.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators.tableware_more import (
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.mesh import solid_union
+from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, rod
+from indoorgen.assets.shapes.surfaces import support_rect
+from indoorgen.assets.shapes.vessels import (
     SECTIONS,
     bowl_base_radius,
     bowl_params,
@@ -25,14 +30,11 @@ from indoorgen.assets.generators.tableware_more import (
     round_bottom,
     solid_revolve,
 )
-from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, rod
-from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
 
-#: how far touching pieces sink into each other so that their union is one shell (m)
-SINK = 0.0015
+#: how far a fruit sinks into what it rests on (the bowl, another fruit), so that they are
+#: one shell (m)
+FRUIT_SINK = 0.0015
 
 
 # ------------------------------------------------------------------------------------- cans
@@ -95,6 +97,7 @@ class Can(PartsFactory):
         return solid_union([plate - hole, rivet])
 
     def parts(self, p, detail):
+        """The can's solids: detailed, or the blocks of its placeholder."""
         R, H = self._radius(p), p["height"]
         lab = self._label(p)
         r_max = R + (0.001 if p["kind"] == "food" else 0.0)
@@ -110,6 +113,7 @@ class Can(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The can's surfaces besides its bounding box's: bottom."""
         R = self._radius(p)
         if p["kind"] == "drink":
             return [round_bottom("bottom", 0.8 * R)]
@@ -171,6 +175,7 @@ class FoodBox(PartsFactory):
         return cut, pane
 
     def parts(self, p, detail):
+        """The food box's solids: detailed, or the blocks of its placeholder."""
         H, W, D, r = p["height"], p["width"], p["depth"], p["edge_radius"]
         if not detail:
             top = H + (self.FLAP if p["feature"] == "flap" else 0.002 if p["feature"] == "spout"
@@ -185,6 +190,7 @@ class FoodBox(PartsFactory):
         return [Part(self._rot(p, q.solid), q.slot) for q in out]
 
     def extra_surfaces(self, p):
+        """The food box's surfaces besides its bounding box's: top."""
         H, W, D, r = p["height"], p["width"], p["depth"], p["edge_radius"]
         m, f = r + 0.001, p["feature"]
         if p["lying"]:  # the front (+X) faces up at z = D; the old top points to -X
@@ -317,6 +323,7 @@ class FoodBag(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The food bag's solids: detailed, or the blocks of its placeholder."""
         slot = self._slot(p)
         X, Y, Z = self._extent(p)
         if not detail:
@@ -363,7 +370,7 @@ def _apple(r: float, rng: np.random.Generator) -> _Fruit:
     phi = np.linspace(0.0, math.pi, 11)
     rho = r * np.sin(phi) * (1 + 0.04 * np.sin(phi - 0.3))
     z = -r * np.cos(phi) - dimple * np.clip((phi - 0.8 * math.pi) / (0.2 * math.pi), 0, 1) ** 2
-    prof = list(zip(rho.tolist(), z.tolist()))
+    prof = list(zip(rho.tolist(), z.tolist(), strict=True))
     prof[0], prof[-1] = (0.0, -r), (0.0, r - dimple)
     tilt = rng.uniform(-0.25, 0.25, 2) * r
     k = math.cos(math.pi / 16) * math.cos(math.pi / 20)
@@ -466,6 +473,15 @@ def _drop(spheres: np.ndarray, xy: np.ndarray, surf: np.ndarray, placed: np.ndar
     return (need - spheres[None, :, 2]).max(axis=1)
 
 
+def _lowest(spheres: np.ndarray, xy: np.ndarray, surf: np.ndarray, placed: np.ndarray
+            ) -> tuple[np.ndarray, float]:
+    """The position among `xy` (m, 2) where a fruit's contact spheres come to rest lowest
+    (`_drop`), and the height of its origin there."""
+    z = _drop(spheres, xy, surf, placed)
+    i = int(np.argmin(z))
+    return xy[i], z[i]
+
+
 def _inner_surface(p: dict[str, Any]) -> tuple[np.ndarray, float]:
     """(r, z) points at most 4 mm apart along a bowl's inner surface, and the opening's
     radius."""
@@ -502,6 +518,7 @@ class FruitBowl(PartsFactory):
               "layout": Param(0, 999, kind="int", doc="which fruits go where (a variant number)")}
 
     def bottom_is_solid(self, params):
+        """Whether the bowl rests on a flat base, not on a foot ring."""
         return not self.resolve(params)["foot_ring"]
 
     def _fruits(self, p) -> list[tuple[_Fruit, np.ndarray]]:
@@ -524,21 +541,20 @@ class FruitBowl(PartsFactory):
             if room <= 0:
                 continue
             rho, th = room * np.sqrt(rng.random(8)), rng.uniform(0, 2 * math.pi, 8)
-            xy = np.stack([rho * np.cos(th), rho * np.sin(th)], axis=1)
-            for rolled in (False, True):
-                if rolled:
-                    xy = best[None, :] + ring
-                    r = np.linalg.norm(xy, axis=1, keepdims=True)
-                    xy = np.vstack([best, xy * np.minimum(1.0, room / np.maximum(r, 1e-9))])
-                z = _drop(fruit.contact, xy, surf, placed)
-                i = int(np.argmin(z))
-                best, z_best = xy[i], z[i]
-            off = np.array([best[0], best[1], z_best - SINK])
+            dropped = np.stack([rho * np.cos(th), rho * np.sin(th)], axis=1)
+            landed, _ = _lowest(fruit.contact, dropped, surf, placed)
+            # then it rolls to the lowest spot on the rings around where it landed (or stays)
+            around = landed[None, :] + ring
+            r = np.linalg.norm(around, axis=1, keepdims=True)
+            around = around * np.minimum(1.0, room / np.maximum(r, 1e-9))
+            best, z_best = _lowest(fruit.contact, np.vstack([landed, around]), surf, placed)
+            off = np.array([best[0], best[1], z_best - FRUIT_SINK])
             placed = np.vstack([placed, fruit.contact + np.append(off, 0.0)])
             out.append((fruit, off))
         return out
 
     def parts(self, p, detail):
+        """The fruit bowl's solids: detailed, or the blocks of its placeholder."""
         fruits = self._fruits(p)
         if not detail:
             top = max([p["height"]] + [o[2] + f.top for f, o in fruits])
@@ -547,5 +563,5 @@ class FruitBowl(PartsFactory):
             Part(s, "food") for f, o in fruits for s in f.solids(o)]
 
     def extra_surfaces(self, p):
-        # no interior surface: the fruit fill the bowl's floor, nothing else goes in
+        """The fruit bowl's surfaces besides its bounding box's: bottom (no interior: fruit fill it)."""
         return [round_bottom("bottom", bowl_base_radius(p))]

@@ -18,8 +18,9 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators.architecture import (
-    OVERLAP,
+from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.shapes.architectural import (
+    MEMBER_OVERLAP,
     baluster,
     baluster_positions,
     handrail,
@@ -27,7 +28,6 @@ from indoorgen.assets.generators.architecture import (
     post,
     prism,
 )
-from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, rod
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
@@ -79,13 +79,16 @@ class Flight:
     end_floor: bool
 
     def rotation(self) -> np.ndarray:
+        """The flight's turn about Z (its quarter), as a 3x3 matrix."""
         c, s = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter % 4]
         return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]], float)
 
     def place(self, solid: m3d.Manifold) -> m3d.Manifold:
+        """A solid built in the flight's own frame, turned and moved to where the flight is."""
         return solid.rotate((0.0, 0.0, 90.0 * self.quarter)).translate((self.ox, self.oy, 0.0))
 
     def point(self, x: float, y: float, z: float = 0.0) -> np.ndarray:
+        """A point of the flight's own frame in the staircase's frame."""
         return self.rotation() @ np.array([x, y, z]) + np.array([self.ox, self.oy, 0.0])
 
 
@@ -178,16 +181,17 @@ class Staircase(PartsFactory):
             band = [(x_s, P(x_s) - b), (x_e, P(x_e) - b), (x_e, P(x_e) + 0.06), (x_s, P(x_s) + 0.06)]
             return _clip_z(band, z_cut, z_top)
         b2 = r + tt + nos * r / go + 0.12
-        top = [(0.0, z0 + r - tt + OVERLAP)] if fl.start_floor else \
-            [(-0.06, z0 - 0.01), (0.0, z0 - 0.01), (0.0, z0 + r - tt + OVERLAP)]
+        top = [(0.0, z0 + r - tt + MEMBER_OVERLAP)] if fl.start_floor else \
+            [(-0.06, z0 - 0.01), (0.0, z0 - 0.01), (0.0, z0 + r - tt + MEMBER_OVERLAP)]
         for i in range(n - 1):
-            top.append(((i + 1) * go, z0 + (i + 1) * r - tt + OVERLAP))
+            top.append(((i + 1) * go, z0 + (i + 1) * r - tt + MEMBER_OVERLAP))
             if i < n - 2:
-                top.append(((i + 1) * go, z0 + (i + 2) * r - tt + OVERLAP))
-        z_end = z0 + n * r - tt + (0.0 if fl.end_floor else OVERLAP)
+                top.append(((i + 1) * go, z0 + (i + 2) * r - tt + MEMBER_OVERLAP))
+        z_end = z0 + n * r - tt + (0.0 if fl.end_floor else MEMBER_OVERLAP)
         top += [((n - 1) * go, z_end), (x_e, z_end)]
         outline = sg.Polygon(top + [(x_e, z_cut - 10), (top[0][0], z_cut - 10)])
-        below = sg.Polygon([(x_s - 1, P(x_s - 1) - b2), (x_e + 1, P(x_e + 1) - b2), (x_e + 1, 1e3), (x_s - 1, 1e3)])
+        below = sg.Polygon([(x_s - 1, P(x_s - 1) - b2), (x_e + 1, P(x_e + 1) - b2), (x_e + 1, 1e3),
+                            (x_s - 1, 1e3)])
         cut = outline.intersection(below).intersection(sg.box(-10, z_cut, 100, 1e3))
         return np.asarray(cut.exterior.coords)[:-1]
 
@@ -208,10 +212,10 @@ class Staircase(PartsFactory):
             out.append(Part(box_between((i * go - nos, -ty, z - tt), (x1, ty, z)), "wood"))
         if p["closed_risers"]:
             for j in range(n):
-                zb = z0 if j == 0 else z0 + j * r - OVERLAP
-                zt = z0 + (j + 1) * r - tt + OVERLAP
+                zb = z0 if j == 0 else z0 + j * r - MEMBER_OVERLAP
+                zt = z0 + (j + 1) * r - tt + MEMBER_OVERLAP
                 if j == n - 1:
-                    zt = z0 + n * r if fl.end_floor else z0 + n * r - tt + OVERLAP
+                    zt = z0 + n * r if fl.end_floor else z0 + n * r - tt + MEMBER_OVERLAP
                 out.append(Part(box_between((j * go, -ty, zb), (j * go + RISER_T, ty, zt)), "frame"))
         prof = self._stringer_profile(g, fl, closed)
         ys = [(w / 2 - sw, w / 2), (-w / 2, -w / 2 + sw)] if closed else \
@@ -238,7 +242,7 @@ class Staircase(PartsFactory):
                Part(handrail((xb, y, P(xb) + hh), (xt, y, P(xt) + hh), rail_style(style)), "wood")]
         a0, a1 = xb + POST / 2, xt - POST / 2
         if style == "glass":
-            a0, a1 = a0 - OVERLAP, a1 + OVERLAP  # into the newels, not flush with them
+            a0, a1 = a0 - MEMBER_OVERLAP, a1 + MEMBER_OVERLAP  # into the newels, not flush with them
             if g["closed"]:
                 xk = min(max((z_top - 0.06 - z0 - r) * go / r - nos, a0), a1)
                 bottom = [(a0, P(a0) + 0.045), (xk, P(xk) + 0.045), (a1, min(P(a1) + 0.045, z_top - 0.015))]
@@ -258,7 +262,8 @@ class Staircase(PartsFactory):
                 for k in (0.25, 0.75):
                     xs.append(i * go - nos + k * (go + nos))
                     bases.append(z0 + (i + 1) * r - 0.005)
-        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot) for x, zb in zip(xs, bases)]
+        out += [Part(baluster(x, y, zb, P(x) + hh - 0.02, style), slot)
+                for x, zb in zip(xs, bases, strict=True)]
         return out
 
     # ---------------------------------------------------------------- landings
@@ -267,15 +272,15 @@ class Staircase(PartsFactory):
         x0, x1, y0, y1, z = lg["x0"], lg["x1"], lg["y0"], lg["y1"], lg["z"]
         tt, hh = g["tt"], g["hh"]
         out = [Part(box_between((x0, y0, z - tt), (x1, y1, z)), "wood")]
-        beams = [box_between((x0, y0, z - BEAM), (x1, y0 + 0.05, z - tt + OVERLAP)),
-                 box_between((x0, y1 - 0.05, z - BEAM), (x1, y1, z - tt + OVERLAP)),
-                 box_between((x0, y0, z - BEAM), (x0 + 0.05, y1, z - tt + OVERLAP)),
-                 box_between((x1 - 0.05, y0, z - BEAM), (x1, y1, z - tt + OVERLAP))]
+        beams = [box_between((x0, y0, z - BEAM), (x1, y0 + 0.05, z - tt + MEMBER_OVERLAP)),
+                 box_between((x0, y1 - 0.05, z - BEAM), (x1, y1, z - tt + MEMBER_OVERLAP)),
+                 box_between((x0, y0, z - BEAM), (x0 + 0.05, y1, z - tt + MEMBER_OVERLAP)),
+                 box_between((x1 - 0.05, y0, z - BEAM), (x1, y1, z - tt + MEMBER_OVERLAP))]
         out += [Part(b, "frame") for b in beams]
         runs = self._landing_runs(g, lg)
         tall = {tuple(np.round(c, 6)) for run in runs for c in run}
         for c in self._landing_corners(lg):
-            top = z + hh + 0.08 if tuple(np.round(c, 6)) in tall else z - tt + OVERLAP
+            top = z + hh + 0.08 if tuple(np.round(c, 6)) in tall else z - tt + MEMBER_OVERLAP
             out.append(Part(post(c[0], c[1], 0.0, top, POST, 0.0, top > z), "frame"))
         style = p["baluster_style"]
         for a, b in runs:
@@ -297,7 +302,8 @@ class Staircase(PartsFactory):
         if g["inner_railed"] and f2.quarter == 2:
             side = g["s"]
             y = self._rail_y(g, side)
-            runs.append((f1.point((f1.n - 1) * g["go"] + POST / 2, y)[:2], f2.point(-g["nos"] - POST / 2, y)[:2]))
+            runs.append((f1.point((f1.n - 1) * g["go"] + POST / 2, y)[:2],
+                         f2.point(-g["nos"] - POST / 2, y)[:2]))
         if not g["outer_railed"]:
             return runs
         c = self._landing_corners(lg)
@@ -318,10 +324,11 @@ class Staircase(PartsFactory):
         p0, p1 = np.r_[a, z + hh], np.r_[b, z + hh]
         out = [Part(handrail(p0, p1, rail_style(style)), "wood")]
         if style == "glass":
-            q0, q1 = a + u * (POST / 2 - OVERLAP), b - u * (POST / 2 - OVERLAP)
+            q0, q1 = a + u * (POST / 2 - MEMBER_OVERLAP), b - u * (POST / 2 - MEMBER_OVERLAP)
             pts = [(x, y, zz) for x, y in (q0, q1) for zz in (z - 0.01, z + hh - 0.03)]
             n = np.array([-u[1], u[0]]) * 0.006
-            out.append(Part(hull([(x + sx * n[0], y + sx * n[1], zz) for x, y, zz in pts for sx in (-1, 1)]), "glass"))
+            out.append(Part(hull([(x + sx * n[0], y + sx * n[1], zz) for x, y, zz in pts for sx in (-1, 1)]),
+                            "glass"))
             return out
         ts = baluster_positions(L, SPACING, POST / 2 + 0.05)
         slot = "wood" if style == "spindle" else "metal"
@@ -365,8 +372,9 @@ class Staircase(PartsFactory):
         if p["closed_risers"]:
             for j in range(n - 1):
                 a = self._spiral_angle(g, q, j)
-                out.append(Part(prism(self._riser_footprint(a, s, q["R"] - 0.02), j * r - (OVERLAP if j else 0.0),
-                                      (j + 1) * r - tt + OVERLAP), "frame"))
+                out.append(Part(prism(self._riser_footprint(a, s, q["R"] - 0.02),
+                                      j * r - (MEMBER_OVERLAP if j else 0.0),
+                                      (j + 1) * r - tt + MEMBER_OVERLAP), "frame"))
         out += self._spiral_rail(p, g, q)
         return out
 
@@ -406,9 +414,10 @@ class Staircase(PartsFactory):
         (a_start, _, _), (a_end, _, _) = self._spiral_posts(g, q)
         k = max(2, int(math.ceil(abs(a_end - a_start) / math.radians(12.0))))
         angles = np.linspace(a_start, a_end, k + 1)
-        pts = [np.array([ry * math.cos(a), ry * math.sin(a), self._spiral_rail_height(g, q, a)]) for a in angles]
+        pts = [np.array([ry * math.cos(a), ry * math.sin(a),
+                         self._spiral_rail_height(g, q, a)]) for a in angles]
         segs = []
-        for p0, p1 in zip(pts[:-1], pts[1:]):
+        for p0, p1 in zip(pts[:-1], pts[1:], strict=True):
             d = (p1 - p0) / np.linalg.norm(p1 - p0) * 0.012
             segs.append(rod(p0 - d - (0, 0, 0.0225), p1 + d - (0, 0, 0.0225), 0.0225, 12))
         out = [Part(seg, "wood") for seg in segs]
@@ -438,6 +447,7 @@ class Staircase(PartsFactory):
 
     # ------------------------------------------------------------------- parts
     def parts(self, p, detail):
+        """The staircase's solids: detailed, or the blocks of its placeholder."""
         g = self._g(p)
         if p["style"] == "spiral":
             return self._spiral(p, g) if detail else self._spiral_cheap(p, g)
@@ -491,7 +501,8 @@ class Staircase(PartsFactory):
         e = POST / 2 + 0.011
         for a, b in self._landing_runs(g, lg):
             lo, hi = np.minimum(a, b) - e, np.maximum(a, b) + e
-            out.append(Part(box_between((lo[0], lo[1], lg["z"] - g["tt"]), (hi[0], hi[1], lg["z"] + g["hh"] + 0.08)), "frame"))
+            out.append(Part(box_between((lo[0], lo[1], lg["z"] - g["tt"]),
+                                        (hi[0], hi[1], lg["z"] + g["hh"] + 0.08)), "frame"))
         return out
 
     def _spiral_cheap(self, p, g) -> list[Part]:
@@ -522,6 +533,7 @@ class Staircase(PartsFactory):
 
     # ---------------------------------------------------------------- surfaces
     def extra_surfaces(self, p):
+        """The staircase's surfaces besides its bounding box's: landing_<j>, tread_<k>."""
         g = self._g(p)
         if p["style"] == "spiral":
             return self._spiral_surfaces(p, g)
@@ -541,9 +553,11 @@ class Staircase(PartsFactory):
                 out.append(Surface(f"tread_{k}", Subpart.SupportSurface, rot @ c + t, up, u, rect))
                 k += 1
         for j, lg in enumerate(g["landings"]):
-            x0 = lg["x0"] + (0.13 if len(g["flights"]) == 2 and g["flights"][1].quarter != 2 else g["nos"] + POST + 0.03)
+            turn = len(g["flights"]) == 2 and g["flights"][1].quarter != 2
+            x0 = lg["x0"] + (0.13 if turn else g["nos"] + POST + 0.03)
             x1, y0, y1 = lg["x1"] - 0.13, lg["y0"] + 0.13, lg["y1"] - 0.13
-            out.append(support_rect(f"landing_{j}", ((x0 + x1) / 2, (y0 + y1) / 2, lg["z"]), (x1 - x0) / 2, (y1 - y0) / 2))
+            out.append(support_rect(f"landing_{j}", ((x0 + x1) / 2, (y0 + y1) / 2, lg["z"]), (x1 - x0) / 2,
+                                    (y1 - y0) / 2))
         return out
 
     def _spiral_surfaces(self, p, g) -> list[Surface]:
@@ -624,6 +638,7 @@ class StairRailing(PartsFactory):
         return np.linspace(-half, half, k + 1)
 
     def parts(self, p, detail):
+        """The stair railing's solids: detailed, or the blocks of its placeholder."""
         L, H, ps = p["length"], p["height"], p["post_size"]
         top = H + 0.06
         e = ps / 2 + 0.01
@@ -635,16 +650,18 @@ class StairRailing(PartsFactory):
         infill, slot = [], {"spindle": "wood", "glass": "glass"}.get(p["infill"], "metal")
         z0 = 0.04 if p["shoe_rail"] else 0.0
         if p["shoe_rail"]:
-            out.append(Part(box_between((-0.03, ys[0], 0.0), (0.03, ys[-1], 0.04 + OVERLAP)), "frame"))
-        for ya, yb in zip(ys[:-1], ys[1:]):
-            a, b = ya + ps / 2 - OVERLAP, yb - ps / 2 + OVERLAP
+            out.append(Part(box_between((-0.03, ys[0], 0.0), (0.03, ys[-1], 0.04 + MEMBER_OVERLAP)), "frame"))
+        for ya, yb in zip(ys[:-1], ys[1:], strict=True):
+            a, b = ya + ps / 2 - MEMBER_OVERLAP, yb - ps / 2 + MEMBER_OVERLAP
             if p["infill"] == "glass":
-                infill.append(box_between((-0.006, a, z0 - OVERLAP if z0 else 0.06), (0.006, b, H - 0.03)))
+                infill.append(box_between((-0.006, a, z0 - MEMBER_OVERLAP if z0 else 0.06),
+                                          (0.006, b, H - 0.03)))
             elif p["infill"] == "bars":
                 zs = np.arange(max(z0, 0.08) + 0.02, H - 0.06, p["baluster_spacing"])
                 infill += [rod((0.0, a, z), (0.0, b, z), 0.01, 8) for z in zs]
             else:
-                infill += [baluster(0.0, ya + t, z0 - OVERLAP if z0 else 0.0, H - 0.02, p["infill"], 90.0)
+                infill += [baluster(0.0, ya + t, z0 - MEMBER_OVERLAP if z0 else 0.0, H - 0.02, p["infill"],
+                                    90.0)
                            for t in baluster_positions(yb - ya, p["baluster_spacing"], ps / 2 + 0.04)]
         out += [Part(q, slot) for q in infill]
         return out

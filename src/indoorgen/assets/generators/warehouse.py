@@ -9,11 +9,10 @@ import shapely.geometry as sg
 
 from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 
-OVERLAP = 0.002
 MAX_RACK_HEIGHT = 6.0  # levels are dropped beyond this (m)
 
 
@@ -128,6 +127,7 @@ class PalletRack(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The pallet rack's solids: detailed, or the blocks of its placeholder."""
         out = []
         for y in self._frames_y(p):
             out += self._frame(p, y, detail)
@@ -137,6 +137,7 @@ class PalletRack(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The pallet rack's surfaces besides its bounding box's: level_<i>_bay_<j>."""
         D = p["depth"]
         out = []
         for i, z in enumerate(self._levels(p)):
@@ -207,7 +208,8 @@ class WoodenPallet(PartsFactory):
                                             (x + bx / 2 - 0.002, y + by / 2 - 0.002, t + hb + o)), "wood"))
         z = t + hb
         for y in ys:  # cross boards along X
-            out.append(Part(self._board((-Wd / 2, y - by / 2, z), (Wd / 2, y + by / 2, z + t), detail), "wood"))
+            out.append(Part(self._board((-Wd / 2, y - by / 2, z), (Wd / 2, y + by / 2, z + t), detail),
+                            "wood"))
         return out
 
     def _stringer_parts(self, p, detail: bool) -> list[Part]:
@@ -228,6 +230,7 @@ class WoodenPallet(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The wooden pallet's solids: detailed, or the blocks of its placeholder."""
         L, Wd, t = p["length"], p["width"], p["deck_thickness"]
         H = self._height(p)
         if not detail:
@@ -238,6 +241,7 @@ class WoodenPallet(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The wooden pallet's surfaces besides its bounding box's: top."""
         L, Wd = p["length"], p["width"]
         H = self._height(p)
         m, eps, c = 0.01, 0.0005, self.CHAMFER
@@ -245,7 +249,7 @@ class WoodenPallet(PartsFactory):
                  (-Wd / 2 + m, L / 2 - m)]
         boards = self._top_boards(p)
         holes = []
-        for (_, b), (a, _) in zip(boards, boards[1:]):
+        for (_, b), (a, _) in zip(boards[:-1], boards[1:], strict=True):
             g0, g1 = b - c, a + c  # the gap, widened by the boards' chamfers
             holes.append([(g0, -L / 2 + m + eps), (g1, -L / 2 + m + eps), (g1, L / 2 - m - eps),
                           (g0, L / 2 - m - eps)])

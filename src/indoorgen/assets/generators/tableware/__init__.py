@@ -1,0 +1,1 @@
+"""Tableware: dishes (plates, bowls), drinkware (cups, mugs, glasses) and bottles."""
