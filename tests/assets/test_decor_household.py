@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from indoorgen.assets.base import get_factory
+from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, sample_polygon
 

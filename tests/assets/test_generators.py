@@ -1,4 +1,4 @@
-"""Every registered generator x 10 seeds against the asset contracts (see assets/base.py)."""
+"""Every registered generator x 10 seeds against the asset contracts (see assets/protocol.py)."""
 from __future__ import annotations
 
 import math
@@ -9,7 +9,8 @@ import pytest
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.base import Param, factory_names, get_factory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import factory_names, get_factory
 from indoorgen.assets.shapes.mesh import union
 from indoorgen.errors import ParameterError
 from indoorgen.model.tags import Semantics, Subpart

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from indoorgen.assets.base import get_factory
+from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 from support.assetcheck import build, distances, sample_polygon

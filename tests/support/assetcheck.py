@@ -7,7 +7,7 @@ import numpy as np
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.base import get_factory
+from indoorgen.assets.registry import get_factory
 
 
 @lru_cache(maxsize=None)

@@ -27,8 +27,8 @@ from typing import Any, Iterable
 import numpy as np
 import trimesh
 
-from indoorgen.assets.base import Asset
 from indoorgen.assets.materials import choose_materials
+from indoorgen.assets.protocol import Asset
 from indoorgen.model.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)

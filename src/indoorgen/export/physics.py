@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from indoorgen.assets.base import Asset
+from indoorgen.assets.protocol import Asset
 from indoorgen.export.bundle import MatRef
 from indoorgen.export.meshes import face_slot_names
 

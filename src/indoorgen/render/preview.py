@@ -19,7 +19,8 @@ import numpy as np  # noqa: E402
 import trimesh  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from indoorgen.assets.base import Asset, get_factory  # noqa: E402
+from indoorgen.assets.protocol import Asset  # noqa: E402
+from indoorgen.assets.registry import get_factory  # noqa: E402
 
 log = logging.getLogger(__name__)
 

@@ -13,9 +13,10 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.seating_more import rod_between
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between

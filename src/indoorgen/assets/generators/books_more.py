@@ -16,9 +16,10 @@ import numpy as np
 import shapely.affinity as sa
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.books import Book
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

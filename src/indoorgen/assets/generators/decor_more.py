@@ -14,8 +14,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
 from indoorgen.assets.shapes.primitives import (

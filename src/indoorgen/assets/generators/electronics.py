@@ -1,8 +1,9 @@
 """Electronics: a flat-screen TV on a stand foot (it rests on a TV stand's top). Screen faces +X."""
 from __future__ import annotations
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
 from indoorgen.model.tags import Semantics as S
 

@@ -14,9 +14,10 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Joint, Param, register
 from indoorgen.assets.generators.plants import loft
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Joint, Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
 from indoorgen.assets.shapes.primitives import (
     Part,

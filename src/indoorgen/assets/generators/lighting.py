@@ -6,8 +6,9 @@ import math
 import numpy as np
 from manifold3d import Manifold
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

@@ -16,8 +16,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DoorJoint
 from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon

@@ -6,8 +6,9 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import support_rect

@@ -14,8 +14,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Joint, Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Joint, Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame, legs
 from indoorgen.assets.shapes.primitives import (
     Part,

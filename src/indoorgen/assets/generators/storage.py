@@ -4,8 +4,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between

@@ -17,8 +17,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Joint, Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Joint, Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame, legs
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, drawer, hinged_door
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod

@@ -9,8 +9,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import (
     Part,

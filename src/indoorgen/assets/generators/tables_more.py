@@ -15,10 +15,11 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.generators.seating_more import rounded_rect_polygon, rounded_slab
 from indoorgen.assets.generators.tables import rect_table_parts
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe

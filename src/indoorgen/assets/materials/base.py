@@ -18,7 +18,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from indoorgen.assets.base import Param
+from indoorgen.assets.protocol import Param
 from indoorgen.errors import ParameterError, UnknownGeneratorError
 
 log = logging.getLogger(__name__)

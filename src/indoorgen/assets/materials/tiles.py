@@ -11,10 +11,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, solid
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 

@@ -105,7 +105,7 @@ def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: fl
 @dataclass(frozen=True)
 class DoorJoint:
     """How a moving part built here moves (kind, axis, origin, link); the generator adds the
-    joint's name and range when it turns this into an `assets.base.Joint`."""
+    joint's name and range when it turns this into an `assets.protocol.Joint`."""
 
     kind: str
     axis: np.ndarray

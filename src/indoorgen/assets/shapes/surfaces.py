@@ -6,7 +6,7 @@ import math
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.model.tags import Subpart
 
 

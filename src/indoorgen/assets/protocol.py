@@ -1,6 +1,6 @@
 """The asset protocol: `Param`, `Surface`, `Joint`, `Asset` and `AssetFactory`.
 
-A generator is an `AssetFactory` subclass registered by name. It documents every parameter as a
+A generator is an `AssetFactory` subclass registered by name (see `assets.registry`). It documents every parameter as a
 `Param` (so sampling, validation and `assets list` come for free), and builds two meshes from the
 same params: a cheap `placeholder` for the solver's collision checks and a detailed `create` for
 export. Both carry the same named `Surface`s.
@@ -11,14 +11,14 @@ box, front facing +X.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, ClassVar, Iterable
+from typing import Any, ClassVar
 
 import numpy as np
 import shapely
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.errors import ParameterError, UnknownGeneratorError
+from indoorgen.errors import ParameterError
 from indoorgen.model.tags import Semantics, Subpart
 
 
@@ -33,6 +33,7 @@ class Param:
     doc: str = ""
 
     def sample(self, rng: np.random.Generator) -> Any:
+        """Draw one value of this param from `rng` (uniform over the range or the choices)."""
         if self.kind == "float":
             return float(rng.uniform(self.low, self.high))
         if self.kind == "int":
@@ -65,6 +66,7 @@ class Param:
         return v
 
     def describe(self) -> str:
+        """The valid values in words, for error messages and `assets list`."""
         if self.kind in ("float", "int"):
             return f"{self.kind} in [{self.low}, {self.high}]"
         if self.kind == "bool":
@@ -86,6 +88,7 @@ class Surface:
 
     @property
     def v(self) -> np.ndarray:
+        """The polygon's second axis, normal x u (computed once and cached)."""
         v = self.__dict__.get("_v")
         if v is None:
             n, u = self.normal, self.u
@@ -95,7 +98,7 @@ class Surface:
         return v
 
     @staticmethod
-    def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> "Surface":
+    def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> Surface:
         """A rectangle centred on `center`, extending +-half_u along u and +-half_v along v."""
         return Surface(name, subpart, np.asarray(center, float), _unit(normal), _unit(u),
                        shapely.box(-half_u, -half_v, half_u, half_v))
@@ -109,7 +112,8 @@ class Surface:
         """The polygon's exterior vertices in 3D (asset frame)."""
         return self.to_world(np.asarray(self.polygon.exterior.coords)[:-1])
 
-    def transformed(self, rotation: np.ndarray, translation: np.ndarray) -> "Surface":
+    def transformed(self, rotation: np.ndarray, translation: np.ndarray) -> Surface:
+        """This surface rotated, then translated (the polygon itself is unchanged)."""
         return Surface(self.name, self.subpart, rotation @ self.origin + translation,
                        rotation @ self.normal, rotation @ self.u, self.polygon)
 
@@ -140,7 +144,8 @@ class Joint:
         rot = trimesh.transformations.rotation_matrix(value, axis, np.asarray(self.origin, float))
         return rot
 
-    def translated(self, offset: np.ndarray) -> "Joint":
+    def translated(self, offset: np.ndarray) -> Joint:
+        """This joint with its origin moved by `offset` (when an asset is recentred)."""
         return Joint(self.name, self.kind, np.asarray(self.axis, float),
                      np.asarray(self.origin, float) + offset, self.lower, self.upper,
                      self.child, self.parent)
@@ -168,16 +173,19 @@ class Asset:
     collision: list[tuple[str, trimesh.Trimesh]] = field(default_factory=list)
 
     def surface(self, name: str) -> Surface:
+        """The surface called `name`, or KeyError listing the surfaces there are."""
         for s in self.surfaces:
             if s.name == name:
                 return s
         raise KeyError(f"no surface named {name!r}; have {[s.name for s in self.surfaces]}")
 
     def surfaces_of(self, subpart: Subpart) -> list[Surface]:
+        """Every surface with the role `subpart`."""
         return [s for s in self.surfaces if s.subpart == subpart]
 
     @property
     def extents(self) -> np.ndarray:
+        """The mesh's bounding-box size (x, y, z)."""
         return self.mesh.bounds[1] - self.mesh.bounds[0]
 
     def link_faces(self, link: str) -> np.ndarray:
@@ -188,7 +196,9 @@ class Asset:
 
     def link_mesh(self, link: str) -> trimesh.Trimesh:
         """The closed shell of one link, in the asset frame at the closed pose."""
-        return self.mesh.submesh([self.link_faces(link)], append=True, repair=False)
+        shell = self.mesh.submesh([self.link_faces(link)], append=True, repair=False)
+        assert isinstance(shell, trimesh.Trimesh)  # append=True joins the pieces into one mesh
+        return shell
 
     def posed(self, values: dict[str, float]) -> trimesh.Trimesh:
         """The whole mesh with joints set to `values` (joint name -> value; missing: 0).
@@ -264,46 +274,9 @@ class AssetFactory:
         return out
 
     def placeholder(self, params: dict[str, Any]) -> Asset:
+        """The cheap asset the solver collides: every part containing the detailed one."""
         raise NotImplementedError
 
     def create(self, params: dict[str, Any]) -> Asset:
+        """The detailed asset for export: watertight shells, UVs, joints, collision pieces."""
         raise NotImplementedError
-
-
-_REGISTRY: dict[str, type[AssetFactory]] = {}
-
-
-def register(cls: type[AssetFactory]) -> type[AssetFactory]:
-    """Class decorator: make a generator available by its `name`."""
-    if not cls.name:
-        raise ValueError(f"{cls.__name__} has no name")
-    if cls.name in _REGISTRY and _REGISTRY[cls.name] is not cls:
-        raise ValueError(f"duplicate generator name {cls.name!r}")
-    _REGISTRY[cls.name] = cls
-    return cls
-
-
-def _ensure_loaded() -> None:
-    from indoorgen.assets import generators  # noqa: F401  (importing registers every generator)
-
-
-def get_factory(name: str) -> AssetFactory:
-    """The generator registered as `name`, or UnknownGeneratorError listing the valid names."""
-    _ensure_loaded()
-    try:
-        return _REGISTRY[name]()
-    except KeyError:
-        raise UnknownGeneratorError(
-            f"unknown generator {name!r}; valid: {', '.join(sorted(_REGISTRY))}") from None
-
-
-def factory_names() -> list[str]:
-    _ensure_loaded()
-    return sorted(_REGISTRY)
-
-
-def factories_with(tags: Iterable[Semantics], without: Iterable[Semantics] = ()) -> list[str]:
-    """Names of generators whose tags include all of `tags` and none of `without`."""
-    _ensure_loaded()
-    need, avoid = set(tags), set(without)
-    return sorted(n for n, c in _REGISTRY.items() if need <= c.tags and not (avoid & c.tags))
