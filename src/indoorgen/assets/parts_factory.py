@@ -51,6 +51,7 @@ class PartsFactory(AssetFactory):
 
     # ---- to implement
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """The pieces for resolved params `p`: cheap (placeholder) ones, or detailed ones."""
         raise NotImplementedError
 
     def joints(self, p: dict[str, Any]) -> list[Joint]:

@@ -1,9 +1,9 @@
 """The asset protocol: `Param`, `Surface`, `Joint`, `Asset` and `AssetFactory`.
 
-A generator is an `AssetFactory` subclass registered by name (see `assets.registry`). It documents every parameter as a
-`Param` (so sampling, validation and `assets list` come for free), and builds two meshes from the
-same params: a cheap `placeholder` for the solver's collision checks and a detailed `create` for
-export. Both carry the same named `Surface`s.
+A generator is an `AssetFactory` subclass registered by name (see `assets.registry`). It
+documents every parameter as a `Param` (so sampling, validation and `assets list` come for free),
+and builds two meshes from the same params: a cheap `placeholder` for the solver's collision
+checks and a detailed `create` for export. Both carry the same named `Surface`s.
 
 Local frame (DESIGN.md): metres, Z up, origin at the centre of the bottom face of the bounding
 box, front facing +X.

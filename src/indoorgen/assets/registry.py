@@ -5,7 +5,7 @@ Generators register themselves when their module is imported; the readers import
 """
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 from indoorgen.assets.protocol import AssetFactory
 from indoorgen.errors import UnknownGeneratorError

@@ -8,12 +8,10 @@ import shapely.geometry as sg
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.primitives import Part, box, box_between
+from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, box, box_between
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-OVERLAP = 0.001
 
 
 @register
@@ -49,12 +47,12 @@ class Book(PartsFactory):
         for s in (-1, 1):
             out.append(Part(box_between((-D / 2, min(s * T / 2, s * (T / 2 - ct)), 0.0),
                                         (xs, max(s * T / 2, s * (T / 2 - ct)), H)), "cover"))
-        out.append(Part(box_between((xs - ct, -T / 2 + OVERLAP, 0.0), (xs, T / 2 - OVERLAP, H)), "cover"))
+        out.append(Part(box_between((xs - ct, -T / 2 + SMALL_OVERLAP, 0.0), (xs, T / 2 - SMALL_OVERLAP, H)), "cover"))
         if a > 0:
             cyl = m3d.Manifold.cylinder(H, 1.0, -1.0, 32).scale((a, T / 2, 1.0)).translate((xs, 0.0, 0.0))
             out.append(Part(cyl, "cover"))
-        out.append(Part(box_between((-D / 2 + pi, -T / 2 + ct - OVERLAP, 0.0),
-                                    (xs - ct + OVERLAP, T / 2 - ct + OVERLAP, H - pi)), "pages"))
+        out.append(Part(box_between((-D / 2 + pi, -T / 2 + ct - SMALL_OVERLAP, 0.0),
+                                    (xs - ct + SMALL_OVERLAP, T / 2 - ct + SMALL_OVERLAP, H - pi)), "pages"))
         return out
 
     def extra_surfaces(self, p):

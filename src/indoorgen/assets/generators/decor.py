@@ -11,12 +11,10 @@ from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame
-from indoorgen.assets.shapes.primitives import Part, box, box_between, circle_polygon, lathe
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box, box_between, circle_polygon, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-OVERLAP = 0.002
 
 
 @register

@@ -19,7 +19,9 @@ from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.outlines import ccw, largest_polygon
 from indoorgen.assets.shapes.primitives import (
+    SMALL_OVERLAP,
     Part,
     bevel_box,
     box,
@@ -34,21 +36,12 @@ from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002
-O1 = 0.001  # 1 mm overlap between touching pieces
-
-
 # ------------------------------------------------------------------------------ helpers
-def _ccw(pts: np.ndarray) -> np.ndarray:
-    pts = np.asarray(pts, float)
-    x, y = pts[:, 0], pts[:, 1]
-    area = 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-    return pts if area > 0 else pts[::-1]
 
 
 def _cs(pts: np.ndarray) -> m3d.CrossSection:
     """A cross-section from one simple polygon (any orientation)."""
-    return m3d.CrossSection([_ccw(pts)], m3d.FillRule.Positive)
+    return m3d.CrossSection([ccw(pts)], m3d.FillRule.Positive)
 
 
 def _circle_pts(r: float, n: int, center=(0.0, 0.0), circumscribed: bool = False) -> np.ndarray:
@@ -91,12 +84,6 @@ def _back_surface(poly_yz: sg.Polygon, x: float) -> Surface:
                    np.array([0.0, 1.0, 0.0]), sg.Polygon(np.c_[pts[:, 0], -pts[:, 1]]))
 
 
-def _cs_polygon(cs: m3d.CrossSection) -> sg.Polygon:
-    """The largest polygon of a cross-section, as shapely."""
-    polys = [sg.Polygon(np.asarray(p, float)) for p in cs.to_polygons()]
-    return max(polys, key=lambda q: q.area)
-
-
 def _outline(shape: str, width: float, height: float, n: int = 64,
              circumscribed: bool = False) -> m3d.CrossSection:
     """A wall-plane outline standing on z=0: "rect", "round" (diameter = width) or "arched"
@@ -109,10 +96,6 @@ def _outline(shape: str, width: float, height: float, n: int = 64,
         top = _cs(_circle_pts(r, n, (0.0, max(height - r, 0.01)), circumscribed))
         return body + top
     return m3d.CrossSection.square((width, height), False).translate((-width / 2, 0.0))
-
-
-def _outline_height(shape: str, width: float, height: float) -> float:
-    return width if shape == "round" else height
 
 
 def _bbox_box(parts: list[Part], slot: str) -> Part:
@@ -138,10 +121,10 @@ def _clock_face(x_dial: float, y: float, z: float, r: float, hours: float, marke
     lay = min(0.002, max(space - 0.001, 0.0015) / 2)
     hour_a = (hours % 12.0) / 12.0 * 2 * math.pi
     minute_a = (hours % 1.0) * 2 * math.pi
-    hands = [_hand(hour_a, 0.5 * r, 0.12 * r, hand_width * 1.3, x_dial - O1, x_dial + lay, y, z),
-             _hand(minute_a, 0.78 * r, 0.15 * r, hand_width, x_dial + lay - O1, x_dial + 2 * lay,
+    hands = [_hand(hour_a, 0.5 * r, 0.12 * r, hand_width * 1.3, x_dial - SMALL_OVERLAP, x_dial + lay, y, z),
+             _hand(minute_a, 0.78 * r, 0.15 * r, hand_width, x_dial + lay - SMALL_OVERLAP, x_dial + 2 * lay,
                    y, z)]
-    cap = _x_disc(max(hand_width * 1.2, 0.004), x_dial - O1, x_dial + 2 * lay + 0.001, y, z, 16)
+    cap = _x_disc(max(hand_width * 1.2, 0.004), x_dial - SMALL_OVERLAP, x_dial + 2 * lay + 0.001, y, z, 16)
     out += [Part(h, "metal") for h in hands + [cap]]
     if markers == "none":
         return out
@@ -151,12 +134,12 @@ def _clock_face(x_dial: float, y: float, z: float, r: float, hours: float, marke
         rm = 0.84 * r
         cy, cz = y + rm * math.sin(a), z + rm * math.cos(a)
         if markers == "dots":
-            marks.append(_x_disc(0.025 * r * (1.5 if k % 3 == 0 else 1.0), x_dial - O1,
+            marks.append(_x_disc(0.025 * r * (1.5 if k % 3 == 0 else 1.0), x_dial - SMALL_OVERLAP,
                                  x_dial + 0.0012, cy, cz, 12))
         else:
             ln = 0.12 * r if k % 3 == 0 else 0.07 * r
             w = 0.022 * r if k % 3 == 0 else 0.012 * r
-            tick = box_between((x_dial - O1, -w / 2, -ln / 2), (x_dial + 0.0012, w / 2, ln / 2))
+            tick = box_between((x_dial - SMALL_OVERLAP, -w / 2, -ln / 2), (x_dial + 0.0012, w / 2, ln / 2))
             marks.append(tick.rotate((-math.degrees(a), 0.0, 0.0)).translate((0.0, cy, cz)))
     out += [Part(m, "metal") for m in marks]
     return out
@@ -278,7 +261,7 @@ class CanvasArt(PartsFactory):
         xb = -D / 2 + D * (1.0 - p["groove_depth"])
         for (_, a1, za0, za1), (b0, _, zb0, zb1) in zip(panels, panels[1:]):
             z0, z1 = max(za0, zb0) + r, min(za1, zb1) - r
-            out.append(Part(box_between((-D / 2, a1 - O1 - r, z0), (xb, b0 + O1 + r, z1)), "wood"))
+            out.append(Part(box_between((-D / 2, a1 - SMALL_OVERLAP - r, z0), (xb, b0 + SMALL_OVERLAP + r, z1)), "wood"))
         return out
 
     def extra_surfaces(self, p):
@@ -308,16 +291,16 @@ def _framed_mirror(p: dict[str, Any], detail: bool, shape: str, W: float, H: flo
     out = [Part(_yz_extrude(cs, -D / 2, -D / 2 + bk), "back")]
     steps = {"flat": [(0.0, 0.0, 1.0)], "stepped": [(0.0, 0.0, 0.55), (0.25, 0.15, 1.0)],
              "rounded": [(0.0, 0.0, 0.6), (0.08, 0.08, 0.8), (0.25, 0.25, 0.93), (0.42, 0.42, 1.0)]}
-    x0 = -D / 2 + bk - O1
+    x0 = -D / 2 + bk - SMALL_OVERLAP
     for out_in, in_in, xf in steps[p["frame_profile"]]:
         # each step a ring inset from the outer edge by out_in*fw and the inner edge by in_in*fw
         outer = cs.offset(-out_in * fw, m3d.JoinType.Round, 2.0, 64) if out_in else cs
         hole = cs.offset(-fw * (1 - in_in), m3d.JoinType.Round, 2.0, 64)
         out.append(Part(_yz_extrude(outer - hole, x0, -D / 2 + xf * D), "frame"))
-        x0 = -D / 2 + xf * D - O1
+        x0 = -D / 2 + xf * D - SMALL_OVERLAP
     glass = cs.offset(-fw + 0.004, m3d.JoinType.Round, 2.0, 64)
     xg = D / 2 - max(p["glass_recess"], D * 0.2)
-    out.append(Part(_yz_extrude(glass, -D / 2 + bk - O1, xg), "mirror"))
+    out.append(Part(_yz_extrude(glass, -D / 2 + bk - SMALL_OVERLAP, xg), "mirror"))
     return out
 
 
@@ -359,7 +342,7 @@ class Mirror(PartsFactory):
     def extra_surfaces(self, p):
         W, H = self._dims(p)
         cs = _outline(p["shape"], W, H).offset(-0.001, m3d.JoinType.Miter, 2.0)
-        return [_back_surface(_cs_polygon(cs), -p["frame_depth"] / 2)]
+        return [_back_surface(largest_polygon(cs), -p["frame_depth"] / 2)]
 
 
 def _bar(p0, p1, width: float, thick: float) -> m3d.Manifold:
@@ -482,7 +465,7 @@ class Aquarium(PartsFactory):
         """(lid bottom, lid top) heights."""
         L, Dt, z0 = self._dims(p)
         zt = z0 + p["tank_height"]
-        return zt - O1, zt - O1 + (0.06 if p["lid_style"] == "hood" else 0.006)
+        return zt - SMALL_OVERLAP, zt - SMALL_OVERLAP + (0.06 if p["lid_style"] == "hood" else 0.006)
 
     def _stand(self, p, detail) -> list[Part]:
         L, Dt, z0 = self._dims(p)
@@ -490,7 +473,7 @@ class Aquarium(PartsFactory):
         zb = 0.06
         out = carcass(Ds, Ws, zb, z0, t, back=t)
         out.append(Part(box_between((-Ds / 2, -Ws / 2 + 0.01, 0.0), (Ds / 2 - 0.01, Ws / 2 - 0.01,
-                                                                     zb + O1)), "wood"))
+                                                                     zb + SMALL_OVERLAP)), "wood"))
         if detail:
             out += [q for parts, _ in self._fronts(p) for q in parts]
         else:
@@ -521,7 +504,7 @@ class Aquarium(PartsFactory):
             out.append(Part(box_between((-Dt / 2 - tr, -L / 2 - tr, z0), (Dt / 2 + tr, L / 2 + tr, lt)),
                             "glass"))
             return out
-        zo = z0 - (O1 if p["style"] == "on_stand" else 0.0)  # 1 mm into the stand's top
+        zo = z0 - (SMALL_OVERLAP if p["style"] == "on_stand" else 0.0)  # 1 mm into the stand's top
         outer = box_between((-Dt / 2, -L / 2, zo), (Dt / 2, L / 2, zt))
         cavity = box_between((-Dt / 2 + g, -L / 2 + g, z0 + g), (Dt / 2 - g, L / 2 - g, zt + 0.01))
         out.append(Part(outer - cavity, "glass"))
@@ -529,16 +512,16 @@ class Aquarium(PartsFactory):
         # walls, 1 mm above the gravel and 1 mm clear of the back wall: both stay visible through
         # the glass and the gap round the gravel opens to the air (no sealed void)
         zg = z0 + g + p["gravel_depth"]
-        out.append(Part(box_between((-Dt / 2 + g + O1, -L / 2 + g + O1, z0 + g - O1),
-                                    (Dt / 2 - g - O1, L / 2 - g - O1, zg)), "stone"))
+        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g + SMALL_OVERLAP, z0 + g - SMALL_OVERLAP),
+                                    (Dt / 2 - g - SMALL_OVERLAP, L / 2 - g - SMALL_OVERLAP, zg)), "stone"))
         zw = z0 + H * p["water_level"]
-        out.append(Part(box_between((-Dt / 2 + g + O1, -L / 2 + g - O1, zg + O1),
-                                    (Dt / 2 - g + O1, L / 2 - g + O1, zw)), "water"))
+        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g - SMALL_OVERLAP, zg + SMALL_OVERLAP),
+                                    (Dt / 2 - g + SMALL_OVERLAP, L / 2 - g + SMALL_OVERLAP, zw)), "water"))
         if tr:
             for za, zb in ((z0, z0 + 0.02), (zt - 0.02, zt)):
                 ring = (box_between((-Dt / 2 - tr, -L / 2 - tr, za), (Dt / 2 + tr, L / 2 + tr, zb))
-                        - box_between((-Dt / 2 + O1, -L / 2 + O1, za - 0.01),
-                                      (Dt / 2 - O1, L / 2 - O1, zb + 0.01)))
+                        - box_between((-Dt / 2 + SMALL_OVERLAP, -L / 2 + SMALL_OVERLAP, za - 0.01),
+                                      (Dt / 2 - SMALL_OVERLAP, L / 2 - SMALL_OVERLAP, zb + 0.01)))
                 out.append(Part(ring, "plastic"))
         lid = box_between((-Dt / 2 - tr, -L / 2 - tr, lb), (Dt / 2 + tr, L / 2 + tr, lt))
         notch = box_between((-Dt / 2 - tr - 0.01, -0.3 * L, lb - 0.01),
@@ -574,7 +557,7 @@ def _wave_band(y0: float, y1: float, x_mid: float, amp: float, pitch: float,
     nrm = np.c_[np.ones_like(dx), -dx] / np.sqrt(1 + dx ** 2)[:, None]
     c = np.c_[x, y]
     pts = np.vstack([c + 0.5 * thick * nrm, (c - 0.5 * thick * nrm)[::-1]])
-    return m3d.CrossSection([_ccw(pts)], m3d.FillRule.NonZero)
+    return m3d.CrossSection([ccw(pts)], m3d.FillRule.NonZero)
 
 
 @register
@@ -613,7 +596,7 @@ class Curtain(PartsFactory):
         tip = W / 2 + ext + {"ball": 2 * fr - 0.006, "disc": 0.012, "cone": 3.2 * fr - 0.004}[p["finial"]]
         ring_R, ring_m = rr + 0.004 + 0.003, 0.003
         # rings hang on the rod: their inner top edge 1 mm into the rod's top
-        ring_zc = zr + rr - O1 - (ring_R - ring_m)
+        ring_zc = zr + rr - SMALL_OVERLAP - (ring_R - ring_m)
         return dict(W=W, rr=rr, pitch=pitch, amp=amp, xw=xw, xr=xr, zr=zr, fr=fr, ext=ext,
                     tip=tip, ring_R=ring_R, ring_m=ring_m, ring_zc=ring_zc)
 
@@ -639,11 +622,11 @@ class Curtain(PartsFactory):
         zf = self._fabric_top(p, g)
         y_end = W / 2 + ext
         if not detail:
-            out.append(Part(box_between((xw + 0.018 - O1, -g["tip"], zr - fr),
+            out.append(Part(box_between((xw + 0.018 - SMALL_OVERLAP, -g["tip"], zr - fr),
                                         (xr + fr, g["tip"], zr + fr)), "metal"))
             for y0, y1 in self._panels(p, g):
                 out.append(Part(box_between((xr - amp - self.THICK / 2, y0 - 0.003, 0.0),
-                                            (xr + amp + self.THICK / 2, y1 + 0.003, zf + O1)),
+                                            (xr + amp + self.THICK / 2, y1 + 0.003, zf + SMALL_OVERLAP)),
                                 "fabric"))
             if p["heading"] == "rings":
                 zc = g["ring_zc"]
@@ -654,7 +637,7 @@ class Curtain(PartsFactory):
         for s in (-1, 1):
             out.append(Part(self._finial(p, g, s), "metal"))
             yb_ = s * (W / 2 + 0.02)
-            out.append(Part(box_between((xw + 0.018 - O1, yb_ - 0.008, zr - 0.012),
+            out.append(Part(box_between((xw + 0.018 - SMALL_OVERLAP, yb_ - 0.008, zr - 0.012),
                                         (xr, yb_ + 0.008, zr + 0.012)), "metal"))
         for y0, y1 in self._panels(p, g):
             band = _wave_band(y0, y1, xr, amp, pitch, self.THICK)
@@ -791,8 +774,8 @@ class TableClock(PartsFactory):
         # a paper dial on the drum's front inside a raised metal bezel ring
         out.append(Part(_x_lathe([(rf - 0.0005, 0.0), (rf + p["bezel"] * 0.5, 0.0),
                                   (rf + p["bezel"] * 0.5, 0.007), (rf - 0.0005, 0.007)],
-                                 (x1 - O1, 0.0, zc), 48), "metal"))
-        out.append(Part(_x_disc(rf, x1 - O1, x1 + 0.001, 0.0, zc, 48), "paper"))
+                                 (x1 - SMALL_OVERLAP, 0.0, zc), 48), "metal"))
+        out.append(Part(_x_disc(rf, x1 - SMALL_OVERLAP, x1 + 0.001, 0.0, zc, 48), "paper"))
         out += _clock_face(x1 + 0.001, 0.0, zc, rf, p["time"], "ticks", 0.0025, 0.005)
         for c, a in bells:
             dome = lathe([(0.0, 0.0), (rb, 0.0), (rb * 0.96, rb * 0.35), (rb * 0.75, rb * 0.75),
@@ -815,7 +798,7 @@ class TableClock(PartsFactory):
         Hb = H - fh
         x0, x1 = -D / 2, D / 2
         shape = "arched" if W <= 1.25 * H else "rect"
-        cs = _outline(shape, W, Hb).translate((0.0, fh - O1))
+        cs = _outline(shape, W, Hb).translate((0.0, fh - SMALL_OVERLAP))
         out = [Part(_yz_extrude(cs, x0, x1), "body"),
                Part(box_between((x0 - 0.005, -W / 2 - 0.005, 0.0), (x1 + 0.005, W / 2 + 0.005, fh)),
                     "body")]
@@ -824,7 +807,7 @@ class TableClock(PartsFactory):
         zc = max(zc, fh + rf + p["bezel"] + 0.005)
         bz = p["bezel"]
         out.append(Part(_x_lathe([(0.0, 0.0), (rf + bz, 0.0), (rf + bz, 0.006), (rf, 0.006),
-                                  (rf, 0.002), (0.0, 0.002)], (x1 - O1, 0.0, zc), 48), "metal"))
+                                  (rf, 0.002), (0.0, 0.002)], (x1 - SMALL_OVERLAP, 0.0, zc), 48), "metal"))
         out.append(Part(_x_disc(rf + 0.0005, x1, x1 + 0.002, 0.0, zc, 48), "paper"))
         out += _clock_face(x1 + 0.002, 0.0, zc, rf, p["time"], "ticks", 0.003, 0.004 - 0.0005)
         return out
@@ -834,14 +817,14 @@ class TableClock(PartsFactory):
         W = H * p["width_ratio"]
         Hb = H - fh
         x1 = D / 2
-        out = [Part(bevel_box((D, W, Hb), (0.0, 0.0, fh + Hb / 2 - O1 / 2), min(0.01, 0.2 * D), 2),
+        out = [Part(bevel_box((D, W, Hb), (0.0, 0.0, fh + Hb / 2 - SMALL_OVERLAP / 2), min(0.01, 0.2 * D), 2),
                     "body")]
         sw, sh = W * p["face_ratio"], Hb * p["face_ratio"] * 0.7
         zc = fh + Hb / 2
         pocket = box_between((x1 - 0.003, -sw / 2, zc - sh / 2), (x1 + 0.01, sw / 2, zc + sh / 2))
         out[0] = Part(out[0].solid - pocket, "body")
         # the screen fills the pocket 0.5 mm clear of its sides, 0.8 mm below the front
-        out.append(Part(box_between((x1 - 0.003 - O1, -sw / 2 + 0.0005, zc - sh / 2 + 0.0005),
+        out.append(Part(box_between((x1 - 0.003 - SMALL_OVERLAP, -sw / 2 + 0.0005, zc - sh / 2 + 0.0005),
                                     (x1 - 0.0008, sw / 2 - 0.0005, zc + sh / 2 - 0.0005)), "screen"))
         for s in (-1, 1):
             out.append(Part(box_between((-D / 2 + 0.01, s * W * 0.3 - 0.012, 0.0),
@@ -1080,7 +1063,7 @@ class Candle(PartsFactory):
                 (stem_r, 0.7 * hh), (cup_r, hh - 0.018), (cup_r, hh), (0.0115, hh),
                 (0.0115, hh - 0.014), (0.0, hh - 0.014)]
         holder = lathe(prof, 32)
-        z0 = hh - 0.014 - O1
+        z0 = hh - 0.014 - SMALL_OVERLAP
         z1 = hh + H - 0.012
         candle = lathe([(0.0, z0), (0.011, z0), (0.0095, z1 - 0.002), (0.008, z1), (0.0, z1)], 24)
         return [Part(holder, "metal"), Part(candle, "wax")] + self._drips(p, 0.009, z1, 3)
@@ -1097,7 +1080,7 @@ class Candle(PartsFactory):
         jar = lathe([(0.0, 0.0), (R, 0.0), (R, H), (R - w, H), (R - w, 0.006), (0.0, 0.006)], 48)
         z_wax, _, _ = self._wax_top(p)
         m = p["melt_depth"]
-        wax = lathe([(0.0, 0.006 - O1), (R - w + 0.0005, 0.006 - O1), (R - w + 0.0005, z_wax),
+        wax = lathe([(0.0, 0.006 - SMALL_OVERLAP), (R - w + 0.0005, 0.006 - SMALL_OVERLAP), (R - w + 0.0005, z_wax),
                      (0.6 * R, z_wax - 0.4 * m), (0.0, z_wax - 0.4 * m)], 48)
         return [Part(jar, "glass"), Part(wax, "wax")]
 

@@ -4,10 +4,9 @@ from __future__ import annotations
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.model.tags import Semantics as S
 
-OVERLAP = 0.002
 ASPECTS = {"16:9": 9 / 16, "21:9": 9 / 21}
 
 

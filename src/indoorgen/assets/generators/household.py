@@ -14,12 +14,13 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.generators.plants import loft
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.protocol import Joint, Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.outlines import ccw, largest_polygon
 from indoorgen.assets.shapes.primitives import (
+    SMALL_OVERLAP,
     Part,
     bevel_box,
     box,
@@ -30,10 +31,9 @@ from indoorgen.assets.shapes.primitives import (
     torus,
 )
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
+from indoorgen.assets.shapes.sweeps import loft
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-O1 = 0.001  # 1 mm overlap between touching pieces
 
 
 def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
@@ -44,20 +44,9 @@ def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
                                  [0.0, 1.0, 0.0, 0.0]]))
 
 
-def _ccw(pts: np.ndarray) -> np.ndarray:
-    x, y = pts[:, 0], pts[:, 1]
-    area = 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-    return pts if area > 0 else pts[::-1]
-
-
 def _seed(p: dict[str, Any]) -> int:
     """A deterministic seed from the params (for small per-item variations)."""
     return zlib.crc32(repr(sorted(p.items())).encode())
-
-
-def _largest_polygon(cs: m3d.CrossSection) -> sg.Polygon:
-    polys = [sg.Polygon(np.asarray(q, float)) for q in cs.to_polygons()]
-    return max(polys, key=lambda q: q.area)
 
 
 # ------------------------------------------------------------------------------------ towel
@@ -97,12 +86,12 @@ class Towel(PartsFactory):
             c = np.array([side * d / 2, z])
             a = np.linspace(-math.pi / 2, math.pi / 2, 9)
             half = np.c_[c[0] + side * rb * 2 * np.cos(a) * 0.5, c[1] + t * np.sin(a)]
-            bulges.append(m3d.CrossSection([_ccw(np.vstack([half, [[c[0] - side * 0.01, z + t],
+            bulges.append(m3d.CrossSection([ccw(np.vstack([half, [[c[0] - side * 0.01, z + t],
                                                                    [c[0] - side * 0.01, z - t]]]))]))
             nx = -side * d / 2
             notch = np.array([[nx - side * 0.001, z - 0.25 * t], [nx + side * 0.003, z],
                               [nx - side * 0.001, z + 0.25 * t]])
-            notches.append(m3d.CrossSection([_ccw(notch)]))
+            notches.append(m3d.CrossSection([ccw(notch)]))
         out = slab
         if bulges:
             out = m3d.CrossSection.batch_boolean([slab] + bulges, m3d.OpType.Add)
@@ -117,7 +106,7 @@ class Towel(PartsFactory):
         for i in range(int(p["n_towels"])):
             k = 1.0 - 0.04 * i
             out.append((p["depth"] * k, p["width"] * k, z, 0.006 * (i % 2)))
-            z += n * t - O1
+            z += n * t - SMALL_OVERLAP
         return out
 
     def _folded(self, p, detail):
@@ -159,7 +148,7 @@ class Towel(PartsFactory):
         outer = np.c_[r_out * np.cos(ang), R + r_out * np.sin(ang)]
         tail = p["tail_length"]
         end = np.array([[tail, 0.0], [tail, 0.85 * t]])
-        return _ccw(np.vstack([outer, end, inner[::-1]]))
+        return ccw(np.vstack([outer, end, inner[::-1]]))
 
     def _roll_centres(self, p) -> list[tuple[float, float]]:
         """Roll positions: side by side overlapping 2 mm, a third one resting on the two."""
@@ -167,10 +156,10 @@ class Towel(PartsFactory):
         pts = self._roll_profile(dict(p, tail_length=0.0015))
         span = pts[:, 0].max() - pts[:, 0].min()
         n = int(p["n_towels"])
-        c1 = span - 2 * O1
+        c1 = span - 2 * SMALL_OVERLAP
         out = [(0.0, 0.0), (c1, 0.0)][:n]
         if n == 3:
-            reach = 2 * (R - 0.75 * t) - 2 * O1  # the turns' smallest outer radius, twice
+            reach = 2 * (R - 0.75 * t) - 2 * SMALL_OVERLAP  # the turns' smallest outer radius, twice
             out.append((c1 / 2, math.sqrt(max(reach ** 2 - (c1 / 2) ** 2, 0.0))))
         return out
 
@@ -236,7 +225,7 @@ class FoldedClothes(PartsFactory):
                 t *= 1.3
             off = p["offset_jitter"] * (rng.random(2) * 2 - 1)
             out.append(dict(kind=kind, d=d, w=w, t=t, z=z, x=off[0], y=off[1]))
-            z += t - O1
+            z += t - SMALL_OVERLAP
         return out
 
     @staticmethod
@@ -326,7 +315,7 @@ class Laptop(PartsFactory):
         cr = min(p["corner_radius"], 0.45 * lt)
         shell = bevel_box((D, W, lt), (0.0, 0.0, z0 + lt / 2), cr, 2)
         b = p["bezel"]
-        screen = box_between((-D / 2 + b, -W / 2 + b, z0 - 0.0003), (D / 2 - b * 1.6, W / 2 - b, z0 + O1))
+        screen = box_between((-D / 2 + b, -W / 2 + b, z0 - 0.0003), (D / 2 - b * 1.6, W / 2 - b, z0 + SMALL_OVERLAP))
         if not detail:  # the hull of shell and screen: exact bounds at any opening angle
             return [Part(self._open(m3d.Manifold.batch_hull([shell, screen]), p), "body", "lid")]
         return [Part(self._open(shell, p), "body", "lid"), Part(self._open(screen, p), "screen", "lid")]
@@ -545,15 +534,15 @@ class Basket(PartsFactory):
             z0 = self.FLOOR + r * pitch + (0.0 if r == 0 else 0.3 * pitch)
             z1 = self.FLOOR + (r + 1) * pitch
             if r == 0:
-                z0 -= O1
+                z0 -= SMALL_OVERLAP
             zm = (z0 + z1) / 2
             hx, hy = half(Db, zm), half(Wb, zm)
             for sx in (-1, 1):
-                out.append(Part(box_between((min(sx * hx, sx * (hx - wt)), -hy + O1, z0),
-                                            (max(sx * hx, sx * (hx - wt)), hy - O1, z1)), "wood"))
+                out.append(Part(box_between((min(sx * hx, sx * (hx - wt)), -hy + SMALL_OVERLAP, z0),
+                                            (max(sx * hx, sx * (hx - wt)), hy - SMALL_OVERLAP, z1)), "wood"))
             for sy in (-1, 1):
-                out.append(Part(box_between((-hx + O1, min(sy * hy, sy * (hy - wt)), z0),
-                                            (hx - O1, max(sy * hy, sy * (hy - wt)), z1)), "wood"))
+                out.append(Part(box_between((-hx + SMALL_OVERLAP, min(sy * hy, sy * (hy - wt)), z0),
+                                            (hx - SMALL_OVERLAP, max(sy * hy, sy * (hy - wt)), z1)), "wood"))
         if p["rim"]:
             ring = (box_between((-Dt / 2, -Wt / 2, H - 0.015), (Dt / 2, Wt / 2, H))
                     - box_between((-Dt / 2 + wt * 1.5, -Wt / 2 + wt * 1.5, H - 0.02),
@@ -713,14 +702,14 @@ class StorageBox(PartsFactory):
             (0.0, 0.0, z0))
         parts = [plate]
         if lift:
-            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), sk + O1)
+            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), sk + SMALL_OVERLAP)
             inner = m3d.Manifold.extrude(self._plan(Dl - 2 * wt, Wl - 2 * wt, r + fl + g if r else 0.0),
                                          sk + 0.02).translate((0.0, 0.0, -0.01))
             parts.append((outer - inner).translate((0.0, 0.0, z0 - sk)))
         else:  # a raised stacking rim on the flat lid
             rim = (m3d.Manifold.extrude(self._plan(Dl - 0.01, Wl - 0.01, r), 0.006)
                    - m3d.Manifold.extrude(self._plan(Dl - 0.02, Wl - 0.02, r), 0.02)
-                   .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, z0 + lt - O1))
+                   .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, z0 + lt - SMALL_OVERLAP))
             parts.append(rim)
         return [Part(q, slot, "lid") for q in parts]
 
@@ -752,7 +741,7 @@ class StorageBox(PartsFactory):
         rim = 0.0 if p["lid_style"] == "lift_off" else 0.012
         inset = max(r, 0.0) + 0.002
         # the underside: the (scaled) plan 0.5 mm in from its edge
-        foot = _largest_polygon(self._plan(D, W, r).scale((sc, sc)).offset(
+        foot = largest_polygon(self._plan(D, W, r).scale((sc, sc)).offset(
             -0.0005, m3d.JoinType.Miter, 2.0))
         return [support_polygon("bottom", (0, 0, 0), foot, subpart=Subpart.Bottom, up=False),
                 support_rect("top", (0, 0, z_top), Dl / 2 - inset - rim, Wl / 2 - inset - rim),

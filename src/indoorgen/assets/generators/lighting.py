@@ -9,12 +9,10 @@ from manifold3d import Manifold
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe, rod
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-OVERLAP = 0.002
 
 
 def shade_radius(p, t: float) -> float:

@@ -20,12 +20,19 @@ from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DoorJoint
-from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe, rod
+from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
+    Part,
+    box_between,
+    circle_polygon,
+    cylinder,
+    lathe,
+    rod,
+)
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002
 LIGHT_SLOTS = ["metal", "shade", "glass", "emissive", "wax", "ceramic", "plastic"]
 
 
@@ -63,10 +70,6 @@ def _flame(z0: float, r: float, x: float = 0.0, y: float = 0.0, sections: int = 
     prof = [(0.0, 0.0), (0.55 * r, 0.0), (r, 0.9 * r), (0.8 * r, 2.0 * r), (0.3 * r, 3.0 * r),
             (0.0, 3.4 * r)]
     return lathe(prof, sections).translate((x, y, z0))
-
-
-def _disc(r: float, z0: float, h: float, x: float = 0.0, y: float = 0.0, n: int = 48) -> m3d.Manifold:
-    return cylinder(r, h, (x, y, z0), n)
 
 
 def _top_disc(r: float, z: float) -> Surface:

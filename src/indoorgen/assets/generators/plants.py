@@ -7,7 +7,7 @@ one watertight shell. The leaf skeletons are computed for all leaves at once wit
 placeholder encloses them in one box computed from the very same points (so its bounding box is
 exact and cheap).
 
-`loft` and `arc_paths` are public: the other decor/household modules reuse them.
+`loft` lives in `assets.shapes.sweeps` (woven baskets use it too).
 """
 from __future__ import annotations
 
@@ -23,10 +23,10 @@ from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
+from indoorgen.assets.shapes.sweeps import loft
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
 #: how far (radians) a leaf's direction turns downwards over its length at droop = 1
 DROOP_TURN = 2.2
@@ -36,34 +36,6 @@ Z = np.array([0.0, 0.0, 1.0])
 
 
 # ------------------------------------------------------------------------------ swept solids
-def loft(rings: np.ndarray, start: np.ndarray | None = None, end: np.ndarray | None = None
-         ) -> m3d.Manifold:
-    """A closed solid through `rings` (n, k, 3): ring i joined to ring i+1 by k quads, both ends
-    closed by a fan to an apex (`start` / `end`, default the ring's centroid). Rings must be
-    consistently ordered and the sweep must not cross itself; the winding is fixed from the
-    signed volume, so either ring direction works."""
-    rings = np.asarray(rings, float)
-    n, k, _ = rings.shape
-    a0 = rings[0].mean(axis=0) if start is None else np.asarray(start, float)
-    a1 = rings[-1].mean(axis=0) if end is None else np.asarray(end, float)
-    verts = np.vstack([rings.reshape(-1, 3), a0, a1])
-    i = (np.arange(n - 1) * k)[:, None]
-    j = np.arange(k)[None, :]
-    jn = (j + 1) % k
-    q00, q01 = (i + j).ravel(), (i + jn).ravel()
-    q10, q11 = q00 + k, q01 + k
-    js, jns = j.ravel(), jn.ravel()
-    ia0, ia1, last = n * k, n * k + 1, (n - 1) * k
-    tris = np.vstack([np.c_[q00, q01, q11], np.c_[q00, q11, q10],
-                      np.c_[np.full(k, ia0), jns, js],
-                      np.c_[np.full(k, ia1), last + js, last + jns]])
-    tv = verts[tris]
-    vol = np.einsum("ij,ij->i", tv[:, 0], np.cross(tv[:, 1], tv[:, 2])).sum()
-    if vol < 0:
-        tris = tris[:, ::-1]
-    mesh = m3d.Mesh(vert_properties=np.ascontiguousarray(verts, np.float32),
-                    tri_verts=np.ascontiguousarray(tris, np.uint32))
-    return m3d.Manifold(mesh)
 
 
 def arc_paths(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, length: np.ndarray,
@@ -85,7 +57,7 @@ def arc_paths(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, leng
     return pts, tang, side, normal
 
 
-def tube_rings(pts: np.ndarray, side: np.ndarray, normal: np.ndarray, radius: np.ndarray,
+def stem_rings(pts: np.ndarray, side: np.ndarray, normal: np.ndarray, radius: np.ndarray,
                sections: int = 8) -> np.ndarray:
     """Circular rings (L, n, sections, 3) around planar paths `pts` (L, n, 3) whose cross
     sections are spanned by `side` (L, 3) and `normal` (L, n, 3); `radius` is (L, n)."""
@@ -183,7 +155,7 @@ def stem_solids(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray,
     pts, tang, side, normal = arc_paths(base, azimuth, elevation, length, droop, n)
     s = np.linspace(0.0, 1.0, n + 1)
     rad = r0[:, None] + (r1 - r0)[:, None] * s[None, :]
-    rings = tube_rings(pts, side, normal, rad, sections)
+    rings = stem_rings(pts, side, normal, rad, sections)
     starts = pts[:, 0] - tang[:, 0] * r0[:, None] * 0.5
     ends = pts[:, -1] + tang[:, -1] * r1[:, None] * 0.8
     solids = [loft(rings[i], starts[i], ends[i]) for i in range(len(base))] if build else []

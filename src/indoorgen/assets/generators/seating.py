@@ -10,11 +10,9 @@ from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S
-
-OVERLAP = 0.002
 
 
 def _shear_back(solid, z0: float, tilt_deg: float):

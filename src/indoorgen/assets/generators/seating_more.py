@@ -1,8 +1,7 @@
 """More seating: side chairs, upholstered chairs, office chairs, bar stools, stools/ottomans,
 L-shaped sectional sofas and benches. Front (+X) is where one sits from.
 
-The module also holds the shape helpers that beds.py and tables_more.py reuse: swept tubes
-(bentwood and tubular-steel frames), slanted posts (splayed legs), rounded slabs, extruded side
+The module also holds seating's own shape helpers: slanted posts (splayed legs), extruded side
 profiles (moulded shells) and the bounding-box pieces placeholders are made of.
 """
 from __future__ import annotations
@@ -19,121 +18,32 @@ from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame, legs
 from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
     Part,
     bevel_box,
+    board,
     box,
     box_between,
     circle_polygon,
     cylinder,
     lathe,
+    rounded_rect_polygon,
+    rounded_slab,
     torus,
 )
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
+from indoorgen.assets.shapes.sweeps import (
+    dedupe_points,
+    fillet_path,
+    polyline_tangents,
+    rod_between,
+    tube,
+    tube_boxes,
+    unit_rows,
+)
 from indoorgen.model.tags import Semantics as S
 
-OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
-
-
-def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
-    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
-    return Part(box_between(lo, hi), slot, link)
-
-
 # ===================================================================================== helpers
-def _unit_rows(v: np.ndarray) -> np.ndarray:
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
-def fillet_path(points: Sequence[Sequence[float]], radius: float, segments: int = 5) -> np.ndarray:
-    """The polyline `points` (N, 3) with every interior corner rounded by a circular arc of
-    `radius` (shrunk where the neighbouring segments are too short), sampled with `segments`
-    steps per arc: the centre line of a bent tube."""
-    pts = np.asarray(points, float)
-    if len(pts) < 3:
-        return pts
-    b = pts[1:-1]
-    u, v = pts[:-2] - b, pts[2:] - b
-    lu, lv = np.linalg.norm(u, axis=1), np.linalg.norm(v, axis=1)
-    u, v = u / lu[:, None], v / lv[:, None]
-    ang = np.arccos(np.clip(np.einsum("ij,ij->i", u, v), -1.0, 1.0))  # interior angles
-    bent = ang < math.pi - 1e-3
-    half = np.where(bent, ang / 2, 0.25)
-    t = np.minimum(np.minimum(radius / np.tan(half), 0.5 * lu), 0.5 * lv)
-    r = t * np.tan(half)
-    bis = _unit_rows(np.where(bent[:, None], u + v, 1.0))
-    centre = b + bis * (r / np.sin(half))[:, None]
-    e0, e1 = b + u * t[:, None] - centre, b + v * t[:, None] - centre
-    w = np.arccos(np.clip(np.einsum("ij,ij->i", e0, e1) / np.maximum(r * r, 1e-18), -1.0, 1.0))
-    w = np.maximum(w, 1e-9)
-    sp = np.linspace(0.0, 1.0, segments + 1)[None, :, None]
-    arcs = ((np.sin((1 - sp) * w[:, None, None]) * e0[:, None, :]
-             + np.sin(sp * w[:, None, None]) * e1[:, None, :]) / np.sin(w)[:, None, None]
-            + centre[:, None, :])
-    arcs = np.where(bent[:, None, None], arcs, b[:, None, :])
-    return _dedupe(np.vstack([pts[:1], arcs.reshape(-1, 3), pts[-1:]]))
-
-
-def _tangents(pts: np.ndarray) -> np.ndarray:
-    seg = _unit_rows(np.diff(pts, axis=0))
-    tang = np.empty_like(pts)
-    tang[0], tang[-1] = seg[0], seg[-1]
-    tang[1:-1] = _unit_rows(seg[:-1] + seg[1:])
-    return tang
-
-
-def tube_rings(path: Sequence[Sequence[float]], radius: float, sections: int = 12) -> np.ndarray:
-    """The vertex rings (len(path), sections, 3) of `tube(path, radius, sections)`: circles of
-    `radius` perpendicular to the path, carried along by parallel transport (no twist)."""
-    pts = np.asarray(path, float)
-    n = max(4, int(math.ceil(sections / 4.0)) * 4)
-    tang = _tangents(pts)
-    ref = np.array([0.0, 0.0, 1.0]) if abs(tang[0][2]) < 0.9 else np.array([1.0, 0.0, 0.0])
-    nrm = np.empty_like(pts)
-    cur = np.cross(tang[0], ref)
-    for i in range(len(pts)):  # parallel transport of the ring's reference direction
-        cur = cur - np.dot(cur, tang[i]) * tang[i]
-        cur = cur / np.linalg.norm(cur)
-        nrm[i] = cur
-    bin_ = np.cross(tang, nrm)
-    a = 2 * np.pi * np.arange(n) / n
-    return (pts[:, None, :] + radius * (np.cos(a)[None, :, None] * nrm[:, None, :]
-                                        + np.sin(a)[None, :, None] * bin_[:, None, :]))
-
-
-def tube(path: Sequence[Sequence[float]], radius: float, sections: int = 12) -> m3d.Manifold:
-    """A round tube of `radius` swept along the polyline `path` (use `fillet_path` for bends),
-    with flat end caps perpendicular to the path."""
-    pts = np.asarray(path, float)
-    rings = tube_rings(pts, radius, sections)
-    m, n = rings.shape[:2]
-    verts = np.vstack([rings.reshape(-1, 3), pts[0], pts[-1]])
-    i = np.arange(m - 1)[:, None]
-    k = np.arange(n)[None, :]
-    q0, q1 = i * n + k, i * n + (k + 1) % n
-    q2, q3 = (i + 1) * n + (k + 1) % n, (i + 1) * n + k
-    side = np.concatenate([np.stack([q0, q1, q2], -1).reshape(-1, 3),
-                           np.stack([q0, q2, q3], -1).reshape(-1, 3)])
-    s_c, e_c = m * n, m * n + 1
-    kk = np.arange(n)
-    cap0 = np.stack([np.full(n, s_c), (kk + 1) % n, kk], -1)
-    cap1 = np.stack([np.full(n, e_c), (m - 1) * n + kk, (m - 1) * n + (kk + 1) % n], -1)
-    faces = np.vstack([side, cap0, cap1])
-    mesh = m3d.Mesh(vert_properties=np.asarray(verts, np.float32),
-                    tri_verts=np.asarray(faces, np.uint32))
-    return m3d.Manifold(mesh)
-
-
-def tube_boxes(path: Sequence[Sequence[float]], radius: float, n_boxes: int = 4
-               ) -> list[m3d.Manifold]:
-    """Placeholder boxes that together contain `tube(path, radius)`: the path split into
-    `n_boxes` runs, each boxed with the exact extents of its end rings."""
-    pts = np.asarray(path, float)
-    tang = _tangents(pts)
-    half = radius * np.sqrt(np.clip(1.0 - tang ** 2, 0.0, 1.0))
-    lo, hi = pts - half, pts + half
-    cuts = np.unique(np.linspace(0, len(pts) - 1, min(n_boxes, len(pts) - 1) + 1).round().astype(int))
-    return [box_between(lo[a:b + 1].min(axis=0), hi[a:b + 1].max(axis=0))
-            for a, b in zip(cuts[:-1], cuts[1:])]
 
 
 def post(bottom: Sequence[float], top: Sequence[float], r_bottom: float,
@@ -158,42 +68,13 @@ def post(bottom: Sequence[float], top: Sequence[float], r_bottom: float,
     return m3d.Manifold.hull_points(pts)
 
 
-def rounded_slab(dx: float, dy: float, z0: float, z1: float, corner: float,
-                 center: Sequence[float] = (0.0, 0.0), sections: int = 32) -> m3d.Manifold:
-    """A slab dx (X) by dy (Y) from z0 to z1 whose plan has corners rounded by `corner` (half
-    the smaller side: a stadium or a disc). Its bounding box is exact."""
-    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
-    n = max(4, int(math.ceil(sections / 4.0)) * 4)
-    a = 2 * np.pi * np.arange(n) / n
-    circ = r * np.c_[np.cos(a), np.sin(a)]
-    pts = []
-    for sx in (-1, 1):
-        for sy in (-1, 1):
-            c = np.array([center[0] + sx * (dx / 2 - r), center[1] + sy * (dy / 2 - r)])
-            for z in (z0, z1):
-                pts.append(np.c_[c[0] + circ[:, 0], c[1] + circ[:, 1], np.full(n, z)])
-    return m3d.Manifold.hull_points(np.vstack(pts))
-
-
-def rounded_rect_polygon(dx: float, dy: float, corner: float, inset: float,
-                         center: Sequence[float] = (0.0, 0.0)) -> sg.Polygon:
-    """The plan of `rounded_slab(dx, dy, ..., corner)` shrunk by `inset`, as a shapely polygon
-    (for support surfaces on rounded seats and tops)."""
-    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
-    core = sg.box(center[0] - dx / 2 + r, center[1] - dy / 2 + r,
-                  center[0] + dx / 2 - r, center[1] + dy / 2 - r)
-    if r - inset > 1e-4:
-        return core.buffer(r - inset, 16)
-    return core.buffer(r - inset, 16, join_style=2)
-
-
 def thick_polyline(center: Sequence[Sequence[float]], thickness: float) -> np.ndarray:
     """The outline (a closed 2D polygon) of a band `thickness` wide around a 2D polyline."""
     c = np.asarray(center, float)
-    seg = _unit_rows(np.diff(c, axis=0))
+    seg = unit_rows(np.diff(c, axis=0))
     tang = np.empty_like(c)
     tang[0], tang[-1] = seg[0], seg[-1]
-    tang[1:-1] = _unit_rows(seg[:-1] + seg[1:])
+    tang[1:-1] = unit_rows(seg[:-1] + seg[1:])
     nrm = np.c_[-tang[:, 1], tang[:, 0]]
     scale = np.ones(len(c))
     scale[1:-1] = 1.0 / np.maximum(np.einsum("ij,ij->i", seg[:-1], tang[1:-1]), 0.3)
@@ -269,14 +150,6 @@ def points_box(points: np.ndarray, pad: float) -> m3d.Manifold:
     """The box around `points` (N, 3) grown by `pad` on every side (a placeholder piece)."""
     pts = np.asarray(points, float)
     return box_between(pts.min(axis=0) - pad, pts.max(axis=0) + pad)
-
-
-def rod_between(p0: Sequence[float], p1: Sequence[float], radius: float, detail: bool,
-                sections: int = 12) -> m3d.Manifold:
-    """A round rod from p0 to p1, or (detail=False) the box of its bounding box."""
-    if detail:
-        return tube([p0, p1], radius, sections)
-    return tube_boxes([p0, p1], radius, 1)[0]
 
 
 def splay_legs(corners: Sequence[tuple[float, float]], z_top: float, r_top: float,
@@ -412,7 +285,7 @@ class SideChair(PartsFactory):
                 zh + hoop_r * math.sin(a)) for a in arc]
         path = ([(xb + sfx, -yb - sfy, 0.0), (xb + sfx, -yb - sfy, 0.03), (xb, -yb, sh)] + top
                 + [(xb, yb, sh), (xb + sfx, yb + sfy, 0.03), (xb + sfx, yb + sfy, 0.0)])
-        path = fillet_path(_dedupe(path), 0.05, 4)
+        path = fillet_path(dedupe_points(path), 0.05, 4)
         out += [Part(s, "wood") for s in ([tube(path, r, 12)] if detail else tube_boxes(path, r, 8))]
         # a ring between the legs
         zr = 0.2
@@ -457,7 +330,7 @@ class SideChair(PartsFactory):
                          "metal") for q in ([tube(path, rt, 16)] if detail else tube_boxes(path, rt, 6))]
             if detail:  # floor glides under the runner's ends
                 for gx in (xr - 0.005, xf_floor - 0.09):
-                    out.append(_board((gx - 0.015, s * ys - 0.007, 0.0),
+                    out.append(board((gx - 0.015, s * ys - 0.007, 0.0),
                                       (gx + 0.015, s * ys + 0.007, 0.005), "plastic"))
         out.append(Part(rod_between((xr - 0.01, -ys, rt), (xr - 0.01, ys, rt), rt, detail, 16), "metal"))
         seat = (bevel_box((sd - 0.02, sw, st), (0.0, 0, sh - st / 2), min(0.015, st / 3), 2)
@@ -494,7 +367,7 @@ class SideChair(PartsFactory):
             groups = np.array_split(np.arange(nseg), 3)
             for g in groups:
                 q = np.vstack([quads[i] for i in g])
-                out.append(_board((q[:, 0].min(), -sw / 2, q[:, 1].min()),
+                out.append(board((q[:, 0].min(), -sw / 2, q[:, 1].min()),
                                   (min(q[:, 0].max(), sd / 2), sw / 2, q[:, 1].max()), "plastic"))
         lt, splay = p["leg_thickness"], p["leg_splay"]
         zt = sh - t + OVERLAP
@@ -528,18 +401,12 @@ class SideChair(PartsFactory):
 def _spindle_back_box(crest: np.ndarray, crest_r: float, feet: np.ndarray, tops: np.ndarray,
                       radii: np.ndarray) -> m3d.Manifold:
     """The box around a crest rail tube and straight spindle tubes (exact ring extents)."""
-    half_c = crest_r * np.sqrt(np.clip(1.0 - _tangents(crest) ** 2, 0.0, 1.0))
-    t = _unit_rows(tops - feet)
+    half_c = crest_r * np.sqrt(np.clip(1.0 - polyline_tangents(crest) ** 2, 0.0, 1.0))
+    t = unit_rows(tops - feet)
     half_s = radii[:, None] * np.sqrt(np.clip(1.0 - t ** 2, 0.0, 1.0))
     lo = np.vstack([crest - half_c, feet - half_s, tops - half_s]).min(axis=0)
     hi = np.vstack([crest + half_c, feet + half_s, tops + half_s]).max(axis=0)
     return box_between(lo, hi)
-
-
-def _dedupe(points: Sequence[Sequence[float]]) -> np.ndarray:
-    arr = np.asarray(points, float)
-    keep = np.r_[True, np.linalg.norm(np.diff(arr, axis=0), axis=1) > 1e-6]
-    return arr[keep]
 
 
 def _front_round(sd: float, sw: float, rc: float) -> m3d.Manifold:
@@ -625,7 +492,7 @@ class UpholsteredChair(PartsFactory):
                 out.append(Part(soft((sd / 2 + 0.02 - xr0, 0.05, 0.025),
                                      ((xr0 + sd / 2 + 0.02) / 2, yc, za - 0.0125), 0.008), "wood"))
                 yp = s * (sw / 2 + 0.012)
-                out.append(_board((sd / 2 - 0.075, yp - 0.0175, z0 + 0.01),
+                out.append(board((sd / 2 - 0.075, yp - 0.0175, z0 + 0.01),
                                   (sd / 2 - 0.04, yp + 0.0175, za - 0.025 + OVERLAP), "wood"))
         style = p["leg_style"]
         lt = {"tapered": 0.045, "round": 0.045, "metal": 0.024}[style]
@@ -738,14 +605,14 @@ class OfficeChair(PartsFactory):
         if detail:
             piston = cylinder(0.016, L["mech0"] - L["gas"] - 0.002 + OVERLAP, (0, 0, L["gas"] + 0.002), 16)
             out = [Part(piston, "metal", link),
-                   _board(*mech, "metal", link), Part(bevel_box(*seat, 2), "fabric", link)]
+                   board(*mech, "metal", link), Part(bevel_box(*seat, 2), "fabric", link)]
         else:
-            out = [_board((-0.11, -0.1, L["gas"] + 0.002), mech[1], "metal", link),
+            out = [board((-0.11, -0.1, L["gas"] + 0.002), mech[1], "metal", link),
                    Part(box(*seat[:2]), "fabric", link)]
         # spine: under the seat to the back, then up behind the back panel
         xb = x0 - sd / 2  # seat rear
         zs0 = L["seat0"] - 0.04
-        out.append(_board((xb - 0.065, -0.03, zs0), (-0.08, 0.03, L["seat0"] - 0.01), "metal", link))
+        out.append(board((xb - 0.065, -0.03, zs0), (-0.08, 0.03, L["seat0"] - 0.01), "metal", link))
         zb0, zb1 = sh + 0.05, sh + 0.05 + bh
         spine = box_between((xb - 0.065, -0.03, zs0), (xb - 0.022, 0.03, zb0 + 0.5 * bh))
         out.append(Part(shear_back(spine, sh, tilt), "metal", link))
@@ -781,12 +648,12 @@ class OfficeChair(PartsFactory):
                        ((-0.05, ya - 0.0125, zs0 + 0.005), (-0.01, ya + 0.0125, za + OVERLAP)),  # post
                        ((-0.145, ya - 0.0375, za), (0.105, ya + 0.0375, za + 0.03))]  # pad
                 if detail:
-                    out += [_board(*arm[0], "metal", link), _board(*arm[1], "plastic", link),
+                    out += [board(*arm[0], "metal", link), board(*arm[1], "plastic", link),
                             Part(bevel_box((0.25, 0.075, 0.03), (-0.02, ya, za + 0.015), 0.012, 2), "plastic",
                                  link)]
                 else:
                     lo, hi = np.min([c[0] for c in arm], axis=0), np.max([c[1] for c in arm], axis=0)
-                    out.append(_board(lo, hi, "plastic", link))
+                    out.append(board(lo, hi, "plastic", link))
         return out
 
     def parts(self, p, detail):
@@ -1153,7 +1020,7 @@ class SofaLShaped(PartsFactory):
             lo[1], hi[1] = sorted((s * lo[1], s * hi[1]))
             if detail:
                 return Part(bevel_box(hi - lo, (lo + hi) / 2, rad, 2), slot)
-            return _board(lo, hi, slot)
+            return board(lo, hi, slot)
 
         out = [
             soft((x0, g["y_in0"] - OVERLAP, lh), (xd, g["y_in1"] + OVERLAP, zb), 0.005, "upholstery"),
@@ -1271,10 +1138,10 @@ class Bench(PartsFactory):
         if detail:
             out += [soft((x0, -L / 2, zs), (x1, L / 2, sh), 0.003, "wood") for x0, x1 in self._slats(p)]
         else:
-            out.append(_board((-d / 2, -L / 2, zs), (d / 2, L / 2, sh), "wood"))
+            out.append(board((-d / 2, -L / 2, zs), (d / 2, L / 2, sh), "wood"))
         yb = L / 2 - self.END - p["leg_thickness"] / 2
         for y in (-yb, 0.0, yb):  # battens under the slats
-            out.append(_board((-d / 2 + 0.01, y - 0.02, sh - tt), (d / 2 - 0.01, y + 0.02, zs + OVERLAP),
+            out.append(board((-d / 2 + 0.01, y - 0.02, sh - tt), (d / 2 - 0.01, y + 0.02, zs + OVERLAP),
                               "wood"))
         return out
 
@@ -1289,7 +1156,7 @@ class Bench(PartsFactory):
                 out.append(Part(leg, "wood"))
         elif base == "panel":
             for s in (-1, 1):
-                out.append(_board((-d / 2 + 0.02, s * yb - lt / 2, 0.0),
+                out.append(board((-d / 2 + 0.02, s * yb - lt / 2, 0.0),
                                   (d / 2 - 0.02, s * yb + lt / 2, zu), "wood"))
         else:
             m = 0.03  # frame member section along X
@@ -1308,10 +1175,10 @@ class Bench(PartsFactory):
             if base == "legs":
                 cx = d / 2 - 0.02 - lt / 2
                 for sx in (-1, 1):
-                    out.append(_board((sx * cx - 0.01, -yb, zs - 0.02), (sx * cx + 0.01, yb, zs + 0.02),
+                    out.append(board((sx * cx - 0.01, -yb, zs - 0.02), (sx * cx + 0.01, yb, zs + 0.02),
                                       "wood"))
             else:
-                out.append(_board((-0.015, -yb, zs - 0.03), (0.015, yb, zs + 0.03),
+                out.append(board((-0.015, -yb, zs - 0.03), (0.015, yb, zs + 0.03),
                                   "metal" if base == "frame" else "wood"))
         return out
 

@@ -9,12 +9,11 @@ from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002
 MIN_SHELF_CLEARANCE = 0.25  # books up to ~24 cm tall fit on every shelf
 
 

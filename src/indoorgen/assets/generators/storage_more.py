@@ -22,12 +22,11 @@ from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame, legs
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, drawer, hinged_door
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, rod
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, rod
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002   # how far touching boards interpenetrate so each link is one shell
 REVEAL = 0.002    # gap left around every front (so neighbouring fronts never touch)
 FRONT_T = 0.018   # door / drawer front thickness (m)
 #: how far handles stand proud of a front (parts.bar_handle / parts.knob defaults)

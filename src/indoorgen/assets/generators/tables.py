@@ -14,6 +14,7 @@ from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
     Part,
     bevel_box,
     box,
@@ -30,7 +31,6 @@ from indoorgen.assets.shapes.surfaces import (
 )
 from indoorgen.model.tags import Semantics as S
 
-OVERLAP = 0.002  # how far joined pieces interpenetrate so the union is one shell
 LEG_STYLES = ("straight", "tapered", "round")
 
 

@@ -15,24 +15,26 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.generators.seating_more import rounded_rect_polygon, rounded_slab
 from indoorgen.assets.generators.tables import rect_table_parts
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder, lathe
+from indoorgen.assets.shapes.primitives import (
+    OVERLAP,
+    Part,
+    bevel_box,
+    board,
+    box,
+    cylinder,
+    lathe,
+    rounded_rect_polygon,
+    rounded_slab,
+)
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
-
-
-def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
-    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
-    return Part(box_between(lo, hi), slot, link)
 
 
 def _translate(parts: list[Part], offset) -> list[Part]:
@@ -178,7 +180,7 @@ class DiningTableOval(PartsFactory):
             yp = 0.5 * b
             for y in (-yp, yp):
                 out += self._pedestal(p, y, min(0.55 * a, 0.3, 0.9 * yp), detail)
-            out.append(_board((-0.04, -yp, zu - 0.09), (0.04, yp, zu), "wood"))
+            out.append(board((-0.04, -yp, zu - 0.09), (0.04, yp, zu), "wood"))
         else:
             lt = p["leg_thickness"]
             ka, kb = 0.75 * a, b - 0.25 * a
@@ -316,8 +318,8 @@ class Desk(PartsFactory):
                 out += _translate(carcass(pd, pw, self.PLINTH, z_under + OVERLAP, t, back=0.006,
                                           top=False), ctr)
             else:
-                out.append(_board((x0, y0, self.PLINTH), (D / 2 - 0.005, y1, z_under + OVERLAP), "front"))
-            out.append(_board((x0 + 0.01, y0 + 0.01, 0.0), (xf - 0.03, y1 - 0.01, self.PLINTH + OVERLAP),
+                out.append(board((x0, y0, self.PLINTH), (D / 2 - 0.005, y1, z_under + OVERLAP), "front"))
+            out.append(board((x0 + 0.01, y0 + 0.01, 0.0), (xf - 0.03, y1 - 0.01, self.PLINTH + OVERLAP),
                               "wood"))
         style = self._style(p)
         if style == "legs":
@@ -326,18 +328,18 @@ class Desk(PartsFactory):
             cx, cy = D / 2 - 0.03 - lt / 2, W / 2 - 0.03 - lt / 2
             ah = 0.07
             for s in (-1, 1):  # side aprons and the back apron
-                out.append(_board((-cx, s * cy - 0.01, z_under - ah),
+                out.append(board((-cx, s * cy - 0.01, z_under - ah),
                                   (cx, s * cy + 0.01, z_under + OVERLAP), "wood"))
-            out.append(_board((-cx - 0.01, -cy, z_under - ah), (-cx + 0.01, cy, z_under + OVERLAP),
+            out.append(board((-cx - 0.01, -cy, z_under - ah), (-cx + 0.01, cy, z_under + OVERLAP),
                               "wood"))
         elif style == "single_pedestal":
             s = -1 if p["pedestal_side"] == "left" else 1
             ya, yb = sorted((s * W / 2, s * (W / 2 - 0.03)))
-            out.append(_board((-D / 2 + 0.02, ya, 0.0), (D / 2 - 0.02, yb, z_under + OVERLAP), "wood"))
+            out.append(board((-D / 2 + 0.02, ya, 0.0), (D / 2 - 0.02, yb, z_under + OVERLAP), "wood"))
         ky0, ky1 = self._knee(p)
         if p["modesty_panel"]:
             # against the carcasses' back panels (no sealed gap between them)
-            out.append(_board((-D / 2 + 0.02, ky0 - OVERLAP, z_under - 0.35),
+            out.append(board((-D / 2 + 0.02, ky0 - OVERLAP, z_under - 0.35),
                               (-D / 2 + 0.04, ky1 + OVERLAP, z_under + OVERLAP), "wood"))
         if p["center_drawer"]:
             w, yc = min(0.6, ky1 - ky0 - 0.1), (ky0 + ky1) / 2
@@ -346,7 +348,7 @@ class Desk(PartsFactory):
                 cd = carcass(xf - x0, w, zc, z_under + OVERLAP, t, back=0.006, top=False)
                 out += _translate(cd, ((xf + x0) / 2, yc, 0.0))
             else:
-                out.append(_board((x0, yc - w / 2, zc), (D / 2 - 0.005, yc + w / 2, z_under + OVERLAP),
+                out.append(board((x0, yc - w / 2, zc), (D / 2 - 0.005, yc + w / 2, z_under + OVERLAP),
                                   "front"))
         if detail:
             for parts, _ in (f for f, _ in self._fronts(p)):
@@ -363,12 +365,12 @@ class Desk(PartsFactory):
         t, hd = self.BOARD, self._hutch_depth(p)
         x0, x1 = -D / 2, -D / 2 + hd
         z0, z1 = h - OVERLAP, h + hh
-        out = [_board((x0, -W / 2, z1 - t), (x1, W / 2, z1), "wood"),
-               _board((x0, -W / 2 + t - OVERLAP, z0),
+        out = [board((x0, -W / 2, z1 - t), (x1, W / 2, z1), "wood"),
+               board((x0, -W / 2 + t - OVERLAP, z0),
                       (x0 + 0.008, W / 2 - t + OVERLAP, z1 - t + OVERLAP), "back")]
         for s in (-1, 1):
             ya, yb = sorted((s * W / 2, s * (W / 2 - t)))
-            out.append(_board((x0, ya, z0), (x1, yb, z1 - t + OVERLAP), "wood"))
+            out.append(board((x0, ya, z0), (x1, yb, z1 - t + OVERLAP), "wood"))
         return out
 
     def joints(self, p):
@@ -458,16 +460,16 @@ class ConsoleTable(PartsFactory):
                         else box((D, W, tt), (0, 0, h - tt / 2)), "wood")]
             for s in (-1, 1):
                 ya, yb = sorted((s * (W / 2 - self.INSET), s * (W / 2 - self.INSET - lt)))
-                out.append(_board((-D / 2 + self.INSET, ya, 0.0),
+                out.append(board((-D / 2 + self.INSET, ya, 0.0),
                                   (D / 2 - self.INSET, yb, h - tt + OVERLAP), "wood"))
             if p["lower_shelf"]:
                 yi = W / 2 - self.INSET - lt + OVERLAP
                 zs = p["shelf_height"]
-                out.append(_board((-D / 2 + self.INSET, -yi, zs - 0.018), (D / 2 - self.INSET, yi, zs),
+                out.append(board((-D / 2 + self.INSET, -yi, zs - 0.018), (D / 2 - self.INSET, yi, zs),
                                   "wood"))
             if n == 0:  # a back apron stiffening the ends
                 yi = W / 2 - self.INSET - lt + OVERLAP
-                out.append(_board((-D / 2 + self.INSET, -yi, h - tt - p["apron_height"]),
+                out.append(board((-D / 2 + self.INSET, -yi, h - tt - p["apron_height"]),
                                   (-D / 2 + self.INSET + 0.02, yi, h - tt + OVERLAP), "wood"))
         if n:
             x0, xf, y0, y1 = self._carcass_span(p)
@@ -483,7 +485,7 @@ class ConsoleTable(PartsFactory):
                 for parts, _ in fronts:
                     out += parts
             else:
-                out.append(_board((x0, y0, z0), (D / 2 - 0.005, y1, h - tt + OVERLAP), "front"))
+                out.append(board((x0, y0, z0), (D / 2 - 0.005, y1, h - tt + OVERLAP), "front"))
         return out
 
     def joints(self, p):

@@ -1,8 +1,9 @@
-"""Parts that move and what moves them: handles, knobs, hinged doors, drawers, cabinet fronts, and their hinge or slide motions."""
+"""Parts that move and what moves them: handles, knobs, hinged doors, drawers, cabinet fronts, and
+their hinge or slide motions."""
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -45,7 +46,7 @@ def knob(center: Vec3, radius: float = 0.015, standoff: float = 0.025) -> m3d.Ma
 def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thickness: float,
                 hinge: str, link: str, handle: str = "bar", slot: str = "front",
                 handle_slot: str = "metal", gap: float = MOVING_GAP
-                ) -> tuple[list[Part], "DoorJoint"]:
+                ) -> tuple[list[Part], DoorJoint]:
     """A door leaf covering the opening y0..y1, z0..z1 of a +X-facing front whose face is at
     `front_x`, hinged on its `hinge` side ("left" = low y, "right" = high y, "bottom" = a
     drop-down flap like an oven door, "top" = a lift-up flap). The leaf stands `gap` in front of
@@ -77,7 +78,7 @@ def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thic
 def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: float,
            thickness: float, link: str, board: float = 0.012, handle: str = "bar",
            slot: str = "front", box_slot: str = "wood", handle_slot: str = "metal",
-           gap: float = MOVING_GAP) -> tuple[list[Part], "DoorJoint"]:
+           gap: float = MOVING_GAP) -> tuple[list[Part], DoorJoint]:
     """A drawer for the opening y0..y1, z0..z1 of a +X-facing front at `front_x`: a front panel
     `gap` proud of the face plus an open-topped box `depth` deep that slides inside the opening
     with `gap` clearance all round. Returns its parts (on `link`) and a prismatic joint along +X

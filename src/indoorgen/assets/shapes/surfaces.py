@@ -1,4 +1,5 @@
-"""Named surfaces a generator declares beyond its bounding box: support rectangles and polygons, bottoms, side faces."""
+"""Named surfaces a generator declares beyond its bounding box: support rectangles and polygons,
+bottoms, side faces."""
 from __future__ import annotations
 
 import math
