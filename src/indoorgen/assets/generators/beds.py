@@ -50,7 +50,7 @@ def pillow(x0: float, x1: float, yc: float, width: float, z0: float, height: flo
 def side_drawer(side: int, face: float, x0: float, x1: float, z0: float, z1: float,
                 depth: float, link: str) -> tuple[list[Part], DoorJoint]:
     """A drawer opening sideways (+Y for side=1, -Y for side=-1) from a face at |y| = `face`,
-    for the opening x0..x1, z0..z1: `parts.drawer` built facing +X, turned about Z."""
+    for the opening x0..x1, z0..z1: `shapes.moving_parts.drawer` built facing +X, turned about Z."""
     deg = 90.0 * side
     ly0, ly1 = (-x1, -x0) if side > 0 else (x0, x1)
     parts, motion = drawer(face, ly0, ly1, z0, z1, depth, 0.018, link)

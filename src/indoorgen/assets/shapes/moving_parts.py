@@ -2,6 +2,7 @@
 their hinge or slide motions."""
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -14,9 +15,17 @@ from indoorgen.assets.shapes.primitives import Part, Vec3, box_between, rod
 # --------------------------------------------------------------------------- moving parts
 #: clearance between a moving part and the body it moves against (m)
 MOVING_GAP = 0.002
+#: door / drawer front thickness (m)
+FRONT_T = 0.018
+#: gap left around every front, so neighbouring fronts never touch (m)
+REVEAL = 0.002
+#: how far `bar_handle` and `knob` stand proud of the front they are on (their defaults) (m)
+HANDLE_STANDOFF = {"bar": 0.03, "knob": 0.025}
+#: how far hinged doors open (rad)
+DOOR_OPEN = math.radians(100)
 
 
-def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = 0.03,
+def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = HANDLE_STANDOFF["bar"],
                thickness: float = 0.012) -> m3d.Manifold:
     """A bar handle on a +X-facing front: a bar `length` long (vertical or horizontal) held
     `standoff` proud of the front by two posts; `center` is on the front face. The posts sink
@@ -35,7 +44,7 @@ def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = 0.
     return solid_union([bar] + posts)
 
 
-def knob(center: Vec3, radius: float = 0.015, standoff: float = 0.025) -> m3d.Manifold:
+def knob(center: Vec3, radius: float = 0.015, standoff: float = HANDLE_STANDOFF["knob"]) -> m3d.Manifold:
     """A round knob on a +X-facing front at `center`."""
     cx, cy, cz = (float(c) for c in center)
     stem = rod((cx - 0.001, cy, cz), (cx + standoff * 0.6, cy, cz), radius * 0.45, 12)
@@ -150,9 +159,9 @@ class Front:
     kind: str
 
 
-def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thickness: float = 0.018,
+def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thickness: float = FRONT_T,
                    handle: str = "bar", prefix: str = "", slot: str = "front",
-                   handle_slot: str = "metal", reveal: float = 0.002
+                   handle_slot: str = "metal", reveal: float = REVEAL
                    ) -> list[tuple[list[Part], DoorJoint]]:
     """Doors, flaps and drawers for the `cells` of a +X front at `front_x`, each on its own link
     (`door_0`, `drawer_1`...); each cell is shrunk by `reveal` on every edge so neighbours never
@@ -175,4 +184,4 @@ def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thic
 
 
 #: how far cabinet fronts and their handles stand proud of the carcass (gap + leaf + bar handle)
-FRONT_PROUD = MOVING_GAP + 0.018 + 0.03
+FRONT_PROUD = MOVING_GAP + FRONT_T + HANDLE_STANDOFF["bar"]
