@@ -288,6 +288,7 @@ class Bed(PartsFactory):
         return g["xm1"] - 0.5, g["xm1"] - 0.06
 
     def parts(self, p, detail):
+        """Headboard, frame, bedding and (with `drawers`) the under-bed drawers."""
         g = self._g(p)
         out = self._headboard(p, g, detail) + self._frame(p, g, detail) + self._bedding(p, g, detail)
         if p["drawers"]:
@@ -295,6 +296,7 @@ class Bed(PartsFactory):
         return out
 
     def joints(self, p):
+        """A prismatic joint per under-bed drawer, opening to 80% of its depth."""
         if not p["drawers"]:
             return []
         g = self._g(p)
@@ -302,6 +304,7 @@ class Bed(PartsFactory):
         return [make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth) for _, m in drawers]
 
     def extra_surfaces(self, p):
+        """The bedding's top (`mattress`, clear of the pillows) and a folded blanket's top."""
         g = self._g(p)
         mw, r = g["mw"], g["r"]
         x0 = self._pillows_end(p, g) + 0.03
@@ -365,7 +368,7 @@ class BunkBed(PartsFactory):
                     xi=mw / 2 + CLEAR, yi=ml / 2 + CLEAR)
 
     def _level(self, p, g, zd: float, upper: bool, detail) -> list[Part]:
-        xi, yi, rt, pt = g["xi"], g["yi"], self.RAIL_T, g["pt"]
+        xi, yi, rt = g["xi"], g["yi"], self.RAIL_T
         z0, z1 = zd - 0.05, zd - 0.05 + self.RAIL_H
         if not detail:  # rails, deck, mattress and bedding as one block
             ztop = max(z1, zd + g["mt"] + (0.11 if p["bedding"] else 0.0))
@@ -458,7 +461,7 @@ class BunkBed(PartsFactory):
         return out
 
     def _ladder(self, p, g, detail) -> list[Part]:
-        xi, yi, pt, X = g["xi"], g["yi"], g["pt"], g["X"]
+        xi, yi, X = g["xi"], g["yi"], g["X"]
         ls = g["ls"]
         zl, zu = g["decks"]
         top = zu - 0.05 + self.RAIL_H
@@ -489,13 +492,14 @@ class BunkBed(PartsFactory):
         xs = x_in + d / 2 + run * (1 - rung_zs / top)  # the rungs' axes, along Y
         if detail:
             out += [Part(rod_between((x, ya + sw / 2, z), (x, yb - sw / 2, z), 0.014, True, 12), "wood")
-                    for x, z in zip(xs, rung_zs)]
+                    for x, z in zip(xs, rung_zs, strict=True)]
         else:
             out.append(board((xs.min() - 0.014, ya + sw / 2, rung_zs.min() - 0.014),
                               (xs.max() + 0.014, yb - sw / 2, rung_zs.max() + 0.014), "wood"))
         return out
 
     def parts(self, p, detail):
+        """Four posts, both decks with their mattresses, the ends, the guard rails and the ladder."""
         g = self._g(p)
         X, Y, pt, H = g["X"], g["Y"], g["pt"], g["H"]
         out = []
@@ -509,11 +513,12 @@ class BunkBed(PartsFactory):
         return out + self._ends(p, g, detail) + self._guard(p, g, detail) + self._ladder(p, g, detail)
 
     def extra_surfaces(self, p):
+        """Both mattress tops (`mattress_lower`, `mattress_upper`), clear of any bedding."""
         g = self._g(p)
         mw, ml, mt = g["mw"], g["ml"], g["mt"]
         r = _mattress_r(mt)
         out = []
-        for name, zd in zip(("mattress_lower", "mattress_upper"), g["decks"]):
+        for name, zd in zip(("mattress_lower", "mattress_upper"), g["decks"], strict=True):
             if p["bedding"]:
                 yh = -g["ls"] * (ml / 2 - 0.04) + g["ls"] * 0.42
                 f0, f1 = self._folded_y(g)

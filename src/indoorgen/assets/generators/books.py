@@ -49,6 +49,7 @@ class Book(PartsFactory):
         return min(0.006, p["thickness"] * 0.15) if p["spine_style"] == "rounded" else 0.0
 
     def parts(self, p, detail):
+        """Covers, spine (flat or rounded) and page block; the placeholder is one box."""
         H, D, T = p["height"], p["depth"], p["thickness"]
         ct, pi = p["cover_thickness"], p["page_inset"]
         if not detail:
@@ -59,7 +60,8 @@ class Book(PartsFactory):
         for s in (-1, 1):
             out.append(Part(box_between((-D / 2, min(s * T / 2, s * (T / 2 - ct)), 0.0),
                                         (xs, max(s * T / 2, s * (T / 2 - ct)), H)), "cover"))
-        out.append(Part(box_between((xs - ct, -T / 2 + SMALL_OVERLAP, 0.0), (xs, T / 2 - SMALL_OVERLAP, H)), "cover"))
+        out.append(Part(box_between((xs - ct, -T / 2 + SMALL_OVERLAP, 0.0), (xs, T / 2 - SMALL_OVERLAP, H)),
+                        "cover"))
         if a > 0:
             cyl = m3d.Manifold.cylinder(H, 1.0, -1.0, 32).scale((a, T / 2, 1.0)).translate((xs, 0.0, 0.0))
             out.append(Part(cyl, "cover"))
@@ -68,6 +70,7 @@ class Book(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The footprint of the covers and spine (pages are flush with it) as the bottom."""
         D, T = p["depth"], p["thickness"]
         a = self._spine_bulge(p)
         poly = sg.box(-D / 2, -T / 2, D / 2 - a, T / 2)
@@ -165,9 +168,10 @@ class BookStack(_Books):
         return out
 
     def parts(self, p, detail):
+        """Each book of the stack, laid flat, turned and shifted onto the one below."""
         specs = self._specs(p)
         out = []
-        for s, z in zip(specs, self._bases(specs)):
+        for s, z in zip(specs, self._bases(specs), strict=True):
             H, T = s.params["height"], s.params["thickness"]
 
             def place(m: m3d.Manifold, H=H, T=T, s=s, z=z) -> m3d.Manifold:
@@ -191,6 +195,7 @@ class BookStack(_Books):
         return self._specs(self.resolve(params))[0].params["spine_style"] == "flat"
 
     def extra_surfaces(self, p):
+        """The top book's cover (`top`) and the bottom book's cover (`bottom`)."""
         specs = self._specs(p)
         top = self._bases(specs)[-1] + specs[-1].params["thickness"]
         return [support_polygon("top", (0, 0, top), self._cover(specs[-1], 0.003)),
@@ -227,13 +232,12 @@ class LeaningBooks(_Books):
         last, lean = books[-2], books[-1]
         y1 = sum(b["thickness"] - SINK for b in books[:-1]) + SINK
         h1, h2 = last["height"], lean["height"]
-        if h2 * math.cos(th) >= h1:  # its cover rests on the last book's top corner
-            yp = y1 + h1 * math.tan(th)
-        else:  # its top corner rests on the last book's cover
-            yp = y1 + h2 * math.sin(th)
+        # its cover rests on the last book's top corner, or its top corner on the last one's cover
+        yp = y1 + h1 * math.tan(th) if h2 * math.cos(th) >= h1 else y1 + h2 * math.sin(th)
         return yp - 0.0015, th
 
     def parts(self, p, detail):
+        """The upright books side by side, then the last one leaning back against them."""
         books = self._books(p)
         front = max(b["depth"] for b in books) / 2
         out, y = [], 0.0

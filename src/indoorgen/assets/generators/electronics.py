@@ -49,6 +49,7 @@ class TV(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Panel, glass screen and a pedestal or two feet."""
         W, th, bz = p["screen_width"], p["thickness"], p["bezel"]
         Hs = W * ASPECTS[p["aspect"]] + 2 * bz
         fd, z0 = p["foot_depth"], p["clearance"] + 0.015
@@ -56,7 +57,8 @@ class TV(PartsFactory):
         body = (bevel_box((th, W, Hs), (0, 0, z0 + Hs / 2), min(0.006, th / 3), 1) if detail
                 else box((th, W, Hs), (0, 0, z0 + Hs / 2)))
         out.append(Part(body, "plastic"))
-        glass = box_between((th / 2 - 0.003, -W / 2 + bz, z0 + bz), (th / 2 + 0.001, W / 2 - bz, z0 + Hs - bz))
+        glass = box_between((th / 2 - 0.003, -W / 2 + bz, z0 + bz),
+                            (th / 2 + 0.001, W / 2 - bz, z0 + Hs - bz))
         out.append(Part(glass, "screen"))
         if p["stand_style"] == "pedestal":
             fw = W * p["foot_width_frac"]
@@ -109,7 +111,8 @@ class Laptop(PartsFactory):
         cr = min(p["corner_radius"], 0.45 * lt)
         shell = bevel_box((D, W, lt), (0.0, 0.0, z0 + lt / 2), cr, 2)
         b = p["bezel"]
-        screen = box_between((-D / 2 + b, -W / 2 + b, z0 - 0.0003), (D / 2 - b * 1.6, W / 2 - b, z0 + SMALL_OVERLAP))
+        screen = box_between((-D / 2 + b, -W / 2 + b, z0 - 0.0003),
+                             (D / 2 - b * 1.6, W / 2 - b, z0 + SMALL_OVERLAP))
         if not detail:  # the hull of shell and screen: exact bounds at any opening angle
             return [Part(self._open(m3d.Manifold.batch_hull([shell, screen]), p), "body", "lid")]
         return [Part(self._open(shell, p), "body", "lid"), Part(self._open(screen, p), "screen", "lid")]
@@ -151,15 +154,18 @@ class Laptop(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The base with keyboard and touchpad, and the lid on its `lid` link."""
         return self._base(p, detail) + self._lid(p, detail)
 
     def joints(self, p):
+        """The lid's hinge, from closed to `MAX_ANGLE` (relative to the built angle)."""
         a = math.radians(p["open_angle"])
         return [make_joint("lid_joint", DoorJoint("revolute", np.array([0.0, -1.0, 0.0]),
                                                   self._pivot(p), "lid"),
                            -a, math.radians(self.MAX_ANGLE) - a)]
 
     def extra_surfaces(self, p):
+        """The bevelled base's flat underside as the `bottom`."""
         D, W, cr = p["depth"], p["width"], min(p["corner_radius"], 0.45 * p["base_thickness"])
         # the bevelled base's flat underside, 0.5 mm in from its edge
         return [bottom_rect((0.0, 0.0, 0.0), D / 2 - cr - 0.0005, W / 2 - cr - 0.0005)]
@@ -227,12 +233,14 @@ class Remote(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The tapering body and its buttons (placeholder: one box)."""
         L, w, th = p["length"], p["width"], p["thickness"]
         if not detail:
             return [Part(box_between((-L / 2, -w / 2, 0.0), (L / 2, w / 2, th + self.RAISE)), "plastic")]
         return [Part(self._body(p, True), "plastic")] + self._buttons(p)
 
     def extra_surfaces(self, p):
+        """The flat, tapering underside as the `bottom`."""
         L, w, th = p["length"], p["width"], p["thickness"]
         r = min(p["edge_radius"], 0.45 * th)
         wt = w * p["taper"]

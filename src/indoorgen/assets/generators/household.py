@@ -161,7 +161,7 @@ class Towel(PartsFactory):
         return out
 
     def _rolled(self, p, detail):
-        w, R = p["width"], self._roll_radius(p)
+        w = p["width"]
         out = []
         centres = self._roll_centres(p)
         n_bottom = sum(1 for _, cz in centres if cz == 0.0)
@@ -179,6 +179,7 @@ class Towel(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """A stack of folded towels or rolled towels, by style."""
         return self._folded(p, detail) if p["style"] == "folded" else self._rolled(p, detail)
 
 
@@ -256,6 +257,7 @@ class FoldedClothes(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The folded garments, stacked, with the top one's collar, buttons or hem."""
         out = []
         items = self._items(p)
         for i, it in enumerate(items):
@@ -316,7 +318,10 @@ class Basket(PartsFactory):
         th = np.arange(k) * 2 * math.pi / k
         per = 3
         zs = np.linspace(0.0, H, rows * per + 1)
-        rad = lambda z: rb + (rt - rb) * z / H
+
+        def rad(z: float) -> float:  # the wall's radius at height z
+            return rb + (rt - rb) * z / H
+
         rings = [np.c_[rb * np.cos(th), rb * np.sin(th), np.zeros(k)]]
         for i, z in enumerate(zs[1:-1], start=1):
             row, u = divmod(i, per)
@@ -325,8 +330,8 @@ class Basket(PartsFactory):
             r = rad(z) + bulge * phase
             rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
         lip = wt * (1.6 if p["rim"] else 1.0)
-        for r, z in ((rad(H), H), (rad(H) - lip, H)):
-            rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
+        for r_rim, z in ((rad(H), H), (rad(H) - lip, H)):
+            rings.append(np.c_[r_rim * np.cos(th), r_rim * np.sin(th), np.full(k, z)])
         for z in np.linspace(H - 0.004, self.FLOOR, 4):
             r = rad(z) - wt
             rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
@@ -343,7 +348,10 @@ class Basket(PartsFactory):
         if not detail:
             return [Part(box_between((-Dt / 2, -Wt / 2, 0.0), (Dt / 2, Wt / 2, H)), "wood")]
         out = [Part(box_between((-Db / 2, -Wb / 2, 0.0), (Db / 2, Wb / 2, self.FLOOR)), "wood")]
-        half = lambda D, z: D / 2 + (D * p["flare"] - D) / 2 * z / H
+
+        def half(D: float, z: float) -> float:  # half the flaring wall's width D at height z
+            return D / 2 + (D * p["flare"] - D) / 2 * z / H
+
         pw = 0.018
         for sx in (-1, 1):
             for sy in (-1, 1):
@@ -401,9 +409,9 @@ class Basket(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The woven round shell or slatted rectangular body, and the handles."""
         if p["shape"] == "round":
             rb, rt = self._round_radii(p)
-            H = p["height"]
             if detail:
                 body = [Part(self._round_shell(p), "wood")]
             else:  # a box on the woven wall's exact bounds
@@ -414,6 +422,7 @@ class Basket(PartsFactory):
         return body + self._handles(p, detail)
 
     def extra_surfaces(self, p):
+        """The underside (`bottom`) and the basket floor (`interior_0`)."""
         wt = p["wall_thickness"]
         if p["shape"] == "round":
             rb, _ = self._round_radii(p)
@@ -523,7 +532,8 @@ class StorageBox(PartsFactory):
             (0.0, 0.0, z0))
         parts = [plate]
         if lift:
-            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), sk + SMALL_OVERLAP)
+            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0),
+                                         sk + SMALL_OVERLAP)
             inner = m3d.Manifold.extrude(self._plan(Dl - 2 * wt, Wl - 2 * wt, r + fl + g if r else 0.0),
                                          sk + 0.02).translate((0.0, 0.0, -0.01))
             parts.append((outer - inner).translate((0.0, 0.0, z0 - sk)))
@@ -542,9 +552,11 @@ class StorageBox(PartsFactory):
         return D + 2 * fl + extra, W + 2 * fl + extra, max(wt, 0.004)
 
     def parts(self, p, detail):
+        """The box and its lid (on the `lid` link)."""
         return self._base(p, detail) + self._lid(p, detail)
 
     def joints(self, p):
+        """The lid's motion: lifted straight up, or hinged at the back."""
         Dl, Wl, lt = self._lid_dims(p)
         z0 = self._lid_z(p)
         if p["lid_style"] == "lift_off":
@@ -555,6 +567,7 @@ class StorageBox(PartsFactory):
                            0.0, math.radians(110))]
 
     def extra_surfaces(self, p):
+        """The underside, the lid's `top` and the box floor (`interior_0`)."""
         D, W, sc, r, fl = self._dims(p)
         wt = p["wall_thickness"]
         Dl, Wl, lt = self._lid_dims(p)

@@ -123,10 +123,12 @@ class Leaves:
         return ring, start, pts[:, n]
 
     def solids(self, n: int = 6) -> list[m3d.Manifold]:
+        """One lofted solid per leaf."""
         ring, start, tip = self.rings(n)
         return [loft(ring[i], start[i], tip[i]) for i in range(len(ring))]
 
     def points(self, n: int = 6) -> np.ndarray:
+        """Every vertex of every leaf (for the placeholder's bounding box)."""
         ring, start, tip = self.rings(n)
         return np.vstack([ring.reshape(-1, 3), start, tip])
 
@@ -141,6 +143,7 @@ class Leaves:
                                       np.minimum(self.elevation + 0.15, 1.5), self.elevation)
 
     def points_per_leaf(self, n: int = 6) -> np.ndarray:
+        """The z of each leaf's vertices, one row per leaf."""
         ring, start, tip = self.rings(n)
         return np.concatenate([ring.reshape(len(ring), -1, 3), start[:, None], tip[:, None]],
                               axis=1)[..., 2]
@@ -176,7 +179,7 @@ def stem_points(base, azimuth, elevation, length, droop, u: np.ndarray, n: int =
     return p, d / np.linalg.norm(d, axis=-1, keepdims=True)
 
 
-def _leaf_parts(leaves: "Leaves", build: bool, n: int = 6) -> list[Part]:
+def _leaf_parts(leaves: Leaves, build: bool, n: int = 6) -> list[Part]:
     """The leaves as foliage parts (none when only the placeholder is wanted)."""
     return [Part(s, "foliage") for s in leaves.solids(n)] if build else []
 
@@ -214,21 +217,23 @@ def pot_parts(p: dict[str, Any], detail: bool, z0: float = 0.0) -> list[Part]:
     rs = np.array([pot_radius(p, t) for t in ts])
     if not detail:
         return [Part(cylinder(float(rs.max()), H, (0, 0, z0), 16, circumscribed=True), "ceramic")]
-    outer = [(0.0, z0)] + [(float(r), z0 + float(t) * H) for r, t in zip(rs, ts)]
+    outer = [(0.0, z0)] + [(float(r), z0 + float(t) * H) for r, t in zip(rs, ts, strict=True)]
     # the inner wall at the same heights as the outer one: a constant wall thickness
-    inner = [(float(r) - w, z0 + float(t) * H) for r, t in zip(rs[::-1], ts[::-1]) if t >= t_floor]
+    inner = [(float(r) - w, z0 + float(t) * H) for r, t in zip(rs[::-1], ts[::-1], strict=True)
+             if t >= t_floor]
     pot = lathe(outer + inner + [(0.0, z0 + zs - 0.01)], 48)
     # the soil follows the inner wall 0.8 mm into it, from just under the recess floor to 2 mm
     # above the nominal soil top (the same piecewise-linear profile: it never pokes outside)
     t_lo, t_hi = (zs - 0.011) / H, (zs + 0.002) / H
     tz = np.union1d(ts[(ts > t_lo) & (ts < t_hi)], [t_lo, t_hi])
     rz = np.interp(tz, ts, rs) - w + 0.0008
-    soil = lathe([(0.0, z0 + t_lo * H)] + [(float(r), z0 + float(t) * H) for r, t in zip(rz, tz)]
+    soil = lathe([(0.0, z0 + t_lo * H)] + [(float(r), z0 + float(t) * H) for r, t in zip(rz, tz, strict=True)]
                  + [(0.0, z0 + t_hi * H)], 48)
     return [Part(pot, "ceramic"), Part(soil, "soil")]
 
 
 def pot_foot_radius(p: dict[str, Any]) -> float:
+    """The pot's radius at its base (what it stands on)."""
     return pot_radius(p, 0.0)
 
 
@@ -332,11 +337,13 @@ class PottedPlant(_PlantBase):
         return [Part(lathe(prof, 48), "ceramic")]
 
     def extra_surfaces(self, p):
+        """The pot's foot (or the saucer's, with one) as the `bottom`."""
         r = (pot_foot_radius(p) + 0.03 - 0.012 if p["saucer"] else pot_foot_radius(p)) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 48),
                                 subpart=Subpart.Bottom, up=False)]
 
     def foliage(self, p, z_soil, r_in, build):
+        """A rosette, stemmed branches or a palm's fronds, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "rosette":
             return self._rosette(p, z_soil, build)
@@ -443,6 +450,7 @@ class TabletopPlant(_PlantBase):
     }
 
     def foliage(self, p, z_soil, r_in, build):
+        """A succulent rosette, a ribbed cactus or a leafy plant, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "cactus":
             return self._cactus(p, z_soil, r_in, build)

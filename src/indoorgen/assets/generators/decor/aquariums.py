@@ -74,11 +74,13 @@ class Aquarium(PartsFactory):
         return cabinet_fronts(Ds / 2, cells, Ds - 2 * t)
 
     def joints(self, p):
+        """The stand doors' hinges (none for a tank alone)."""
         if p["style"] != "on_stand":
             return []
         return [make_joint(f"{m.link}_joint", m, 0.0, DOOR_OPEN) for _, m in self._fronts(p)]
 
     def parts(self, p, detail):
+        """Stand (if any), glass tank, gravel, water, trims and the notched lid."""
         L, Dt, z0 = self._dims(p)
         H, g = p["tank_height"], p["glass_thickness"]
         zt = z0 + H
@@ -97,10 +99,12 @@ class Aquarium(PartsFactory):
         # walls, 1 mm above the gravel and 1 mm clear of the back wall: both stay visible through
         # the glass and the gap round the gravel opens to the air (no sealed void)
         zg = z0 + g + p["gravel_depth"]
-        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g + SMALL_OVERLAP, z0 + g - SMALL_OVERLAP),
+        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g + SMALL_OVERLAP,
+                                     z0 + g - SMALL_OVERLAP),
                                     (Dt / 2 - g - SMALL_OVERLAP, L / 2 - g - SMALL_OVERLAP, zg)), "stone"))
         zw = z0 + H * p["water_level"]
-        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g - SMALL_OVERLAP, zg + SMALL_OVERLAP),
+        out.append(Part(box_between((-Dt / 2 + g + SMALL_OVERLAP, -L / 2 + g - SMALL_OVERLAP,
+                                     zg + SMALL_OVERLAP),
                                     (Dt / 2 - g + SMALL_OVERLAP, L / 2 - g + SMALL_OVERLAP, zw)), "water"))
         if tr:
             for za, zb in ((z0, z0 + 0.02), (zt - 0.02, zt)):
@@ -115,6 +119,7 @@ class Aquarium(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The lid's `top` and, on a stand, the cabinet floor behind its doors."""
         L, Dt, z0 = self._dims(p)
         _, lt = self._lid(p)
         x0, x1 = -Dt / 2 + p["glass_thickness"] + 0.04, Dt / 2 - 0.01

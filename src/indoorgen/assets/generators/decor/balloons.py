@@ -22,7 +22,7 @@ def _balloon_profile(R: float, E: float, knot: float, n: int = 14) -> list[tuple
     z = knot * 1.4 + E * R * (1 - np.cos(phi))
     r = R * np.sin(phi) * (0.78 + 0.22 * (1 - np.cos(phi)) / 2)
     pts = [(0.0, 0.0), (knot, 0.3 * knot), (0.9 * knot, knot), (0.5 * knot, knot * 1.45)]
-    pts += [(float(a), float(b)) for a, b in zip(r[1:-1], z[1:-1])]
+    pts += [(float(a), float(b)) for a, b in zip(r[1:-1], z[1:-1], strict=True)]
     pts.append((0.0, float(z[-1])))
     return pts
 
@@ -105,6 +105,7 @@ class Balloon(PartsFactory):
         return knot + (z * d - r * s).min(axis=0), knot + (z * d + r * s).max(axis=0)
 
     def parts(self, p, detail):
+        """The weight, then each balloon with its string (placeholder: their boxes)."""
         wt = self.WEIGHT
         cube = p["weight_style"] == "cube"
         w = (box((wt, wt, wt), (0, 0, wt / 2)) if cube or not detail
@@ -123,6 +124,7 @@ class Balloon(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The weight's underside as the `bottom`."""
         wt = self.WEIGHT
         if p["weight_style"] == "cube":
             poly = sg.box(-wt / 2 + 0.0005, -wt / 2 + 0.0005, wt / 2 - 0.0005, wt / 2 - 0.0005)

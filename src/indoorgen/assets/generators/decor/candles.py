@@ -72,7 +72,8 @@ class Candle(PartsFactory):
         return zt, R - 0.003, zt - 0.4 * p["melt_depth"]
 
     def parts(self, p, detail):
-        st, H, R = p["style"], p["height"], p["radius"]
+        """The candle of its style and, lit, a wick and flame; placeholder: cylinders."""
+        st, H = p["style"], p["height"]
         z_wax, r_wax, z_wick = self._wax_top(p)
         top = max(z_wax, H if st == "jar" else 0.0)
         if p["lit"]:
@@ -147,11 +148,12 @@ class Candle(PartsFactory):
         jar = lathe([(0.0, 0.0), (R, 0.0), (R, H), (R - w, H), (R - w, 0.006), (0.0, 0.006)], 48)
         z_wax, _, _ = self._wax_top(p)
         m = p["melt_depth"]
-        wax = lathe([(0.0, 0.006 - SMALL_OVERLAP), (R - w + 0.0005, 0.006 - SMALL_OVERLAP), (R - w + 0.0005, z_wax),
-                     (0.6 * R, z_wax - 0.4 * m), (0.0, z_wax - 0.4 * m)], 48)
+        wax = lathe([(0.0, 0.006 - SMALL_OVERLAP), (R - w + 0.0005, 0.006 - SMALL_OVERLAP),
+                     (R - w + 0.0005, z_wax), (0.6 * R, z_wax - 0.4 * m), (0.0, z_wax - 0.4 * m)], 48)
         return [Part(jar, "glass"), Part(wax, "wax")]
 
     def extra_surfaces(self, p):
+        """The round underside (pillar, jar, cup or candlestick foot) as the `bottom`."""
         r = self._base_radius(p) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 32),
                                 subpart=Subpart.Bottom, up=False)]

@@ -98,6 +98,7 @@ class WallClock(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Case, recessed dial, markers and hands (placeholder: the case's envelope)."""
         Dm, D, rw = p["diameter"], p["depth"], p["rim_width"]
         R = Dm / 2
         rec = p["dial_recess"]
@@ -127,6 +128,7 @@ class WallClock(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The flat back of the case (round or square) against the wall."""
         R, D = p["diameter"] / 2, p["depth"]
         if p["shape"] == "round":
             poly = sg.Polygon(circle_points(R - 0.001, 64, (0.0, R)))
@@ -157,6 +159,7 @@ class TableClock(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """The clock of its style; the placeholder is the box around it."""
         build = {"alarm": self._alarm, "mantel": self._mantel, "digital": self._digital}[p["style"]]
         out = build(p, True)
         return out if detail else [bbox_part(out, "body")]

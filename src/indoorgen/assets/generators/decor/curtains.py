@@ -85,6 +85,7 @@ class Curtain(PartsFactory):
         return g["zr"] + g["rr"] + 0.03
 
     def parts(self, p, detail):
+        """Wall board, rod with finials and brackets, pleated panels and rings."""
         g = self._geom(p)
         W, rr, xr, zr, xw, fr, ext = g["W"], g["rr"], g["xr"], g["zr"], g["xw"], g["fr"], g["ext"]
         amp, pitch = g["amp"], g["pitch"]
@@ -125,7 +126,7 @@ class Curtain(PartsFactory):
 
     @staticmethod
     def _finial(p, g, s: int) -> m3d.Manifold:
-        rr, xr, zr, fr, y_end = g["rr"], g["xr"], g["zr"], g["fr"], g["W"] / 2 + g["ext"]
+        xr, zr, fr, y_end = g["xr"], g["zr"], g["fr"], g["W"] / 2 + g["ext"]
         y0 = s * (y_end - 0.004)
         if p["finial"] == "ball":
             ball = m3d.Manifold.sphere(fr, 24).translate((xr, s * (y_end + fr - 0.006), zr))
@@ -136,6 +137,7 @@ class Curtain(PartsFactory):
         return lathe(prof, 24).rotate((-90.0 * s, 0.0, 0.0)).translate((xr, y0, zr))
 
     def extra_surfaces(self, p):
+        """The wall board's back against the wall."""
         g = self._geom(p)
         zr, yb = g["zr"], g["W"] / 2 + 0.04
         zb0, zb1 = zr - 0.045, zr + 0.05

@@ -28,7 +28,6 @@ def _framed_mirror(p: dict[str, Any], detail: bool, shape: str, W: float, H: flo
         cs = wall_outline(shape, W, H, 16, circumscribed=True)
         return [Part(yz_extrude(cs, -D / 2, D / 2), "frame")]
     cs = wall_outline(shape, W, H)
-    inner = cs.offset(-fw, m3d.JoinType.Round, 2.0, 64)
     out = [Part(yz_extrude(cs, -D / 2, -D / 2 + bk), "back")]
     steps = {"flat": [(0.0, 0.0, 1.0)], "stepped": [(0.0, 0.0, 0.55), (0.25, 0.15, 1.0)],
              "rounded": [(0.0, 0.0, 0.6), (0.08, 0.08, 0.8), (0.25, 0.25, 0.93), (0.42, 0.42, 1.0)]}
@@ -77,10 +76,12 @@ class Mirror(PartsFactory):
         return W, H
 
     def parts(self, p, detail):
+        """Backing board, frame moulding and recessed glass."""
         W, H = self._dims(p)
         return _framed_mirror(p, detail, p["shape"], W, H, p["frame_depth"])
 
     def extra_surfaces(self, p):
+        """The backing board's outline as the `back` against the wall."""
         W, H = self._dims(p)
         cs = wall_outline(p["shape"], W, H).offset(-0.001, m3d.JoinType.Miter, 2.0)
         return [back_surface(largest_polygon(cs), -p["frame_depth"] / 2)]
@@ -143,8 +144,9 @@ class FloorMirror(PartsFactory):
         return moved, 0.0
 
     def parts(self, p, detail):
+        """The tilted framed panel and its easel leg or cheval posts and feet."""
         out, _ = self._panel(p, detail)
-        W, H, D, t = p["width"], p["height"], p["frame_depth"], math.radians(p["tilt"])
+        W, H, t = p["width"], p["height"], math.radians(p["tilt"])
         style, fd = p["style"], p["foot_depth"]
         if style == "easel":
             # a rear leg from behind the top of the frame down to the floor

@@ -38,6 +38,7 @@ class Rug(PartsFactory):
     }
 
     def outline(self, p) -> m3d.CrossSection:
+        """The rug's plan as a cross-section (rounded rectangle, disc or ellipse)."""
         L = p["length"]
         Wd = min(p["width"], L)
         if p["shape"] == "round":
@@ -51,6 +52,7 @@ class Rug(PartsFactory):
             r, m3d.JoinType.Round, 2.0, 32)
 
     def parts(self, p, detail):
+        """The pile slab and, if wide enough, the raised binding round its edge."""
         cs = self.outline(p)
         th = p["thickness"]
         out = [Part(m3d.Manifold.extrude(cs, th), "rug")]
@@ -65,6 +67,7 @@ class Rug(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The whole footprint as the `bottom`."""
         polys = self.outline(p).to_polygons()
         poly = sg.Polygon(np.asarray(polys[0], float)).buffer(-0.0005, join_style="mitre")
         return [support_polygon("bottom", (0, 0, 0), poly, subpart=Subpart.Bottom, up=False)]
@@ -95,6 +98,7 @@ class RoundRug(PartsFactory):
         return p["aspect"] if p["shape"] == "oval" else 1.0
 
     def parts(self, p, detail):
+        """Lathed pile with braid grooves, and a bound edge or a tassel fringe."""
         R, t, sx = p["diameter"] / 2, p["thickness"], self._sx(p)
         bound, fringe = p["edge"] == "bound", p["edge"] == "fringe"
         top = t + (0.002 if bound else 0.0)
@@ -134,6 +138,7 @@ class RoundRug(PartsFactory):
         return m3d.Manifold.extrude(gear, 0.003).translate((0.0, 0.0, 0.001))
 
     def extra_surfaces(self, p):
+        """The pile's round or oval footprint as the `bottom`."""
         R, sx = p["diameter"] / 2 - 0.0005, self._sx(p)
         poly = circle_polygon(R, 96)
         poly = sg.Polygon(np.asarray(poly.exterior.coords)[:-1] * np.array([sx, 1.0]))

@@ -20,7 +20,10 @@ def vase_radius(p, t: float) -> float:
     """Outer radius of the vase at fraction t of its height (0 = base, 1 = rim)."""
     R, foot, neck, belly = p["max_radius"], p["foot_frac"], p["neck_frac"], p["belly_frac"]
     shape = p["shape"]
-    smooth = lambda a, b, u: a + (b - a) * (0.5 - 0.5 * math.cos(math.pi * min(max(u, 0.0), 1.0)))
+
+    def smooth(a: float, b: float, u: float) -> float:  # a to b along a half cosine, u in [0, 1]
+        return a + (b - a) * (0.5 - 0.5 * math.cos(math.pi * min(max(u, 0.0), 1.0)))
+
     if shape == "cylinder":
         r = R * (foot + (1 - foot) * min(t / 0.05, 1.0)) if t < 0.05 else R
     elif shape == "cone":
@@ -62,11 +65,12 @@ class Vase(PartsFactory):
     N_FINE = 24
 
     def parts(self, p, detail):
+        """The hollow lathed vessel (placeholder: a solid envelope of its outer profile)."""
         H, w, b = p["height"], p["wall_thickness"], p["base_thickness"]
         ts = np.linspace(0.0, 1.0, self.N_FINE)
         rs = np.array([vase_radius(p, t) for t in ts])
         if detail:
-            outer = [(0.0, 0.0)] + [(r, t * H) for r, t in zip(rs, ts)]
+            outer = [(0.0, 0.0)] + [(r, t * H) for r, t in zip(rs, ts, strict=True)]
             zi = np.linspace(b, H, self.N_FINE)
             inner = [(vase_radius(p, z / H) - w, z) for z in zi[::-1]]
             return [Part(lathe(outer + inner + [(0.0, b)], 48), "ceramic")]
@@ -80,6 +84,7 @@ class Vase(PartsFactory):
         return [Part(lathe([(0.0, 0.0)] + env + [(0.0, H)], 16, circumscribed=True), "ceramic")]
 
     def extra_surfaces(self, p):
+        """The round foot as the `bottom`."""
         r0 = vase_radius(p, 0.0)
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r0 * 0.995, 48),
                                 subpart=Subpart.Bottom, up=False)]

@@ -34,6 +34,7 @@ class WallArt(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """A canvas block, or backing board, frame, mat and recessed print."""
         W, H, D = p["width"], p["height"], p["depth"]
         if p["style"] == "canvas":
             return [Part(box((D, W, H), (0, 0, H / 2)), "canvas")]
@@ -91,6 +92,7 @@ class CanvasArt(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """One bevelled block per panel and the wood behind the grooves joining them."""
         D, r = p["depth"], p["edge_radius"]
         panels = self._panels(p)
         out = []
@@ -98,12 +100,14 @@ class CanvasArt(PartsFactory):
             ext, c = (D, y1 - y0, z1 - z0), (0.0, (y0 + y1) / 2, (z0 + z1) / 2)
             out.append(Part(bevel_box(ext, c, r, 2) if detail else box(ext, c), "canvas"))
         xb = -D / 2 + D * (1.0 - p["groove_depth"])
-        for (_, a1, za0, za1), (b0, _, zb0, zb1) in zip(panels, panels[1:]):
+        for (_, a1, za0, za1), (b0, _, zb0, zb1) in zip(panels, panels[1:], strict=False):
             z0, z1 = max(za0, zb0) + r, min(za1, zb1) - r
-            out.append(Part(box_between((-D / 2, a1 - SMALL_OVERLAP - r, z0), (xb, b0 + SMALL_OVERLAP + r, z1)), "wood"))
+            groove = box_between((-D / 2, a1 - SMALL_OVERLAP - r, z0), (xb, b0 + SMALL_OVERLAP + r, z1))
+            out.append(Part(groove, "wood"))
         return out
 
     def extra_surfaces(self, p):
+        """The rectangle all panels cover at the back, against the wall."""
         D, r = p["depth"], p["edge_radius"]
         panels = self._panels(p)
         z0 = max(q[2] for q in panels) + r + 0.002

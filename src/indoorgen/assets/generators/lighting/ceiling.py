@@ -54,9 +54,11 @@ class CeilingLight(PartsFactory):
         return getattr(self, f"_{p['style']}")(p, k)
 
     def parts(self, p, detail):
+        """The fixture of its style (placeholder: the boxes of its groups)."""
         return build_groups(self._groups(p, FINE if detail else CHEAP)[0], detail)
 
     def extra_surfaces(self, p):
+        """The canopy's or base's `top`, against the ceiling."""
         return [self._groups(p, None)[2]]
 
     # ---- styles: each returns (groups of parts, overall height, top surface); with k=None
@@ -67,8 +69,9 @@ class CeilingLight(PartsFactory):
         Rd = R - 0.01
         rf = 0.3 * Rd
         us = np.linspace(0.0, 1.0, 10)
-        prof = [(0.0, 0.0)] + [(rf + (Rd - rf) * math.sin(u * math.pi / 2), h * (1 - math.cos(u * math.pi / 2)))
-                               for u in us] + [(Rd, h + OVERLAP), (0.0, h + OVERLAP)]
+        prof = [(0.0, 0.0)] + [(rf + (Rd - rf) * math.sin(u * math.pi / 2),
+                                h * (1 - math.cos(u * math.pi / 2))) for u in us] + \
+            [(Rd, h + OVERLAP), (0.0, h + OVERLAP)]
         H = h + self.CANOPY_H
         if k is None:
             return [], H, top_disc(R, H)
@@ -92,14 +95,16 @@ class CeilingLight(PartsFactory):
         hub = [Part(k.disc(0.03, zh, 0.015, n=24), "metal")]
         for i in range(3):
             a = 2 * math.pi * i / 3 + math.pi / 2
-            hub.append(Part(k.rod((0.0, 0.0, bh - 0.008), ((R - th / 2) * math.cos(a), (R - th / 2) * math.sin(a),
-                                                         bh - 0.008), 0.003, 8), "metal"))
+            rim = ((R - th / 2) * math.cos(a), (R - th / 2) * math.sin(a), bh - 0.008)
+            hub.append(Part(k.rod((0.0, 0.0, bh - 0.008), rim, 0.003, 8), "metal"))
         rb = max(0.012, min(0.035, (bh - 0.015 - 0.025 - 0.02) / 2.3))
         zs = zh - 0.025
         hub.append(Part(k.disc(0.015, zs, 0.025 + OVERLAP, n=16), "metal"))
-        hub.append(Part(k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, zs + OVERLAP)), "emissive"))
+        hub.append(Part(k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, zs + OVERLAP)),
+                        "emissive"))
         top = [Part(k.disc(cr, H - self.CANOPY_H, self.CANOPY_H), "metal"),
-               Part(k.rod((0.0, 0.0, bh - OVERLAP), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.008, 12), "metal")]
+               Part(k.rod((0.0, 0.0, bh - OVERLAP), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.008, 12),
+                    "metal")]
         return [shade, hub, top], H, top_disc(cr, H)
 
     def _panel(self, p, k: Kit | None):
@@ -108,7 +113,8 @@ class CeilingLight(PartsFactory):
         lens, inset = 0.003, 0.012
         body_slot = "metal" if p["trim"] else "plastic"
         if k is None:
-            top = top_disc(R, lens + pt) if p["shape"] == "round" else top_rect(R - 0.001, R - 0.001, lens + pt)
+            top = (top_disc(R, lens + pt) if p["shape"] == "round"
+                   else top_rect(R - 0.001, R - 0.001, lens + pt))
             return [], lens + pt, top
         if p["shape"] == "round":
             body = k.disc(R, lens, pt)
@@ -146,10 +152,11 @@ class CeilingLight(PartsFactory):
             roots = centres
             top = top_rect(0.034, R - 0.001, H)
         groups = [[Part(plate, slot)]]
-        for (x, y), (xr, yr) in zip(centres, roots):
+        for (x, y), (xr, yr) in zip(centres, roots, strict=True):
             groups.append([Part(k.disc(rc, lens, can_l, x, y, 24), slot),
                            Part(k.disc(rc - 0.006, 0.0, lens + OVERLAP, x, y, 24), "emissive"),
-                           Part(k.rod((x, y, lens + can_l - 0.01), (xr, yr, z_plate + OVERLAP), 0.006, 8), slot)])
+                           Part(k.rod((x, y, lens + can_l - 0.01), (xr, yr, z_plate + OVERLAP), 0.006, 8),
+                                slot)])
         return groups, H, top
 
     def _chandelier(self, p, k: Kit | None):
@@ -168,7 +175,8 @@ class CeilingLight(PartsFactory):
         if k is None:
             return [], H, top_disc(cr, H)
         groups = [[Part(k.lathe(col, 24), "metal"),
-                   Part(k.rod((0.0, 0.0, z_col1), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.007, 12), "metal"),
+                   Part(k.rod((0.0, 0.0, z_col1), (0.0, 0.0, H - self.CANOPY_H + OVERLAP), 0.007, 12),
+                        "metal"),
                    Part(k.disc(cr, H - self.CANOPY_H, self.CANOPY_H), "metal")]]
         za = fin + 0.3 * ch
         Ra = R - 0.028
@@ -181,7 +189,7 @@ class CeilingLight(PartsFactory):
             c, s = math.cos(ang), math.sin(ang)
             pts = np.array([(q[0] * c, q[0] * s, q[1]) for q in curve])
             if k.detail:
-                arm = [Part(k.rod(q0, q1, 0.006, 8), "metal") for q0, q1 in zip(pts, pts[1:])]
+                arm = [Part(k.rod(q0, q1, 0.006, 8), "metal") for q0, q1 in zip(pts, pts[1:], strict=False)]
             else:  # the curved arm's box (the rods' boxes stay within 6 mm of its points)
                 arm = [Part(box_between(pts.min(axis=0) - 0.006, pts.max(axis=0) + 0.006), "metal")]
             x, y, z = pts[-1]
@@ -263,7 +271,8 @@ class PendantLight(PartsFactory):
             out.append(Part(k.rod((x, y, rw), (x, y, sh - rw), rw, 6), "metal"))
         for i in range(4):
             a = 2 * math.pi * i / 4 + math.pi / 4
-            out.append(Part(k.rod((0.0, 0.0, sh - rw), (rr * math.cos(a), rr * math.sin(a), sh - rw), rw, 6), "metal"))
+            out.append(Part(k.rod((0.0, 0.0, sh - rw), (rr * math.cos(a), rr * math.sin(a), sh - rw), rw, 6),
+                            "metal"))
         return out
 
     def _heights(self, p) -> tuple[float, float]:
@@ -274,6 +283,7 @@ class PendantLight(PartsFactory):
         return sh, sh + self.CAP_H + p["drop"] + self.CANOPY_H
 
     def parts(self, p, detail):
+        """Shade, cap and bulb, the cord or rod, and the ceiling canopy."""
         k = FINE if detail else CHEAP
         zs, H = self._heights(p)
         cr = p["canopy_radius"]
@@ -283,8 +293,8 @@ class PendantLight(PartsFactory):
             rb = self._bulb_r(p)
             z_sock = z_cap - 0.03
             fitting.append(Part(k.disc(0.014, z_sock, 0.03 + OVERLAP, n=16), "metal"))
-            fitting.append(Part(k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, z_sock + OVERLAP)),
-                                "emissive"))
+            bulb = k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, z_sock + OVERLAP))
+            fitting.append(Part(bulb, "emissive"))
         r_stem = 0.003 if p["stem"] == "cord" else 0.007
         top = [Part(k.rod((0.0, 0.0, z_cap + self.CAP_H - OVERLAP), (0.0, 0.0, H - self.CANOPY_H + OVERLAP),
                         r_stem, 8), "metal" if p["stem"] == "rod" else "plastic"),
@@ -292,4 +302,5 @@ class PendantLight(PartsFactory):
         return build_groups([self._shade_parts(p, k) + fitting, top[:1], top[1:]], detail)
 
     def extra_surfaces(self, p):
+        """The canopy's `top`, against the ceiling."""
         return [top_disc(p["canopy_radius"], self._heights(p)[1])]

@@ -70,6 +70,7 @@ class FloorLamp(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Base disc, pole, shade on three spokes, socket and bulb."""
         H, br, bh = p["height"], p["base_radius"], p["base_height"]
         pr, sh, st = p["pole_radius"], p["shade_height"], p["shade_thickness"]
         z_s0 = H - sh
@@ -101,6 +102,7 @@ class FloorLamp(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The base disc's underside as the `bottom`."""
         br = p["base_radius"]
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(br * 0.995, 48),
                                 subpart=Subpart.Bottom, up=False)]
@@ -162,7 +164,7 @@ class DeskLamp(PartsFactory):
             for t in np.linspace(0.0, math.pi / 2, 7)[1:]:
                 pts.append(pts[1] + np.array([rc * (1 - math.cos(t)), 0.0, rc * math.sin(t)]))
             pts.append(pts[-1] + np.array([reach - rc, 0.0, 0.0]))
-            for a, c in zip(pts, pts[1:]):
+            for a, c in zip(pts, pts[1:], strict=False):
                 out.append(Part(k.rod(a, c, 0.006, 8), "metal"))
                 out.append(Part(k.sphere(0.006, 8).translate(tuple(c)), "metal"))
             Q = pts[-1]
@@ -199,7 +201,8 @@ class DeskLamp(PartsFactory):
         z_sock = -th - 0.03  # the socket reaches into the cup's back, the neck starts inside it
         local = [(cup, "shade"),
                  (k.cylinder(0.011, 0.03 + th / 2, (0.0, 0.0, z_sock), 16), "metal"),
-                 (k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, z_sock + OVERLAP)), "emissive"),
+                 (k.bulb(0.0, rb).mirror((0.0, 0.0, 1.0)).translate((0.0, 0.0, z_sock + OVERLAP)),
+                  "emissive"),
                  (k.cylinder(0.0065, neck + OVERLAP + th / 2, (0.0, 0.0, -th / 2), 12), "metal")]
         beta = p["head_angle"] - 90.0
         d = np.array([math.cos(math.radians(p["head_angle"])), 0.0, -math.sin(math.radians(p["head_angle"]))])
@@ -216,6 +219,7 @@ class DeskLamp(PartsFactory):
         return Part(box_between((-b / 2, -b / 2, 0.0), (b / 2, b / 2, self.BASE_H)), "metal")
 
     def parts(self, p, detail):
+        """Base, arm and fork, and the head on its `head` link."""
         k = FINE if detail else CHEAP
         P, _, arm = self._pivot(p, k)
         head = self._head(p, P, k if detail else CHEAP_ROUND)  # rotated: boxes would grow
@@ -226,11 +230,13 @@ class DeskLamp(PartsFactory):
                 aabb_part(arm), aabb_part(head)]
 
     def joints(self, p):
+        """The head's tilt about the fork's pivot, +-`HEAD_TILT`."""
         P, _, _ = self._pivot(p)
         return [make_joint("head_joint", DoorJoint("revolute", np.array([0.0, 1.0, 0.0]), P, "head"),
                            -HEAD_TILT, HEAD_TILT)]
 
     def extra_surfaces(self, p):
+        """The base's underside as the `bottom`."""
         b = p["base_size"]
         poly = (circle_polygon(0.998 * b / 2, 48) if p["base_shape"] == "round"
                 else sg.box(-b / 2 + 0.0005, -b / 2 + 0.0005, b / 2 - 0.0005, b / 2 - 0.0005))
@@ -239,7 +245,10 @@ class DeskLamp(PartsFactory):
 
 def _base_radius(shape: str, R: float, t: float) -> float:
     """Lamp base radius at fraction t of its height (0 = foot, 1 = top)."""
-    bump = lambda c, w: math.exp(-((t - c) / w) ** 2)
+
+    def bump(c: float, w: float) -> float:  # a Gaussian bump of width w centred on t = c
+        return math.exp(-((t - c) / w) ** 2)
+
     if shape == "cylinder":
         return R
     if shape == "column":
@@ -284,6 +293,7 @@ class TableLamp(PartsFactory):
         return [(Rt + (Rb - Rt) * (1 - t) ** 2, z0 + t * sh) for t in ts]
 
     def parts(self, p, detail):
+        """Ceramic base, neck, socket, bulb, harp and shade on its spider."""
         k = FINE if detail else CHEAP
         hb, R, shape = p["base_height"], p["base_radius"], p["base_shape"]
         o = OVERLAP
@@ -315,10 +325,11 @@ class TableLamp(PartsFactory):
         r_sp = outer[-1][0] + (outer[-2][0] - outer[-1][0]) * 0.012 / (outer[-1][1] - outer[-2][1]) - th / 2
         for i in range(3):
             a = 2 * math.pi * i / 3 + math.pi / 2
-            shade.append(Part(k.rod((0.0, 0.0, z_h), (r_sp * math.cos(a), r_sp * math.sin(a), z_h), 0.0025, 8),
-                              "metal"))
+            spoke = k.rod((0.0, 0.0, z_h), (r_sp * math.cos(a), r_sp * math.sin(a), z_h), 0.0025, 8)
+            shade.append(Part(spoke, "metal"))
         return build_groups([base, fit, shade], detail)
 
     def extra_surfaces(self, p):
+        """The base's round foot as the `bottom`."""
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(0.995 * self._foot_r(p), 48),
                                 subpart=Subpart.Bottom, up=False)]

@@ -72,8 +72,8 @@ class WallSconce(PartsFactory):
             th = 0.004
             zb = z + 0.008 - o
             us = np.linspace(0.0, 1.0, 8)
-            outer = [(0.3 * R + 0.7 * R * math.sin(u * math.pi / 2), zb + sh * (1 - math.cos(u * math.pi / 2)))
-                     for u in us]
+            outer = [(0.3 * R + 0.7 * R * math.sin(u * math.pi / 2),
+                      zb + sh * (1 - math.cos(u * math.pi / 2))) for u in us]
             prof = [(0.0, zb)] + outer + [(R - th, outer[-1][1])] + \
                 [(max(r - th, 0.001), zz + th) for r, zz in reversed(outer[:-1])] + [(0.0, zb + th)]
             rb = min(0.03, 0.4 * R)
@@ -94,14 +94,15 @@ class WallSconce(PartsFactory):
         out.append(Part(k.rod((x, 0.0, z + 0.04), (x, 0.0, hub + 0.004), 0.003, 8), "metal"))
         for i in range(3):
             a = 2 * math.pi * i / 3
-            out.append(Part(k.rod((x, 0.0, hub), (x + r_sp * math.cos(a), r_sp * math.sin(a), z_sp), 0.0025, 8),
-                            "metal"))
+            spoke = k.rod((x, 0.0, hub), (x + r_sp * math.cos(a), r_sp * math.sin(a), z_sp), 0.0025, 8)
+            out.append(Part(spoke, "metal"))
         return out
 
     def _zp(self, p) -> float:
         return 0.1  # plate centre height in the design frame (recentred later)
 
     def parts(self, p, detail):
+        """Wall plate, arm and the fixture at its end (placeholder: one box each)."""
         k = FINE if detail else CHEAP
         zc = self._zp(p)
         reach, rise = p["reach"], p["arm_rise"]
@@ -115,6 +116,7 @@ class WallSconce(PartsFactory):
         return build_groups([plate, arm, fixture], detail)
 
     def extra_surfaces(self, p):
+        """The wall plate's outline as the `back`, against the wall."""
         s, zc = p["plate_size"], self._zp(p)
         if p["plate_shape"] == "round":
             poly = circle_polygon(0.99 * s / 2, 32)

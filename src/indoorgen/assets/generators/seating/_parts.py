@@ -10,11 +10,11 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.protocol import Surface
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between
+from indoorgen.assets.shapes.primitives import Part, Vec3, bevel_box, box_between
 from indoorgen.assets.shapes.surfaces import support_polygon
 
 
-def post(bottom: Sequence[float], top: Sequence[float], r_bottom: float,
+def post(bottom: Vec3, top: Vec3, r_bottom: float,
          r_top: float | None = None, sections: int = 16, circumscribed: bool = False,
          square: bool = False) -> m3d.Manifold:
     """A straight or slanted leg from point `bottom` to point `top` whose horizontal sections

@@ -3,11 +3,11 @@ cantilever, moulded shell) and padded upholstered chairs. Front (+X) is where on
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 
 import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
+from numpy.typing import ArrayLike
 
 from indoorgen.assets.generators.seating._parts import (
     bevel_points,
@@ -47,7 +47,7 @@ from indoorgen.assets.shapes.sweeps import (
 from indoorgen.model.tags import Semantics as S
 
 
-def thick_polyline(center: Sequence[Sequence[float]], thickness: float) -> np.ndarray:
+def thick_polyline(center: ArrayLike, thickness: float) -> np.ndarray:
     """The outline (a closed 2D polygon) of a band `thickness` wide around a 2D polyline."""
     c = np.asarray(center, float)
     seg = unit_rows(np.diff(c, axis=0))
@@ -95,6 +95,7 @@ class DiningChair(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Seat, legs, back posts and slats (or rails, or a panel), optional stretchers."""
         sw, sd, sh, st = p["seat_width"], p["seat_depth"], p["seat_height"], p["seat_thickness"]
         lt, bh = p["leg_thickness"], p["back_height"]
         z_seat0 = sh - st
@@ -151,6 +152,7 @@ class DiningChair(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The seat between the back posts and the front edge."""
         sd, sw, sh, lt = p["seat_depth"], p["seat_width"], p["seat_height"], p["leg_thickness"]
         x0, x1 = -sd / 2 + lt + 0.01, sd / 2 - 0.02
         return [support_rect("seat", ((x0 + x1) / 2, 0, sh), (x1 - x0) / 2, sw / 2 - 0.02)]
@@ -192,6 +194,7 @@ class SideChair(PartsFactory):
         return sd, sw, min(p["seat_roundness"], 0.5 * min(sd, sw) - 0.001)
 
     def parts(self, p, detail):
+        """The chair of its family (Windsor, bentwood, cantilever or shell)."""
         return getattr(self, "_" + p["style"])(p, detail)
 
     def _windsor(self, p, detail):
@@ -227,7 +230,7 @@ class SideChair(PartsFactory):
         radii = np.full(n + 2, 0.0065)
         radii[[0, -1]] = 0.011  # thicker end spindles
         if detail:
-            out += [Part(tube([a, b], r, 10), "wood") for a, b, r in zip(feet, tops, radii)]
+            out += [Part(tube([a, b], r, 10), "wood") for a, b, r in zip(feet, tops, radii, strict=True)]
             out.append(Part(tube(crest, 0.02, 12), "wood"))
         else:
             out.append(Part(_spindle_back_box(crest, 0.02, feet, tops, radii), "wood"))
@@ -258,8 +261,8 @@ class SideChair(PartsFactory):
                 zh + hoop_r * math.sin(a)) for a in arc]
         path = ([(xb + sfx, -yb - sfy, 0.0), (xb + sfx, -yb - sfy, 0.03), (xb, -yb, sh)] + top
                 + [(xb, yb, sh), (xb + sfx, yb + sfy, 0.03), (xb + sfx, yb + sfy, 0.0)])
-        path = fillet_path(dedupe_points(path), 0.05, 4)
-        out += [Part(s, "wood") for s in ([tube(path, r, 12)] if detail else tube_boxes(path, r, 8))]
+        bent = fillet_path(dedupe_points(path), 0.05, 4)
+        out += [Part(s, "wood") for s in ([tube(bent, r, 12)] if detail else tube_boxes(bent, r, 8))]
         # a ring between the legs
         zr = 0.2
         ring_r = math.hypot(*leg_point(ax_f[0], zr)[:2])
@@ -277,7 +280,7 @@ class SideChair(PartsFactory):
         if detail:
             out.append(Part(tube(rail, r * 0.6, 10), "wood"))
             out += [Part(tube([(xs0, y, zr0), (xb - k * (z - sh), y, z)], r * 0.45, 8), "wood")
-                    for y, z in zip(ys, zy)]
+                    for y, z in zip(ys, zy, strict=True)]
         else:
             pts = np.vstack([rail, np.c_[xb - k * (zy - sh), ys, zy]])
             out.append(Part(points_box(pts, r * 0.6), "wood"))
@@ -358,6 +361,7 @@ class SideChair(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The seat's plan in front of the back, inset from its edge."""
         sd, sw, rc = self._seat_plan(p)
         style, sh = p["style"], p["seat_height"]
         plan = rounded_rect_polygon(sd, sw, rc, 0.02)
@@ -417,6 +421,7 @@ class UpholsteredChair(PartsFactory):
     ARM_H = 0.20  # arm top above the seat (m)
 
     def parts(self, p, detail):
+        """Padded seat, back (plain, channels or wings), arms and legs."""
         sd, sw, sh, st = p["seat_depth"], p["seat_width"], p["seat_height"], p["seat_thickness"]
         bh, bt, tilt, cr = p["back_height"], p["back_thickness"], p["back_tilt"], p["corner_radius"]
         z0 = sh - st
@@ -445,7 +450,8 @@ class UpholsteredChair(PartsFactory):
             wings = [((0.24, 0.07, ztop - zw0), (-sd / 2 + 0.12, s * (sw / 2 - 0.035), (zw0 + ztop) / 2),
                       min(cr, 0.03), 2) for s in (-1, 1)]
         if detail:
-            out += [Part(soft_sheared(*b[:3], z0, tilt, True, b[3]), "upholstery") for b in back + wings]
+            out += [Part(soft_sheared(b[0], b[1], b[2], z0, tilt, True, b[3]), "upholstery")
+                    for b in back + wings]
         else:  # boxes around the leaning back and each wing: see `soft_sheared`
             pts = np.vstack([bevel_points(*b) for b in back])
             out.append(Part(points_box(shear_points(pts, z0, tilt), 0.0), "upholstery"))
@@ -476,6 +482,7 @@ class UpholsteredChair(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The padded seat in front of the back, inset from its rounded edge."""
         sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
         m = min(p["corner_radius"], p["seat_thickness"] / 3) + 0.01
         x0, x1 = -sd / 2 + p["back_thickness"] + 0.01, sd / 2 - m

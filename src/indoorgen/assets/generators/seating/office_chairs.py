@@ -6,6 +6,7 @@ import math
 
 import manifold3d as m3d
 import numpy as np
+from numpy.typing import ArrayLike
 
 from indoorgen.assets.generators.seating._parts import (
     bevel_points,
@@ -77,7 +78,7 @@ class OfficeChair(PartsFactory):
                             for sy in (-1, 1) for z in zs])
             c, sc = d * (R + 0.02), d * R  # wheel centre, swivel stem
             if not detail:  # the box around arm, wheel, hood and stem, from their corners
-                pts = [arm]
+                pts: list[ArrayLike] = [arm]
                 for ht, hd, zs in ((cr, 0.0225, (0.0, 2 * cr)), (0.88 * cr, 0.025, (cr, 2 * cr + 0.012))):
                     pts.append([c + a * t + b * d + (0, 0, z) for a in (-ht, ht) for b in (-hd, hd)
                                 for z in zs])
@@ -169,13 +170,16 @@ class OfficeChair(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """The five-star base, then everything on the swivel."""
         return self._base(p, detail) + self._seat(p, detail)
 
     def joints(self, p):
+        """The seat's swivel about the column, a full turn."""
         return [Joint("swivel", "revolute", np.array([0.0, 0.0, 1.0]), np.zeros(3), -math.pi,
                       math.pi, "seat")]
 
     def extra_surfaces(self, p):
+        """The seat cushion's top."""
         sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
         m = min(0.03, p["seat_thickness"] / 3) + 0.01
         return [support_rect("seat", (self.SEAT_X, 0, sh), sd / 2 - m, sw / 2 - m)]

@@ -65,7 +65,8 @@ def upholstered_parts(p: dict[str, Any], detail: bool, n_cushions: int) -> list[
     return out
 
 
-def _upholstered_params(width, depth, height, arm_width, back) -> dict[str, Param]:
+def _upholstered_params(width: tuple[float, float], depth: tuple[float, float], height: tuple[float, float],
+                        arm_width: tuple[float, float], back: tuple[float, float]) -> dict[str, Param]:
     return {
         "width": Param(*width, doc="Y extent including arms (m)"),
         "depth": Param(*depth, doc="X extent (m)"),
@@ -97,6 +98,7 @@ class Sofa(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Base, arms, back and `n_cushions` seat and back cushions."""
         return upholstered_parts(p, detail, int(p["n_cushions"]))
 
 
@@ -111,6 +113,7 @@ class Armchair(PartsFactory):
     params = _upholstered_params((0.7, 1.0), (0.75, 0.9), (0.75, 1.0), (0.08, 0.2), (0.12, 0.2))
 
     def parts(self, p, detail):
+        """Base, arms, back and one seat and back cushion."""
         return upholstered_parts(p, detail, 1)
 
 
@@ -161,6 +164,7 @@ class SofaLShaped(PartsFactory):
                     s=1.0 if p["chaise_side"] == "left" else -1.0)
 
     def parts(self, p, detail):
+        """Base, arm, back, seat and back cushions and legs or a plinth."""
         g = self._geom(p)
         s, cr = g["s"], p["corner_radius"]
         x0, xd, L, W = g["x0"], g["xd"], g["L"], g["W"]
@@ -213,6 +217,7 @@ class SofaLShaped(PartsFactory):
         return [(y0 + i * w - OVERLAP, y0 + (i + 1) * w + OVERLAP) for i in range(n)]
 
     def extra_surfaces(self, p):
+        """Each seat cushion's top (`seat_i`) and the chaise's (`chaise`)."""
         g = self._geom(p)
         s, m = g["s"], g["r"] + 0.01
         xs0 = g["x0"] + g["bt"] + g["bct"] + 0.01

@@ -18,7 +18,7 @@ from indoorgen.assets.generators.seating._parts import (
     splay_legs,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import (
@@ -48,12 +48,12 @@ def soft_disc(radius: float, z0: float, z1: float, top_edge: float, bottom_edge:
     prof = [(0.0, z0)]
     if e0 > 1e-4:
         a = np.linspace(-math.pi / 2, 0.0, 5)
-        prof += list(zip(radius - e0 + e0 * np.cos(a), z0 + e0 + e0 * np.sin(a)))
+        prof += list(zip(radius - e0 + e0 * np.cos(a), z0 + e0 + e0 * np.sin(a), strict=True))
     else:
         prof.append((radius, z0))
     if e1 > 1e-4:
         a = np.linspace(0.0, math.pi / 2, 5)
-        prof += list(zip(radius - e1 + e1 * np.cos(a), z1 - e1 + e1 * np.sin(a)))
+        prof += list(zip(radius - e1 + e1 * np.cos(a), z1 - e1 + e1 * np.sin(a), strict=True))
     else:
         prof.append((radius, z1))
     prof.append((0.0, z1))
@@ -192,13 +192,13 @@ class BarStool(_SeatBaseBack):
                    for a in np.linspace(math.pi - a0, math.pi + a0, 9)]
             path = ([(rb * math.cos(math.pi - a0), rb * math.sin(math.pi - a0), z0 + 0.005)] + arc
                     + [(rb * math.cos(math.pi + a0), rb * math.sin(math.pi + a0), z0 + 0.005)])
-            path = fillet_path(path, 0.04, 4)
+            bent = fillet_path(path, 0.04, 4)
             zm = sh + 0.5 * bh
             mid = [(rb * math.cos(a) - k * 0.5 * bh, rb * math.sin(a), zm)
                    for a in np.linspace(math.pi - a0, math.pi + a0, 9)]
             if detail:
-                return [Part(tube(path, 0.011, 12), "metal"), Part(tube(mid, 0.008, 10), "metal")]
-            return [Part(b, "metal") for b in tube_boxes(path, 0.011, 3)]
+                return [Part(tube(bent, 0.011, 12), "metal"), Part(tube(mid, 0.008, 10), "metal")]
+            return [Part(b, "metal") for b in tube_boxes(bent, 0.011, 3)]
         out = []
         yp = R - 0.06
         for s in (-1, 1):
@@ -211,6 +211,7 @@ class BarStool(_SeatBaseBack):
         return out
 
     def extra_surfaces(self, p):
+        """The seat's plan, in front of the back if there is one."""
         S, sh = p["seat_size"], p["seat_height"]
         R = S / 2
         if p["seat_shape"] == "round":
@@ -275,6 +276,7 @@ class Stool(PartsFactory):
         return Part(bevel_box((S, S, z1 - z0), (0, 0, (z0 + z1) / 2), max(edge, 0.003), 2), slot)
 
     def parts(self, p, detail):
+        """A legged stool, an ottoman on feet or a pouf, with any tufting buttons."""
         style, S, h = p["style"], p["size"], p["height"]
         cr, lt = p["corner_radius"], p["leg_thickness"]
         R = S / 2
@@ -315,7 +317,7 @@ class Stool(PartsFactory):
             if p["shape"] == "round":
                 t = np.linspace(0.0, math.pi, 17)
                 prof = [(0.0, 0.0)] + list(zip(R * (0.8 + 0.2 * np.sin(t)),
-                                               h * (1 - np.cos(t)) / 2)) + [(0.0, h)]
+                                               h * (1 - np.cos(t)) / 2, strict=True)) + [(0.0, h)]
                 out.append(Part(lathe(prof, 48) if detail else
                                 cylinder(R, h, (0, 0, 0), 16, circumscribed=True), "upholstery"))
             else:
@@ -330,6 +332,7 @@ class Stool(PartsFactory):
         return min(0.3 * min(p["size"], p["height"]), 2 * p["corner_radius"] + 0.03)
 
     def extra_surfaces(self, p):
+        """The top inset from its rounded edge, minus the tufting buttons."""
         style, S, h, cr = p["style"], p["size"], p["height"], p["corner_radius"]
         R = S / 2
         if style == "pouf":
@@ -475,13 +478,14 @@ class Bench(_SeatBaseBack):
         return out
 
     def extra_surfaces(self, p):
+        """The seat (`seat`), or each slat's top (`seat_i`), in front of any back."""
         d, L, sh = p["depth"], p["length"], p["seat_height"]
         x_back = -d / 2 + 0.08 if p["back"] else -d / 2
         if p["style"] != "slatted":
             m = 0.03 if p["style"] == "upholstered" else 0.01
             x0, x1 = max(x_back, -d / 2 + m), d / 2 - m
             return [support_rect("seat", ((x0 + x1) / 2, 0, sh), (x1 - x0) / 2, L / 2 - m)]
-        out = []
+        out: list[Surface] = []
         for x0, x1 in self._slats(p):
             x0, x1 = max(x0 + 0.005, x_back), x1 - 0.005
             if x1 - x0 > 0.02:

@@ -233,8 +233,8 @@ def case_body(case: Case, detail: bool, x_front: float) -> list[Part]:
     if detail or any(row.kind == "open" for row, _, _ in case.rows):
         out = [Part(b, "back" if i == 3 else "wood") for i, b in enumerate(case.boards)]
         return out if detail else out + _case_blocks(case, x_front)
-    return [Part(box_between((-case.D / 2, -case.W / 2, case.z_bot), (x_front, case.W / 2, case.z_top + OVERLAP)),
-                 "front")]
+    return [Part(box_between((-case.D / 2, -case.W / 2, case.z_bot),
+                             (x_front, case.W / 2, case.z_top + OVERLAP)), "front")]
 
 
 def front_proud(handle: str) -> float:

@@ -50,6 +50,7 @@ class TVStand(PartsFactory):
     }
 
     def bottom_is_solid(self, params):
+        """Whether it stands on a plinth (its footprint rests on mesh)."""
         return self.resolve(params)["base_style"] == "plinth"
 
     def _cells(self, p) -> tuple[list[Front], list[float]]:
@@ -81,6 +82,7 @@ class TVStand(PartsFactory):
         return cabinet_fronts(p["depth"] / 2, cells, depth)
 
     def parts(self, p, detail):
+        """Carcass, top, fronts (placeholder: one block) and a plinth or legs."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         zb = p["base_height"]
         _, dividers = self._cells(p)
@@ -104,11 +106,13 @@ class TVStand(PartsFactory):
         return out
 
     def joints(self, p):
+        """The doors' hinges and the drawers' slides."""
         return [make_joint(f"{m.link}_joint", m, 0.0, DOOR_OPEN) if m.kind == "revolute"
                 else make_joint(f"{m.link}_joint", m, 0.0, 0.8 * (p["depth"] - p["board_thickness"] - 0.02))
                 for _, m in self._fronts(p)]
 
     def extra_surfaces(self, p):
+        """The `top` (for the TV), the carcass footprint and its back."""
         W, D, H, zb = p["width"], p["depth"], p["height"], p["base_height"]
         z0 = 0.0 if p["base_style"] == "plinth" else zb
         return [support_rect("top", (0, 0, H), D / 2 - 0.02, W / 2 - 0.02),
@@ -147,6 +151,7 @@ class Cabinet(CaseFactory):
         return 1 if p["width"] < 0.5 else int(p["n_doors"])
 
     def layout(self, p):
+        """A door row (and a drawer row on top with `drawer_row`) over the base."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
         nd = self._n_doors(p)
@@ -166,9 +171,11 @@ class Cabinet(CaseFactory):
         return [shelf_board(case, yi0, yi1, z) for z in self._shelves(p, case)]
 
     def parts(self, p, detail):
+        """The case, its shelves and fronts, top board and base."""
         return self._topped_case(p, detail, p["base_height"])
 
     def extra_surfaces(self, p):
+        """The `top`, the footprint, the back and the compartment floor and shelves."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]
         yi0, yi1 = case.inner()
@@ -215,6 +222,7 @@ class Dresser(CaseFactory):
     }
 
     def layout(self, p):
+        """Rows of drawers, as many as stay at least 11 cm high, graduated or not."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
         inner = z_top - p["base_height"] - t
@@ -230,9 +238,11 @@ class Dresser(CaseFactory):
                             overlay=p["fit"] == "overlay")
 
     def parts(self, p, detail):
+        """The case and its drawers, top board and base."""
         return self._topped_case(p, detail, p["base_height"])
 
     def extra_surfaces(self, p):
+        """The `top`, the footprint and the back."""
         W, D, H = p["width"], p["depth"], p["height"]
         return [top_surface(D, W, H, p["top_overhang"]),
                 base_bottom(D, W, p["base_style"]),
@@ -285,13 +295,16 @@ class Nightstand(CaseFactory):
         return rows
 
     def layout(self, p):
+        """The rows of the chosen layout (three drawers become two in a low case)."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         return case_layout(W, D, t, 0.005, self._zb(p), H - t, self._rows(p), overlay=True)
 
     def parts(self, p, detail):
+        """The case and its fronts, top board and legs or plinth."""
         return self._topped_case(p, detail, self._zb(p), leg=0.032)
 
     def extra_surfaces(self, p):
+        """The `top`, footprint, back, open shelf floors and a door compartment's floor."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]
         out = [top_surface(D, W, H, p["top_overhang"]),

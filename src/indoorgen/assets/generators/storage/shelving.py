@@ -60,6 +60,7 @@ class Bookcase(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Top, back, plinth, sides and shelf boards."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         bt, sb = p["back_thickness"], p["shelf_setback"]
         k, clear, z_b = bookcase_levels(p)
@@ -80,6 +81,7 @@ class Bookcase(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The `top` and each shelf level (`shelf_i`)."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         bt, sb = p["back_thickness"], p["shelf_setback"]
         k, clear, z_b = bookcase_levels(p)
@@ -117,6 +119,7 @@ class CellShelf(PartsFactory):
     }
 
     def bottom_is_solid(self, params):
+        """Whether it stands on its frame or a plinth (not on legs)."""
         return self.resolve(params)["base_style"] != "legs"
 
     def _dims(self, p) -> tuple[float, float, float, float]:
@@ -136,6 +139,7 @@ class CellShelf(PartsFactory):
         return y0, y0 + c, zb + to + r * (c + ti)
 
     def parts(self, p, detail):
+        """The frame with its cells cut out (placeholder: its boards), back and base."""
         D, to, ti = p["depth"], p["outer_thickness"], p["inner_thickness"]
         W, Hf, zb, bp = self._dims(p)
         nr, nc = int(p["n_rows"]), int(p["n_cols"])
@@ -159,8 +163,8 @@ class CellShelf(PartsFactory):
                 y = self._cell(p, 0, k)[0]
                 out.append(Part(box_between((-d2, y - ti, zb + to - o), (d2, y, H - to + o)), "wood"))
         if bp and not detail:
-            out.append(Part(box_between((-d2, -w2 + to - o, zb + to - o), (-d2 + bp, w2 - to + o, H - to + o)),
-                            "back"))
+            out.append(Part(box_between((-d2, -w2 + to - o, zb + to - o),
+                                        (-d2 + bp, w2 - to + o, H - to + o)), "back"))
         if p["base_style"] == "plinth":
             out.append(Part(box_between((-d2, -w2 + 0.01, 0.0), (d2 - 0.03, w2 - 0.01, zb + o)), "wood"))
         elif p["base_style"] == "legs":
@@ -170,6 +174,7 @@ class CellShelf(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The `top` and every cell floor (`cell_<row>_<col>`)."""
         D = p["depth"]
         W, Hf, zb, bp = self._dims(p)
         out = [support_rect("top", (0, 0, zb + Hf), D / 2 - 0.02, W / 2 - 0.02)]
@@ -232,6 +237,7 @@ class WallShelf(PartsFactory):
         return -D / 2 + self.BACK - OVERLAP
 
     def parts(self, p, detail):
+        """The boards and their back panel, side boards or brackets and track."""
         W, D = p["width"], p["depth"]
         bt, st = self._bt(p), p["style"]
         zs = self._levels(p)
@@ -242,10 +248,8 @@ class WallShelf(PartsFactory):
         out = []
         y_end = w2 - bt if st == "boxed" else w2
         for i, z in enumerate(zs):
-            if st == "boxed" and i in (0, len(zs) - 1):
-                y_a = w2
-            else:
-                y_a = y_end + (o if st == "boxed" else 0.0)
+            boxed_end = st == "boxed" and i in (0, len(zs) - 1)  # a box's bottom and top: full width
+            y_a = w2 if boxed_end else y_end + (o if st == "boxed" else 0.0)
             lo, hi = np.array([xb, -y_a, z - bt]), np.array([d2, y_a, z])
             out.append(Part(bevel_box(hi - lo, (lo + hi) / 2, r, 2) if r > 1e-4 else box_between(lo, hi),
                             "wood"))
@@ -290,6 +294,7 @@ class WallShelf(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """Every board top (`shelf_i`) and the flat `back` on the wall."""
         W, D, st = p["width"], p["depth"], p["style"]
         bt = self._bt(p)
         zs = self._levels(p)
@@ -379,6 +384,7 @@ class CornerShelf(PartsFactory):
         return sg.polygon.orient(sg.Polygon(xy), 1.0)
 
     def parts(self, p, detail):
+        """Two wall panels and the shelves, with aprons if asked."""
         R, bt, tp = p["size"], p["board_thickness"], p["panel_thickness"]
         H = self._levels(p)[-1]
         o = OVERLAP
@@ -398,6 +404,7 @@ class CornerShelf(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """Every shelf top (`shelf_i`), inset from its outline."""
         poly = self._shelf_polygon(p).buffer(-0.015, join_style="mitre")
         poly = sg.Polygon(np.asarray(poly.exterior.coords))
         return [support_polygon(f"shelf_{i}", (0, 0, z), poly) for i, z in enumerate(self._levels(p))]
@@ -444,6 +451,7 @@ class ShoeRack(PartsFactory):
         return [(float(x), float(x) + sw) for x in xs]
 
     def parts(self, p, detail):
+        """Side panels or corner posts and the tiers (slats cut from one board)."""
         D, W, ft = p["depth"], p["width"], p["frame_thickness"]
         zs = self._levels(p)
         H = zs[-1]
@@ -475,9 +483,10 @@ class ShoeRack(PartsFactory):
         """(x0, x1, y0, y1) of the gaps between the slats of a slatted tier."""
         yi = self._inner(p)
         sl = self._slats(p)
-        return [(a[1], b[0], -yi + self.RAIL, yi - self.RAIL) for a, b in zip(sl, sl[1:])]
+        return [(a[1], b[0], -yi + self.RAIL, yi - self.RAIL) for a, b in zip(sl, sl[1:], strict=False)]
 
     def extra_surfaces(self, p):
+        """Every tier top (`tier_i`), the gaps between slats as holes."""
         D = p["depth"]
         yi = self._inner(p)
         m = 0.005

@@ -82,6 +82,7 @@ class Wardrobe(CaseFactory):
         return None
 
     def layout(self, p):
+        """Drawer rows at the bottom and the door zone above, split by any divider."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
         nr = int(p["drawer_rows"])
@@ -136,6 +137,7 @@ class Wardrobe(CaseFactory):
                      "metal")]
 
     def fronts(self, p):
+        """Hinged doors and drawers, or the drawers and two sliding doors."""
         case = self.layout(p)
         if not self._sliding(p):
             return super().fronts(p)
@@ -143,9 +145,10 @@ class Wardrobe(CaseFactory):
         return drawers + self._sliding_doors(p, case)
 
     def joints(self, p):
+        """Sliding doors slide, drawers pull out, hinged doors swing."""
         case = self.layout(p)
         out = []
-        for parts, m in self.fronts(p):
+        for _, m in self.fronts(p):
             if m.kind == "prismatic" and m.link.startswith("door"):
                 out.append(make_joint(f"{m.link}_joint", m, 0.0, 0.9 * (p["width"] / 2 - SLIDE_OVERLAP)))
             elif m.kind == "prismatic":
@@ -186,6 +189,7 @@ class Wardrobe(CaseFactory):
         return out
 
     def parts(self, p, detail):
+        """Case, top, base, and in detail rails, shelves, tracks and fronts."""
         case = self.layout(p)
         W, D = p["width"], p["depth"]
         sliding = self._sliding(p)
@@ -194,8 +198,8 @@ class Wardrobe(CaseFactory):
             proud = max(proud, self._slide_proud())
         out = case_body(case, detail, D / 2 + proud)
         over = self._track_depth() if sliding else 0.0
-        out.append(Part(box_between((-D / 2, -W / 2, case.z_top - OVERLAP), (D / 2 + over, W / 2, p["height"])),
-                        "wood"))
+        out.append(Part(box_between((-D / 2, -W / 2, case.z_top - OVERLAP),
+                                    (D / 2 + over, W / 2, p["height"])), "wood"))
         out += case_base(D, W, p["base_height"], p["base_style"], detail)
         if detail:
             out += self._interior_parts(p, case)
@@ -205,6 +209,7 @@ class Wardrobe(CaseFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The `top`, footprint, back and every interior floor and shelf."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]
         over = self._track_depth() if self._sliding(p) else 0.0

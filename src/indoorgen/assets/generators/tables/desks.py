@@ -108,6 +108,7 @@ class Desk(PartsFactory):
         return out
 
     def parts(self, p, detail):
+        """Top, pedestals or legs with aprons, panels, drawers and the hutch."""
         W, D, h, tt = p["width"], p["depth"], p["height"], p["top_thickness"]
         t, lt = self.BOARD, p["leg_thickness"]
         z_under = h - tt
@@ -177,9 +178,11 @@ class Desk(PartsFactory):
         return out
 
     def joints(self, p):
+        """A prismatic joint per drawer, opening to 80% of its depth."""
         return [make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth) for (_, m), depth in self._fronts(p)]
 
     def extra_surfaces(self, p):
+        """The `top` (in front of any hutch), the front edge `side_0`, the hutch top."""
         W, D, h = p["width"], p["depth"], p["height"]
         x0 = -D / 2 + (self._hutch_depth(p) + 0.01 if p["hutch"] else 0.02)
         x1 = D / 2 - 0.02

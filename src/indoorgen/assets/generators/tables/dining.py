@@ -46,9 +46,11 @@ class DiningTableRect(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Top, legs, apron and optional stretchers."""
         return rect_table_parts(p, detail, p["depth"], p["length"], apron=True)
 
     def extra_surfaces(self, p):
+        """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["length"])
 
 
@@ -77,6 +79,7 @@ class DiningTableRound(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """The round top and a pedestal or 3-4 legs with a ring apron."""
         r, h, tt = p["radius"], p["height"], p["top_thickness"]
         er = p["edge_radius"]
         n = 64 if detail else 16
@@ -122,6 +125,7 @@ class DiningTableRound(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The round `top` and `n_sides` chair facets."""
         r, h = p["radius"], p["height"]
         return [support_polygon("top", (0, 0, h), circle_polygon(r - 0.02, 64)),
                 *polygon_side_surfaces(r, int(p["n_sides"]), h)]
@@ -143,7 +147,7 @@ def oval_outline(shape: str, a: float, b: float, n: int = 720) -> tuple[np.ndarr
     pts, nrm = np.empty((n, 2)), np.empty((n, 2))
     segs = [c, np.pi * a, 2 * c, np.pi * a, c]
     edges = np.cumsum([0.0] + segs)
-    for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+    for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:], strict=False)):
         m = (s >= lo) & (s < hi)
         u = s[m] - lo
         if i == 0:
@@ -247,6 +251,7 @@ class DiningTableOval(PartsFactory):
                               circumscribed=c), "wood")]
 
     def parts(self, p, detail):
+        """The oval top and one or two pedestals, or four legs with an oval apron."""
         a, b = p["width"] / 2, p["length"] / 2
         h, tt = p["height"], p["top_thickness"]
         out = [Part(self._top(p, detail), "wood")]
@@ -278,6 +283,7 @@ class DiningTableOval(PartsFactory):
         return out
 
     def extra_surfaces(self, p):
+        """The `top` and the facets tangent to its edge."""
         a, b, h, er = p["width"] / 2, p["length"] / 2, p["height"], p["edge_radius"]
         if p["top_shape"] == "stadium":
             plan = rounded_rect_polygon(2 * a, 2 * b, a, 0.02)

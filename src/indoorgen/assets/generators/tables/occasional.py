@@ -40,9 +40,11 @@ class CoffeeTable(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Top, legs, optional apron and lower shelf."""
         return rect_table_parts(p, detail, p["depth"], p["length"], apron=p["apron"])
 
     def extra_surfaces(self, p):
+        """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["length"])
 
 
@@ -66,9 +68,11 @@ class SideTable(PartsFactory):
     }
 
     def parts(self, p, detail):
+        """Top, legs, optional apron and lower shelf."""
         return rect_table_parts(p, detail, p["depth"], p["width"], apron=p["apron"])
 
     def extra_surfaces(self, p):
+        """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["width"])
 
 
@@ -134,6 +138,7 @@ class ConsoleTable(PartsFactory):
                 "shelf_height": p["shelf_height"], "stretchers": False}
 
     def parts(self, p, detail):
+        """Top on legs or slab ends, lower shelf, and the apron with its drawers."""
         D, W, h, tt = p["depth"], p["width"], p["height"], p["top_thickness"]
         lt, t = p["leg_thickness"], self.BOARD
         n = int(p["n_drawers"])
@@ -174,10 +179,12 @@ class ConsoleTable(PartsFactory):
         return out
 
     def joints(self, p):
+        """A prismatic joint per apron drawer."""
         fronts, depth = self._fronts(p)
         return _drawer_joints(fronts, depth)
 
     def extra_surfaces(self, p):
+        """The `top` and the lower `shelf`."""
         D, W, h, lt = p["depth"], p["width"], p["height"], p["leg_thickness"]
         out = [support_rect("top", (0, 0, h), D / 2 - 0.02, W / 2 - 0.02)]
         if p["lower_shelf"]:
