@@ -1,8 +1,18 @@
 """Convex collision pieces keep out of the spaces moving parts occupy (a drawer in its carcass,
-a lid's skirt in its pot), so a simulator can open them."""
+a lid's skirt in its pot) and of the open space over covered shelves, so a simulator can open
+them and what stands on a shelf stays put."""
 from __future__ import annotations
 
-from indoorgen.assets.shapes.collision import convex_pieces
+import numpy as np
+import pytest
+
+from indoorgen.assets.shapes.collision import (
+    SWALLOW_MARGIN,
+    SWALLOW_VOLUME,
+    carve_around,
+    convex_pieces,
+    free_space_above,
+)
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder
 
 
@@ -50,3 +60,28 @@ def test_small_moving_parts_are_left_to_contact_margins():
         cylinder(0.031, 0.012, (0, 0, 0.09), sections=32)
     body, moving = _pieces([Part(jar, "glass"), Part(cap, "metal", "lid")])
     assert len(body) == 1 and len(moving) == 1
+
+
+def test_carve_around_keeps_hulls_clear_of_the_box():
+    """A U-shaped part whose hull would swallow the drawer space is cut along the box's faces."""
+    u_part = box_between((0.0, 0.0, 0.0), (0.5, 0.5, 0.5)) - box_between((0.1, 0.1, 0.1), (0.6, 0.4, 0.4))
+    space = [0.1, 0.1, 0.1, 0.6, 0.4, 0.4]
+    assert (u_part.hull() ^ box_between(space[:3], space[3:])).volume() > 0.01
+    pieces = carve_around([u_part], [space])
+    assert len(pieces) > 1
+    inner = box_between(np.add(space[:3], SWALLOW_MARGIN), np.subtract(space[3:], SWALLOW_MARGIN))
+    for p in pieces:
+        assert (p.hull() ^ inner).volume() <= SWALLOW_VOLUME
+    assert sum(p.volume() for p in pieces) == pytest.approx(u_part.volume(), rel=1e-9)
+
+
+def test_carve_around_leaves_what_is_clear_alone():
+    post = box_between((1.0, 1.0, 0.0), (1.1, 1.1, 1.0))
+    assert carve_around([post], [[0.0, 0.0, 0.0, 0.5, 0.5, 0.5]]) == [post]
+
+
+def test_free_space_above_a_covered_shelf_only():
+    board = box_between((-0.2, -0.3, 0.6), (0.2, 0.3, 0.62))
+    box = free_space_above([board], (-0.2, -0.3, 0.2, 0.3), 0.3, 1.0)
+    assert box is not None and box[2] == pytest.approx(0.301) and box[5] == pytest.approx(0.599)
+    assert free_space_above([board], (-0.2, -0.3, 0.2, 0.3), 0.61, 1.0) is None  # open above
