@@ -164,6 +164,15 @@ def assert_furniture_tags(name: str, must: set, must_not: set) -> None:
     assert f.size_class == "large"
 
 
+def assert_objects_tagged(names) -> None:
+    """Each generator is an Object, and a small one a SmallObject."""
+    for name in names:
+        f = get_factory(name)
+        assert Semantics.Object in f.tags
+        if f.size_class == "small":
+            assert Semantics.SmallObject in f.tags, name
+
+
 def choice_cases(names) -> list[tuple]:
     """(generator, param, value) for every choice and both values of every flag of `names`:
     random seeds need not reach every style."""

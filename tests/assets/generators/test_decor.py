@@ -10,6 +10,7 @@ from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import (
     TOL,
     assert_clean_variant,
+    assert_objects_tagged,
     build,
     choice_cases,
     slot_faces,
@@ -30,11 +31,7 @@ def test_every_style_builds_one_clean_shell_per_link(name, key, value):
 
 
 def test_registered_with_tags():
-    for name in DECOR:
-        f = get_factory(name)
-        assert Semantics.Object in f.tags
-        if f.size_class == "small":
-            assert Semantics.SmallObject in f.tags, name
+    assert_objects_tagged(DECOR)
     for name in WALL:
         assert Semantics.WallMounted in get_factory(name).tags
 

@@ -7,7 +7,15 @@ import pytest
 
 from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics, Subpart
-from support.assetcheck import TOL, assert_clean_variant, build, choice_cases, surface_gap, variant
+from support.assetcheck import (
+    TOL,
+    assert_clean_variant,
+    assert_objects_tagged,
+    build,
+    choice_cases,
+    surface_gap,
+    variant,
+)
 
 HOUSEHOLD = ["towel", "folded_clothes", "basket", "storage_box"]
 SEEDS = range(5)
@@ -19,11 +27,7 @@ def test_every_style_builds_one_clean_shell_per_link(name, key, value):
 
 
 def test_registered_with_tags():
-    for name in HOUSEHOLD:
-        f = get_factory(name)
-        assert Semantics.Object in f.tags
-        if f.size_class == "small":
-            assert Semantics.SmallObject in f.tags, name
+    assert_objects_tagged(HOUSEHOLD)
     assert {Semantics.Textile, Semantics.Towel} <= get_factory("towel").tags
     assert {Semantics.Container, Semantics.Basket} <= get_factory("basket").tags
 

@@ -6,7 +6,15 @@ import pytest
 
 from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics
-from support.assetcheck import assert_clean_variant, build, choice_cases, slot_faces, slot_mesh, variant
+from support.assetcheck import (
+    assert_clean_variant,
+    assert_objects_tagged,
+    build,
+    choice_cases,
+    slot_faces,
+    slot_mesh,
+    variant,
+)
 
 PLANTS = ["potted_plant", "tabletop_plant"]
 SEEDS = range(5)
@@ -18,11 +26,7 @@ def test_every_style_builds_one_clean_shell_per_link(name, key, value):
 
 
 def test_registered_with_tags():
-    for name in PLANTS:
-        f = get_factory(name)
-        assert Semantics.Object in f.tags
-        if f.size_class == "small":
-            assert Semantics.SmallObject in f.tags, name
+    assert_objects_tagged(PLANTS)
     assert {Semantics.Plant, Semantics.PottedPlant} <= get_factory("potted_plant").tags
 
 
