@@ -13,6 +13,7 @@ import numpy as np
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, scale_value, solid
+from indoorgen.assets.materials.textile import weave
 from indoorgen.assets.protocol import Param
 
 F32 = np.float32
@@ -141,7 +142,6 @@ class BookCover(MaterialGenerator):
         c = jitter(rgb(BOOK_COLORS[p["color"]]), rng, 0.01, 0.06, 0.05)
         u, v = nz.grid(res)
         if p["binding"] == "cloth":
-            from indoorgen.assets.materials.textile import weave
             wv = weave(res, 96, 96, "plain")
             fb = nz.spectral_noise(res, rng, knee=res / 5, beta=0.8)
             col = modulate(c, (0.8 + 0.2 * wv.height) * (1 + 0.04 * fb))
