@@ -17,6 +17,7 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 import trimesh
+from numpy.typing import ArrayLike
 
 from indoorgen.errors import ParameterError
 from indoorgen.model.tags import Semantics, Subpart
@@ -98,7 +99,8 @@ class Surface:
         return v
 
     @staticmethod
-    def rect(name: str, subpart: Subpart, center, normal, u, half_u: float, half_v: float) -> Surface:
+    def rect(name: str, subpart: Subpart, center: ArrayLike, normal: ArrayLike, u: ArrayLike,
+             half_u: float, half_v: float) -> Surface:
         """A rectangle centred on `center`, extending +-half_u along u and +-half_v along v."""
         return Surface(name, subpart, np.asarray(center, float), _unit(normal), _unit(u),
                        shapely.box(-half_u, -half_v, half_u, half_v))

@@ -14,7 +14,7 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer
@@ -287,7 +287,7 @@ class Bed(PartsFactory):
     def _folded_x(self, g) -> tuple[float, float]:
         return g["xm1"] - 0.5, g["xm1"] - 0.06
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Headboard, frame, bedding and (with `drawers`) the under-bed drawers."""
         g = self._g(p)
         out = self._headboard(p, g, detail) + self._frame(p, g, detail) + self._bedding(p, g, detail)
@@ -295,7 +295,7 @@ class Bed(PartsFactory):
             out += self._storage(p, g, detail)
         return out
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """A prismatic joint per under-bed drawer, opening to 80% of its depth."""
         if not p["drawers"]:
             return []
@@ -303,7 +303,7 @@ class Bed(PartsFactory):
         drawers, depth = self._drawers(p, g)
         return [make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth) for _, m in drawers]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The bedding's top (`mattress`, clear of the pillows) and a folded blanket's top."""
         g = self._g(p)
         mw, r = g["mw"], g["r"]
@@ -498,7 +498,7 @@ class BunkBed(PartsFactory):
                               (xs.max() + 0.014, yb - sw / 2, rung_zs.max() + 0.014), "wood"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Four posts, both decks with their mattresses, the ends, the guard rails and the ladder."""
         g = self._g(p)
         X, Y, pt, H = g["X"], g["Y"], g["pt"], g["H"]
@@ -512,7 +512,7 @@ class BunkBed(PartsFactory):
             out += self._level(p, g, zd, i == 1, detail)
         return out + self._ends(p, g, detail) + self._guard(p, g, detail) + self._ladder(p, g, detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Both mattress tops (`mattress_lower`, `mattress_upper`), clear of any bedding."""
         g = self._g(p)
         mw, ml, mt = g["mw"], g["ml"], g["mt"]

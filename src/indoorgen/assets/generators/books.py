@@ -18,7 +18,7 @@ import shapely.affinity as sa
 import shapely.geometry as sg
 
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, box, box_between
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -48,7 +48,7 @@ class Book(PartsFactory):
     def _spine_bulge(self, p) -> float:
         return min(0.006, p["thickness"] * 0.15) if p["spine_style"] == "rounded" else 0.0
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Covers, spine (flat or rounded) and page block; the placeholder is one box."""
         H, D, T = p["height"], p["depth"], p["thickness"]
         ct, pi = p["cover_thickness"], p["page_inset"]
@@ -69,7 +69,7 @@ class Book(PartsFactory):
                                     (xs - ct + SMALL_OVERLAP, T / 2 - ct + SMALL_OVERLAP, H - pi)), "pages"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The footprint of the covers and spine (pages are flush with it) as the bottom."""
         D, T = p["depth"], p["thickness"]
         a = self._spine_bulge(p)
@@ -167,7 +167,7 @@ class BookStack(_Books):
             z += s.params["thickness"] - SINK
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Each book of the stack, laid flat, turned and shifted onto the one below."""
         specs = self._specs(p)
         out = []
@@ -190,11 +190,11 @@ class BookStack(_Books):
         poly = sg.box(-d2 + margin, -h2 + margin, d2 - cut - margin, h2 - margin)
         return sa.translate(sa.rotate(poly, s.yaw, origin=(0, 0)), *s.offset)
 
-    def bottom_is_solid(self, params):
+    def bottom_is_solid(self, params: dict[str, Any]) -> bool:
         """A flat-spined bottom book rests on its whole cover; a rounded spine lifts its edge."""
         return self._specs(self.resolve(params))[0].params["spine_style"] == "flat"
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The top book's cover (`top`) and the bottom book's cover (`bottom`)."""
         specs = self._specs(p)
         top = self._bases(specs)[-1] + specs[-1].params["thickness"]
@@ -236,7 +236,7 @@ class LeaningBooks(_Books):
         yp = y1 + h1 * math.tan(th) if h2 * math.cos(th) >= h1 else y1 + h2 * math.sin(th)
         return yp - 0.0015, th
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The upright books side by side, then the last one leaning back against them."""
         books = self._books(p)
         front = max(b["depth"] for b in books) / 2

@@ -2,13 +2,14 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
 from indoorgen.assets.shapes.primitives import (
@@ -48,7 +49,7 @@ class TV(PartsFactory):
         "clearance": Param(0.03, 0.1, doc="gap between the stand's base and the panel (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Panel, glass screen and a pedestal or two feet."""
         W, th, bz = p["screen_width"], p["thickness"], p["bezel"]
         Hs = W * ASPECTS[p["aspect"]] + 2 * bz
@@ -153,18 +154,18 @@ class Laptop(PartsFactory):
         out.append(Part(m3d.Manifold.compose(keys), "plastic"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The base with keyboard and touchpad, and the lid on its `lid` link."""
         return self._base(p, detail) + self._lid(p, detail)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The lid's hinge, from closed to `MAX_ANGLE` (relative to the built angle)."""
         a = math.radians(p["open_angle"])
         return [make_joint("lid_joint", DoorJoint("revolute", np.array([0.0, -1.0, 0.0]),
                                                   self._pivot(p), "lid"),
                            -a, math.radians(self.MAX_ANGLE) - a)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The bevelled base's flat underside as the `bottom`."""
         D, W, cr = p["depth"], p["width"], min(p["corner_radius"], 0.45 * p["base_thickness"])
         # the bevelled base's flat underside, 0.5 mm in from its edge
@@ -232,14 +233,14 @@ class Remote(PartsFactory):
                 out.append(Part(b, "rubber"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The tapering body and its buttons (placeholder: one box)."""
         L, w, th = p["length"], p["width"], p["thickness"]
         if not detail:
             return [Part(box_between((-L / 2, -w / 2, 0.0), (L / 2, w / 2, th + self.RAISE)), "plastic")]
         return [Part(self._body(p, True), "plastic")] + self._buttons(p)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The flat, tapering underside as the `bottom`."""
         L, w, th = p["length"], p["width"], p["thickness"]
         r = min(p["edge_radius"], 0.45 * th)

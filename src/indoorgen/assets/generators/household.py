@@ -15,7 +15,7 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Joint, Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
 from indoorgen.assets.shapes.outlines import ccw, largest_polygon
@@ -178,7 +178,7 @@ class Towel(PartsFactory):
             out.append(Part(_xz_extrude(cs, -w / 2, w / 2).translate((cx, 0.0, cz)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """A stack of folded towels or rolled towels, by style."""
         return self._folded(p, detail) if p["style"] == "folded" else self._rolled(p, detail)
 
@@ -256,7 +256,7 @@ class FoldedClothes(PartsFactory):
                                     (-d / 2 + 0.045, w / 2 - 0.01, top + 0.003)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The folded garments, stacked, with the top one's collar, buttons or hem."""
         out = []
         items = self._items(p)
@@ -408,7 +408,7 @@ class Basket(PartsFactory):
             out.append(Part(loop.rotate((90.0, 0.0, 0.0)).translate((0.0, y, H - 0.01)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The woven round shell or slatted rectangular body, and the handles."""
         if p["shape"] == "round":
             rb, rt = self._round_radii(p)
@@ -421,7 +421,7 @@ class Basket(PartsFactory):
             body = self._rect(p, detail)
         return body + self._handles(p, detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The underside (`bottom`) and the basket floor (`interior_0`)."""
         wt = p["wall_thickness"]
         if p["shape"] == "round":
@@ -551,11 +551,11 @@ class StorageBox(PartsFactory):
         extra = 2 * (MOVING_GAP + wt) if lift else 0.0
         return D + 2 * fl + extra, W + 2 * fl + extra, max(wt, 0.004)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The box and its lid (on the `lid` link)."""
         return self._base(p, detail) + self._lid(p, detail)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The lid's motion: lifted straight up, or hinged at the back."""
         Dl, Wl, lt = self._lid_dims(p)
         z0 = self._lid_z(p)
@@ -566,7 +566,7 @@ class StorageBox(PartsFactory):
                                                   np.array([-Dl / 2, 0.0, z0]), "lid"),
                            0.0, math.radians(110))]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The underside, the lid's `top` and the box floor (`interior_0`)."""
         D, W, sc, r, fl = self._dims(p)
         wt = p["wall_thickness"]

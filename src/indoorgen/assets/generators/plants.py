@@ -19,7 +19,7 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -165,7 +165,8 @@ def stem_solids(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray,
     return solids, np.vstack([rings.reshape(-1, 3), starts, ends])
 
 
-def stem_points(base, azimuth, elevation, length, droop, u: np.ndarray, n: int = 6
+def stem_points(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, length: np.ndarray,
+                droop: np.ndarray, u: np.ndarray, n: int = 6
                 ) -> tuple[np.ndarray, np.ndarray]:
     """Points (and tangents) at fractions `u` (L, m) along the stems' arcs, interpolated on the
     same polyline the stem tubes are swept along (so a point is on the stem's axis)."""
@@ -277,7 +278,7 @@ class _PlantBase(PartsFactory):
         H, _, zs, r_in = pot_layout(p)
         return self.foliage(p, self._z0(p) + zs, r_in, build)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         z0 = self._z0(p)
         out = self._saucer(p, detail) + pot_parts(p, detail, z0)
         plant, pts = self._foliage(p, detail)
@@ -290,7 +291,7 @@ class _PlantBase(PartsFactory):
     def _saucer(self, p, detail) -> list[Part]:
         return []
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         r = pot_foot_radius(p) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 48),
                                 subpart=Subpart.Bottom, up=False)]
@@ -336,13 +337,14 @@ class PottedPlant(_PlantBase):
                 (0.0, 0.005)]
         return [Part(lathe(prof, 48), "ceramic")]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The pot's foot (or the saucer's, with one) as the `bottom`."""
         r = (pot_foot_radius(p) + 0.03 - 0.012 if p["saucer"] else pot_foot_radius(p)) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 48),
                                 subpart=Subpart.Bottom, up=False)]
 
-    def foliage(self, p, z_soil, r_in, build):
+    def foliage(self, p: dict[str, Any], z_soil: float, r_in: float, build: bool
+                ) -> tuple[list[Part], np.ndarray]:
         """A rosette, stemmed branches or a palm's fronds, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "rosette":
@@ -449,7 +451,8 @@ class TabletopPlant(_PlantBase):
         "n_ribs": Param(6, 14, kind="int", doc="cactus ribs"),
     }
 
-    def foliage(self, p, z_soil, r_in, build):
+    def foliage(self, p: dict[str, Any], z_soil: float, r_in: float, build: bool
+                ) -> tuple[list[Part], np.ndarray]:
         """A succulent rosette, a ribbed cactus or a leafy plant, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "cactus":

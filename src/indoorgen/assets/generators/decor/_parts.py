@@ -20,7 +20,8 @@ def cross_section(pts: np.ndarray) -> m3d.CrossSection:
     return m3d.CrossSection([ccw(pts)], m3d.FillRule.Positive)
 
 
-def circle_points(r: float, n: int, center=(0.0, 0.0), circumscribed: bool = False) -> np.ndarray:
+def circle_points(r: float, n: int, center: tuple[float, float] = (0.0, 0.0),
+                  circumscribed: bool = False) -> np.ndarray:
     """An n-gon on a circle (a vertex on +x), or circumscribed about it (flats on the axes)."""
     a = np.arange(n) * 2 * math.pi / n
     if circumscribed:

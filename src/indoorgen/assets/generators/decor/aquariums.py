@@ -1,11 +1,13 @@
 """Aquariums: a glass tank with gravel, water and a lid, alone or on a stand cabinet with doors."""
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts
@@ -73,13 +75,13 @@ class Aquarium(PartsFactory):
                  Front(0.0, Ws / 2 - t, zb + t, z0 - t, "right")]
         return cabinet_fronts(Ds / 2, cells, Ds - 2 * t)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The stand doors' hinges (none for a tank alone)."""
         if p["style"] != "on_stand":
             return []
         return [make_joint(f"{m.link}_joint", m, 0.0, DOOR_OPEN) for _, m in self._fronts(p)]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Stand (if any), glass tank, gravel, water, trims and the notched lid."""
         L, Dt, z0 = self._dims(p)
         H, g = p["tank_height"], p["glass_thickness"]
@@ -118,7 +120,7 @@ class Aquarium(PartsFactory):
         out.append(Part(lid - notch, "plastic" if p["lid_style"] == "hood" else "glass"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The lid's `top` and, on a stand, the cabinet floor behind its doors."""
         L, Dt, z0 = self._dims(p)
         _, lt = self._lid(p)

@@ -2,13 +2,14 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box, box_between, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -104,7 +105,7 @@ class Balloon(PartsFactory):
         s = np.sqrt(np.clip(1.0 - d ** 2, 0.0, 1.0))[None, :]
         return knot + (z * d - r * s).min(axis=0), knot + (z * d + r * s).max(axis=0)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The weight, then each balloon with its string (placeholder: their boxes)."""
         wt = self.WEIGHT
         cube = p["weight_style"] == "cube"
@@ -123,7 +124,7 @@ class Balloon(PartsFactory):
                 out.append(Part(rod(anchor, knot + d * 0.004, rs * 1.5, 4), "fabric"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The weight's underside as the `bottom`."""
         wt = self.WEIGHT
         if p["weight_style"] == "cube":

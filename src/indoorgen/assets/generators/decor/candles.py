@@ -3,13 +3,14 @@ an emissive flame)."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.generators.decor._parts import bbox_part
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -71,7 +72,7 @@ class Candle(PartsFactory):
         zt = 0.65 * H
         return zt, R - 0.003, zt - 0.4 * p["melt_depth"]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The candle of its style and, lit, a wick and flame; placeholder: cylinders."""
         st, H = p["style"], p["height"]
         z_wax, r_wax, z_wick = self._wax_top(p)
@@ -152,7 +153,7 @@ class Candle(PartsFactory):
                      (R - w + 0.0005, z_wax), (0.6 * R, z_wax - 0.4 * m), (0.0, z_wax - 0.4 * m)], 48)
         return [Part(jar, "glass"), Part(wax, "wax")]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The round underside (pillar, jar, cup or candlestick foot) as the `bottom`."""
         r = self._base_radius(p) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 32),

@@ -3,6 +3,7 @@ arched mantel, digital block), with hour markers and hands showing a time."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -16,7 +17,7 @@ from indoorgen.assets.generators.decor._parts import (
     yz_extrude,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, bevel_box, box_between, lathe, rod
 from indoorgen.model.tags import Semantics as S
@@ -97,7 +98,7 @@ class WallClock(PartsFactory):
         "hand_width": Param(0.004, 0.012, doc="minute hand width (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Case, recessed dial, markers and hands (placeholder: the case's envelope)."""
         Dm, D, rw = p["diameter"], p["depth"], p["rim_width"]
         R = Dm / 2
@@ -127,7 +128,7 @@ class WallClock(PartsFactory):
         out += _clock_face(xd, 0.0, zc, ri, p["time"], p["markers"], p["hand_width"], rec)
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The flat back of the case (round or square) against the wall."""
         R, D = p["diameter"] / 2, p["depth"]
         if p["shape"] == "round":
@@ -158,7 +159,7 @@ class TableClock(PartsFactory):
         "bezel": Param(0.003, 0.012, doc="rim around the dial (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The clock of its style; the placeholder is the box around it."""
         build = {"alarm": self._alarm, "mantel": self._mantel, "digital": self._digital}[p["style"]]
         out = build(p, True)

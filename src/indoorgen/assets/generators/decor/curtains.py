@@ -3,6 +3,7 @@ board behind the rod brackets is the object's back."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -84,7 +85,7 @@ class Curtain(PartsFactory):
             return g["ring_zc"] - g["ring_R"] + 0.002
         return g["zr"] + g["rr"] + 0.03
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Wall board, rod with finials and brackets, pleated panels and rings."""
         g = self._geom(p)
         W, rr, xr, zr, xw, fr, ext = g["W"], g["rr"], g["xr"], g["zr"], g["xw"], g["fr"], g["ext"]
@@ -136,7 +137,7 @@ class Curtain(PartsFactory):
         prof = [(0.0, 0.0), (fr, 0.0), (0.3 * fr, 3.0 * fr), (0.0, 3.2 * fr)]
         return lathe(prof, 24).rotate((-90.0 * s, 0.0, 0.0)).translate((xr, y0, zr))
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The wall board's back against the wall."""
         g = self._geom(p)
         zr, yb = g["zr"], g["W"] / 2 + 0.04

@@ -10,7 +10,7 @@ import numpy as np
 
 from indoorgen.assets.generators.decor._parts import back_surface, wall_outline, yz_extrude
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.outlines import largest_polygon
 from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, box_between, rod
@@ -75,12 +75,12 @@ class Mirror(PartsFactory):
                                              else p["height"])
         return W, H
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Backing board, frame moulding and recessed glass."""
         W, H = self._dims(p)
         return _framed_mirror(p, detail, p["shape"], W, H, p["frame_depth"])
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The backing board's outline as the `back` against the wall."""
         W, H = self._dims(p)
         cs = wall_outline(p["shape"], W, H).offset(-0.001, m3d.JoinType.Miter, 2.0)
@@ -143,7 +143,7 @@ class FloorMirror(PartsFactory):
                  for q in parts]
         return moved, 0.0
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The tilted framed panel and its easel leg or cheval posts and feet."""
         out, _ = self._panel(p, detail)
         W, H, t = p["width"], p["height"], math.radians(p["tilt"])

@@ -3,6 +3,7 @@ braid grooves and a bound or fringed edge. Their whole footprint is the `bottom`
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -10,7 +11,7 @@ import shapely.geometry as sg
 
 from indoorgen.assets.generators.decor._parts import cross_section
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -37,7 +38,7 @@ class Rug(PartsFactory):
         "binding_width": Param(0.0, 0.04, doc="width of the raised edge binding (0 = none) (m)"),
     }
 
-    def outline(self, p) -> m3d.CrossSection:
+    def outline(self, p: dict[str, Any]) -> m3d.CrossSection:
         """The rug's plan as a cross-section (rounded rectangle, disc or ellipse)."""
         L = p["length"]
         Wd = min(p["width"], L)
@@ -51,7 +52,7 @@ class Rug(PartsFactory):
         return m3d.CrossSection.square((Wd - 2 * r, L - 2 * r), True).offset(
             r, m3d.JoinType.Round, 2.0, 32)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The pile slab and, if wide enough, the raised binding round its edge."""
         cs = self.outline(p)
         th = p["thickness"]
@@ -66,7 +67,7 @@ class Rug(PartsFactory):
                             "binding"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The whole footprint as the `bottom`."""
         polys = self.outline(p).to_polygons()
         poly = sg.Polygon(np.asarray(polys[0], float)).buffer(-0.0005, join_style="mitre")
@@ -97,7 +98,7 @@ class RoundRug(PartsFactory):
     def _sx(self, p) -> float:
         return p["aspect"] if p["shape"] == "oval" else 1.0
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Lathed pile with braid grooves, and a bound edge or a tassel fringe."""
         R, t, sx = p["diameter"] / 2, p["thickness"], self._sx(p)
         bound, fringe = p["edge"] == "bound", p["edge"] == "fringe"
@@ -137,7 +138,7 @@ class RoundRug(PartsFactory):
         gear = cross_section(np.c_[rad * np.cos(ang), rad * np.sin(ang)])
         return m3d.Manifold.extrude(gear, 0.003).translate((0.0, 0.0, 0.001))
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The pile's round or oval footprint as the `bottom`."""
         R, sx = p["diameter"] / 2 - 0.0005, self._sx(p)
         poly = circle_polygon(R, 96)

@@ -2,11 +2,12 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, circle_polygon, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -16,7 +17,7 @@ from indoorgen.model.tags import Subpart
 VASE_SHAPES = ("bulb", "cylinder", "bottle", "cone", "amphora")
 
 
-def vase_radius(p, t: float) -> float:
+def vase_radius(p: dict[str, Any], t: float) -> float:
     """Outer radius of the vase at fraction t of its height (0 = base, 1 = rim)."""
     R, foot, neck, belly = p["max_radius"], p["foot_frac"], p["neck_frac"], p["belly_frac"]
     shape = p["shape"]
@@ -64,7 +65,7 @@ class Vase(PartsFactory):
 
     N_FINE = 24
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The hollow lathed vessel (placeholder: a solid envelope of its outer profile)."""
         H, w, b = p["height"], p["wall_thickness"], p["base_thickness"]
         ts = np.linspace(0.0, 1.0, self.N_FINE)
@@ -83,7 +84,7 @@ class Vase(PartsFactory):
             env.append((float(rs[lo:hi + 1].max()), float(ts[i] * H)))
         return [Part(lathe([(0.0, 0.0)] + env + [(0.0, H)], 16, circumscribed=True), "ceramic")]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The round foot as the `bottom`."""
         r0 = vase_radius(p, 0.0)
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r0 * 0.995, 48),

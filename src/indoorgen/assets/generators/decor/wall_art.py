@@ -2,11 +2,13 @@
 a diptych / triptych. The back hangs on the wall; the picture faces +X."""
 from __future__ import annotations
 
+from typing import Any
+
 import shapely.geometry as sg
 
 from indoorgen.assets.generators.decor._parts import back_surface
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame
 from indoorgen.assets.shapes.primitives import OVERLAP, SMALL_OVERLAP, Part, bevel_box, box, box_between
@@ -33,7 +35,7 @@ class WallArt(PartsFactory):
         "recess": Param(0.004, 0.015, doc="how far the picture sits behind the frame's front (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """A canvas block, or backing board, frame, mat and recessed print."""
         W, H, D = p["width"], p["height"], p["depth"]
         if p["style"] == "canvas":
@@ -91,7 +93,7 @@ class CanvasArt(PartsFactory):
             out.append((y0, y0 + w, (Hm - h) / 2, (Hm + h) / 2))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """One bevelled block per panel and the wood behind the grooves joining them."""
         D, r = p["depth"], p["edge_radius"]
         panels = self._panels(p)
@@ -106,7 +108,7 @@ class CanvasArt(PartsFactory):
             out.append(Part(groove, "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The rectangle all panels cover at the back, against the wall."""
         D, r = p["depth"], p["edge_radius"]
         panels = self._panels(p)

@@ -5,13 +5,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.protocol import Surface
-from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe, rod
+from indoorgen.assets.shapes.primitives import Part, Vec3, box_between, circle_polygon, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Subpart
 
@@ -59,6 +60,7 @@ def top_disc(r: float, z: float) -> Surface:
 
 
 def top_rect(hx: float, hy: float, z: float) -> Surface:
+    """The ceiling-facing `top` of a rectangular canopy, half sizes hx, hy, its top face at z."""
     return support_polygon("top", (0, 0, z), sg.box(-hx, -hy, hx, hy), subpart=Subpart.Top)
 
 
@@ -73,48 +75,60 @@ class Kit:
     boxes: bool = True
 
     def n(self, sections: int) -> int:
+        """The section count at this level of detail (8 for placeholders)."""
         return sections if self.detail else 8
 
     def _cheap_box(self, r: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0):
         return box_between((x - r, y - r, z0), (x + r, y + r, z1))
 
-    def lathe(self, profile, sections: int = 48) -> m3d.Manifold:
+    def lathe(self, profile: Sequence[tuple[float, float]], sections: int = 48) -> m3d.Manifold:
+        """A lathed profile, or for boxed placeholders the box around it."""
         if self.detail or not self.boxes:
             return lathe(profile, self.n(sections))
         pts = np.asarray(profile, float)
         return self._cheap_box(pts[:, 0].max(), pts[:, 1].min(), pts[:, 1].max())
 
-    def cylinder(self, radius: float, height: float, center, sections: int = 32, **kw) -> m3d.Manifold:
+    def cylinder(self, radius: float, height: float, center: Vec3, sections: int = 32,
+                 **kw: Any) -> m3d.Manifold:
+        """A Z cylinder (or cone frustum), or its box."""
         if self.detail or not self.boxes:
             return cylinder(radius, height, center, self.n(sections), **kw)
         r = max(radius, kw.get("radius_top") or 0.0)
         x, y, z = (float(c) for c in center)
         return self._cheap_box(r, z, z + height, x, y)
 
-    def disc(self, r: float, z0: float, h: float, x: float = 0.0, y: float = 0.0, n: int = 48):
+    def disc(self, r: float, z0: float, h: float, x: float = 0.0, y: float = 0.0, n: int = 48
+             ) -> m3d.Manifold:
+        """A disc of radius r from z0 up by h centred on (x, y), or its box."""
         return self.cylinder(r, h, (x, y, z0), n)
 
-    def shell(self, outer, thickness: float, sections: int = 48) -> m3d.Manifold:
+    def shell(self, outer: Sequence[tuple[float, float]], thickness: float, sections: int = 48
+              ) -> m3d.Manifold:
+        """A lathed shell open at both ends (see `_shell`), or the box around its outer profile."""
         if self.detail or not self.boxes:
             return _shell(outer, thickness, self.n(sections))
         return self.lathe(outer)
 
     def bulb(self, z0: float, r: float, x: float = 0.0, y: float = 0.0) -> m3d.Manifold:
+        """A pear-shaped bulb standing on z0, or its box."""
         if self.detail or not self.boxes:
             return _bulb(z0, r, x, y, self.n(24))
         return self._cheap_box(r, z0, z0 + 2.3 * r, x, y)
 
     def flame(self, z0: float, r: float, x: float = 0.0, y: float = 0.0) -> m3d.Manifold:
+        """A candle-flame bulb standing on z0, or its box."""
         if self.detail or not self.boxes:
             return _flame(z0, r, x, y, self.n(16))
         return self._cheap_box(r, z0, z0 + 3.4 * r, x, y)
 
     def sphere(self, r: float, sections: int = 12) -> m3d.Manifold:
+        """A sphere about the origin, or its box."""
         if self.detail or not self.boxes:
             return m3d.Manifold.sphere(r, self.n(sections))
         return self._cheap_box(r, -r, r)
 
-    def rod(self, p0, p1, radius: float, sections: int = 12) -> m3d.Manifold:
+    def rod(self, p0: Vec3, p1: Vec3, radius: float, sections: int = 12) -> m3d.Manifold:
+        """A rod from p0 to p1, or the box with the exact extents of its end discs."""
         if self.detail:
             return rod(p0, p1, radius, sections)
         p0, p1 = np.asarray(p0, float), np.asarray(p1, float)

@@ -3,6 +3,7 @@ pendants on a cord or rod; a flat canopy at the top is their `top` surface."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -53,11 +54,11 @@ class CeilingLight(PartsFactory):
     def _groups(self, p, k: Kit | None) -> tuple[list[list[Part]], float, Surface]:
         return getattr(self, f"_{p['style']}")(p, k)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The fixture of its style (placeholder: the boxes of its groups)."""
         return build_groups(self._groups(p, FINE if detail else CHEAP)[0], detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The canopy's or base's `top`, against the ceiling."""
         return [self._groups(p, None)[2]]
 
@@ -282,7 +283,7 @@ class PendantLight(PartsFactory):
             sh = self._shade_parts(p)[0].solid.bounding_box()[5]
         return sh, sh + self.CAP_H + p["drop"] + self.CANOPY_H
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Shade, cap and bulb, the cord or rod, and the ceiling canopy."""
         k = FINE if detail else CHEAP
         zs, H = self._heights(p)
@@ -301,6 +302,6 @@ class PendantLight(PartsFactory):
                Part(k.disc(cr, H - self.CANOPY_H, self.CANOPY_H), "metal")]
         return build_groups([self._shade_parts(p, k) + fitting, top[:1], top[1:]], detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The canopy's `top`, against the ceiling."""
         return [top_disc(p["canopy_radius"], self._heights(p)[1])]

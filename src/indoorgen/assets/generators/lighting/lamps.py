@@ -3,6 +3,7 @@ the head tilting on a joint) and table lamps (lathed ceramic base, harp, shade).
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -18,7 +19,7 @@ from indoorgen.assets.generators.lighting._parts import (
     build_groups,
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DoorJoint
 from indoorgen.assets.shapes.primitives import (
@@ -35,7 +36,7 @@ from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
 
-def shade_radius(p, t: float) -> float:
+def shade_radius(p: dict[str, Any], t: float) -> float:
     """Outer shade radius at fraction t of its height (0 = bottom rim, 1 = top rim)."""
     rb, rt = p["shade_bottom_radius"], min(p["shade_top_radius"], p["shade_bottom_radius"])
     style = p["shade_style"]
@@ -69,7 +70,7 @@ class FloorLamp(PartsFactory):
         "shade_thickness": Param(0.002, 0.004, doc="shade wall thickness (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Base disc, pole, shade on three spokes, socket and bulb."""
         H, br, bh = p["height"], p["base_radius"], p["base_height"]
         pr, sh, st = p["pole_radius"], p["shade_height"], p["shade_thickness"]
@@ -101,7 +102,7 @@ class FloorLamp(PartsFactory):
         out.append(Part(bulb, "emissive"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The base disc's underside as the `bottom`."""
         br = p["base_radius"]
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(br * 0.995, 48),
@@ -218,7 +219,7 @@ class DeskLamp(PartsFactory):
             return Part(k.cylinder(b / 2, self.BASE_H, (0, 0, 0), 48, radius_top=b / 2 - 0.006), "metal")
         return Part(box_between((-b / 2, -b / 2, 0.0), (b / 2, b / 2, self.BASE_H)), "metal")
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Base, arm and fork, and the head on its `head` link."""
         k = FINE if detail else CHEAP
         P, _, arm = self._pivot(p, k)
@@ -229,13 +230,13 @@ class DeskLamp(PartsFactory):
                 Part(cylinder(p["base_size"] / 2, self.BASE_H, (0, 0, 0), 16, circumscribed=True), "metal"),
                 aabb_part(arm), aabb_part(head)]
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The head's tilt about the fork's pivot, +-`HEAD_TILT`."""
         P, _, _ = self._pivot(p)
         return [make_joint("head_joint", DoorJoint("revolute", np.array([0.0, 1.0, 0.0]), P, "head"),
                            -HEAD_TILT, HEAD_TILT)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The base's underside as the `bottom`."""
         b = p["base_size"]
         poly = (circle_polygon(0.998 * b / 2, 48) if p["base_shape"] == "round"
@@ -292,7 +293,7 @@ class TableLamp(PartsFactory):
         ts = np.linspace(0.0, 1.0, 10)
         return [(Rt + (Rb - Rt) * (1 - t) ** 2, z0 + t * sh) for t in ts]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Ceramic base, neck, socket, bulb, harp and shade on its spider."""
         k = FINE if detail else CHEAP
         hb, R, shape = p["base_height"], p["base_radius"], p["base_shape"]
@@ -329,7 +330,7 @@ class TableLamp(PartsFactory):
             shade.append(Part(spoke, "metal"))
         return build_groups([base, fit, shade], detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The base's round foot as the `bottom`."""
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(0.995 * self._foot_r(p), 48),
                                 subpart=Subpart.Bottom, up=False)]

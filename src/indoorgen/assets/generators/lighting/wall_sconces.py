@@ -3,6 +3,7 @@ globe or a candle bulb."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -101,7 +102,7 @@ class WallSconce(PartsFactory):
     def _zp(self, p) -> float:
         return 0.1  # plate centre height in the design frame (recentred later)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Wall plate, arm and the fixture at its end (placeholder: one box each)."""
         k = FINE if detail else CHEAP
         zc = self._zp(p)
@@ -115,7 +116,7 @@ class WallSconce(PartsFactory):
         fixture = self._fixture(p, x1, z1, k)
         return build_groups([plate, arm, fixture], detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The wall plate's outline as the `back`, against the wall."""
         s, zc = p["plate_size"], self._zp(p)
         if p["plate_shape"] == "round":

@@ -3,6 +3,7 @@ cantilever, moulded shell) and padded upholstered chairs. Front (+X) is where on
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -20,7 +21,7 @@ from indoorgen.assets.generators.seating._parts import (
     splay_legs,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import (
@@ -94,7 +95,7 @@ class DiningChair(PartsFactory):
         "stretchers": Param(kind="bool", doc="add stretchers between the legs"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Seat, legs, back posts and slats (or rails, or a panel), optional stretchers."""
         sw, sd, sh, st = p["seat_width"], p["seat_depth"], p["seat_height"], p["seat_thickness"]
         lt, bh = p["leg_thickness"], p["back_height"]
@@ -151,7 +152,7 @@ class DiningChair(PartsFactory):
                                         (cx + w / 2, cy, zs + 0.04 + w / 2)), "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The seat between the back posts and the front edge."""
         sd, sw, sh, lt = p["seat_depth"], p["seat_width"], p["seat_height"], p["leg_thickness"]
         x0, x1 = -sd / 2 + lt + 0.01, sd / 2 - 0.02
@@ -193,7 +194,7 @@ class SideChair(PartsFactory):
         sd, sw = p["seat_depth"], p["seat_width"]
         return sd, sw, min(p["seat_roundness"], 0.5 * min(sd, sw) - 0.001)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The chair of its family (Windsor, bentwood, cantilever or shell)."""
         return getattr(self, "_" + p["style"])(p, detail)
 
@@ -360,7 +361,7 @@ class SideChair(PartsFactory):
             out.append(Part(rod_between(a, b, 0.005, detail, 8), "metal"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The seat's plan in front of the back, inset from its edge."""
         sd, sw, rc = self._seat_plan(p)
         style, sh = p["style"], p["seat_height"]
@@ -420,7 +421,7 @@ class UpholsteredChair(PartsFactory):
     ARM_W = 0.08  # padded arm width (m)
     ARM_H = 0.20  # arm top above the seat (m)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Padded seat, back (plain, channels or wings), arms and legs."""
         sd, sw, sh, st = p["seat_depth"], p["seat_width"], p["seat_height"], p["seat_thickness"]
         bh, bt, tilt, cr = p["back_height"], p["back_thickness"], p["back_tilt"], p["corner_radius"]
@@ -481,7 +482,7 @@ class UpholsteredChair(PartsFactory):
             out.append(Part(leg, "metal" if style == "metal" else "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The padded seat in front of the back, inset from its rounded edge."""
         sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
         m = min(p["corner_radius"], p["seat_thickness"] / 3) + 0.01

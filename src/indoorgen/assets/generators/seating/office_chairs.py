@@ -3,6 +3,7 @@ revolute `swivel` joint. Front (+X) is where one sits from."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -16,7 +17,7 @@ from indoorgen.assets.generators.seating._parts import (
     soft_sheared,
 )
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Joint, Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import frame
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box, box_between, cylinder
@@ -169,16 +170,16 @@ class OfficeChair(PartsFactory):
                     out.append(board(lo, hi, "plastic", link))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The five-star base, then everything on the swivel."""
         return self._base(p, detail) + self._seat(p, detail)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The seat's swivel about the column, a full turn."""
         return [Joint("swivel", "revolute", np.array([0.0, 0.0, 1.0]), np.zeros(3), -math.pi,
                       math.pi, "seat")]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The seat cushion's top."""
         sd, sw, sh = p["seat_depth"], p["seat_width"], p["seat_height"]
         m = min(0.03, p["seat_thickness"] / 3) + 0.01

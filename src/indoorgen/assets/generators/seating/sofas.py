@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import legs
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box, cylinder
@@ -97,7 +97,7 @@ class Sofa(PartsFactory):
         "n_cushions": Param(2, 4, kind="int", doc="number of seat cushions"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Base, arms, back and `n_cushions` seat and back cushions."""
         return upholstered_parts(p, detail, int(p["n_cushions"]))
 
@@ -112,7 +112,7 @@ class Armchair(PartsFactory):
     slots = ["fabric", "cushion", "wood"]
     params = _upholstered_params((0.7, 1.0), (0.75, 0.9), (0.75, 1.0), (0.08, 0.2), (0.12, 0.2))
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Base, arms, back and one seat and back cushion."""
         return upholstered_parts(p, detail, 1)
 
@@ -163,7 +163,7 @@ class SofaLShaped(PartsFactory):
                     x0=-L / 2, xd=-L / 2 + D, zb=sh - ct, y_in0=y_in0, y_in1=y_in1,
                     s=1.0 if p["chaise_side"] == "left" else -1.0)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Base, arm, back, seat and back cushions and legs or a plinth."""
         g = self._geom(p)
         s, cr = g["s"], p["corner_radius"]
@@ -216,7 +216,7 @@ class SofaLShaped(PartsFactory):
         w = (y1 - y0) / n
         return [(y0 + i * w - OVERLAP, y0 + (i + 1) * w + OVERLAP) for i in range(n)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Each seat cushion's top (`seat_i`) and the chaise's (`chaise`)."""
         g = self._geom(p)
         s, m = g["s"], g["r"] + 0.01

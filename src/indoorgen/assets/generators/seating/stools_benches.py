@@ -80,7 +80,7 @@ class _SeatBaseBack(PartsFactory):
     def _back(self, p: dict[str, Any], detail: bool) -> list[Part]:
         raise NotImplementedError
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Seat, base and (with `back`) the back."""
         out = self._seat(p, detail) + self._base(p, detail)
         if p["back"]:
@@ -210,7 +210,7 @@ class BarStool(_SeatBaseBack):
                                      self.TILT, detail), "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The seat's plan, in front of the back if there is one."""
         S, sh = p["seat_size"], p["seat_height"]
         R = S / 2
@@ -275,7 +275,7 @@ class Stool(PartsFactory):
             return Part(soft_disc(S / 2, z0, z1, edge, bottom_edge), slot)
         return Part(bevel_box((S, S, z1 - z0), (0, 0, (z0 + z1) / 2), max(edge, 0.003), 2), slot)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """A legged stool, an ottoman on feet or a pouf, with any tufting buttons."""
         style, S, h = p["style"], p["size"], p["height"]
         cr, lt = p["corner_radius"], p["leg_thickness"]
@@ -331,7 +331,7 @@ class Stool(PartsFactory):
     def _pouf_round(self, p) -> float:
         return min(0.3 * min(p["size"], p["height"]), 2 * p["corner_radius"] + 0.03)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The top inset from its rounded edge, minus the tufting buttons."""
         style, S, h, cr = p["style"], p["size"], p["height"], p["corner_radius"]
         R = S / 2
@@ -477,7 +477,7 @@ class Bench(_SeatBaseBack):
                                 "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The seat (`seat`), or each slat's top (`seat_i`), in front of any back."""
         d, L, sh = p["depth"], p["length"], p["seat_height"]
         x_back = -d / 2 + 0.08 if p["back"] else -d / 2

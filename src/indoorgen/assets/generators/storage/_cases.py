@@ -76,9 +76,11 @@ class Case:
 
     @property
     def front_x(self) -> float:
+        """The x of the carcass front (fronts stand in front of it)."""
         return self.D / 2
 
     def inner(self) -> tuple[float, float]:
+        """The y range between the two sides."""
         return -self.W / 2 + self.t, self.W / 2 - self.t
 
 
@@ -243,6 +245,7 @@ def front_proud(handle: str) -> float:
 
 
 def case_joints(fronts: list[tuple[list[Part], DoorJoint]], drawer_travel: float) -> list[Joint]:
+    """A joint per front: doors swing to DOOR_OPEN, drawers slide out by `drawer_travel`."""
     return [make_joint(f"{m.link}_joint", m, 0.0, DOOR_OPEN) if m.kind == "revolute"
             else make_joint(f"{m.link}_joint", m, 0.0, drawer_travel) for _, m in fronts]
 
@@ -264,6 +267,7 @@ def case_base(D: float, W: float, zb: float, style: str, detail: bool, leg: floa
 
 
 def base_bottom(D: float, W: float, style: str) -> Surface:
+    """The `bottom`: the plinth's footprint (set back like the plinth) or the whole box's."""
     if style == "plinth":
         return bottom_rect((-0.015, 0, 0), D / 2 - 0.015 - 0.0005, W / 2 - 0.01 - 0.0005)
     return bottom_rect((0, 0, 0), D / 2, W / 2)
@@ -278,6 +282,7 @@ def top_board(D: float, W: float, z: float, tt: float, overhang: float, detail: 
 
 
 def top_surface(D: float, W: float, H: float, overhang: float) -> Surface:
+    """The `top` support surface on a top board overhanging by `overhang`, 2 cm in from its edge."""
     return support_rect("top", (overhang / 2, 0, H), (D + overhang) / 2 - 0.02,
                         W / 2 + overhang - 0.02)
 
@@ -317,19 +322,24 @@ class CaseFactory(PartsFactory):
     slots = ["wood", "front", "metal", "back", "glass", "mirror"]
 
     def layout(self, p: dict[str, Any]) -> Case:
+        """The case for resolved params `p`."""
         raise NotImplementedError
 
-    def bottom_is_solid(self, params):
+    def bottom_is_solid(self, params: dict[str, Any]) -> bool:
+        """Whether the case stands on a plinth (its footprint rests on mesh)."""
         return self.resolve(params).get("base_style") == "plinth"
 
     def drawer_depth(self, case: Case) -> float:
+        """How deep the drawers reach into the case (back panel and 2 cm clear)."""
         return case.D - case.back - 0.02
 
-    def fronts(self, p):
+    def fronts(self, p: dict[str, Any]) -> list[tuple[list[Part], DoorJoint]]:
+        """The doors and drawers of the case's cells, each on its own link."""
         case = self.layout(p)
         return case_fronts(case, p["handle"], p.get("door_style", "flat"), self.drawer_depth(case))
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
+        """A joint per front: doors swing, drawers slide out to 80% of their depth."""
         case = self.layout(p)
         return case_joints(self.fronts(p), 0.8 * self.drawer_depth(case))
 

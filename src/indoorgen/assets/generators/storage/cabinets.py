@@ -4,8 +4,10 @@ support surface."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from indoorgen.assets.generators.storage._cases import (
+    Case,
     CaseFactory,
     Row,
     back_surface,
@@ -17,7 +19,7 @@ from indoorgen.assets.generators.storage._cases import (
     top_surface,
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts
@@ -49,7 +51,7 @@ class TVStand(PartsFactory):
         "edge_radius": Param(0.0, 0.006, doc="rounding of the top's edges (m)"),
     }
 
-    def bottom_is_solid(self, params):
+    def bottom_is_solid(self, params: dict[str, Any]) -> bool:
         """Whether it stands on a plinth (its footprint rests on mesh)."""
         return self.resolve(params)["base_style"] == "plinth"
 
@@ -81,7 +83,7 @@ class TVStand(PartsFactory):
         depth = p["depth"] - p["board_thickness"] - 0.02
         return cabinet_fronts(p["depth"] / 2, cells, depth)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Carcass, top, fronts (placeholder: one block) and a plinth or legs."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         zb = p["base_height"]
@@ -105,13 +107,13 @@ class TVStand(PartsFactory):
                 out.append(Part(leg, "metal"))
         return out
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """The doors' hinges and the drawers' slides."""
         return [make_joint(f"{m.link}_joint", m, 0.0, DOOR_OPEN) if m.kind == "revolute"
                 else make_joint(f"{m.link}_joint", m, 0.0, 0.8 * (p["depth"] - p["board_thickness"] - 0.02))
                 for _, m in self._fronts(p)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` (for the TV), the carcass footprint and its back."""
         W, D, H, zb = p["width"], p["depth"], p["height"], p["base_height"]
         z0 = 0.0 if p["base_style"] == "plinth" else zb
@@ -150,7 +152,7 @@ class Cabinet(CaseFactory):
     def _n_doors(self, p) -> int:
         return 1 if p["width"] < 0.5 else int(p["n_doors"])
 
-    def layout(self, p):
+    def layout(self, p: dict[str, Any]) -> Case:
         """A door row (and a drawer row on top with `drawer_row`) over the base."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
@@ -170,11 +172,11 @@ class Cabinet(CaseFactory):
         yi0, yi1 = case.inner()
         return [shelf_board(case, yi0, yi1, z) for z in self._shelves(p, case)]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The case, its shelves and fronts, top board and base."""
         return self._topped_case(p, detail, p["base_height"])
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top`, the footprint, the back and the compartment floor and shelves."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]
@@ -221,7 +223,7 @@ class Dresser(CaseFactory):
         "top_overhang": Param(0.0, 0.03, doc="how far the top overhangs the front and sides (m)"),
     }
 
-    def layout(self, p):
+    def layout(self, p: dict[str, Any]) -> Case:
         """Rows of drawers, as many as stay at least 11 cm high, graduated or not."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
@@ -237,11 +239,11 @@ class Dresser(CaseFactory):
         return case_layout(W, D, t, 0.006, p["base_height"], z_top, rows,
                             overlay=p["fit"] == "overlay")
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The case and its drawers, top board and base."""
         return self._topped_case(p, detail, p["base_height"])
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top`, the footprint and the back."""
         W, D, H = p["width"], p["depth"], p["height"]
         return [top_surface(D, W, H, p["top_overhang"]),
@@ -294,16 +296,16 @@ class Nightstand(CaseFactory):
             rows = rows[1:]
         return rows
 
-    def layout(self, p):
+    def layout(self, p: dict[str, Any]) -> Case:
         """The rows of the chosen layout (three drawers become two in a low case)."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         return case_layout(W, D, t, 0.005, self._zb(p), H - t, self._rows(p), overlay=True)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The case and its fronts, top board and legs or plinth."""
         return self._topped_case(p, detail, self._zb(p), leg=0.032)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top`, footprint, back, open shelf floors and a door compartment's floor."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]

@@ -59,7 +59,7 @@ class Bookcase(PartsFactory):
         "shelf_setback": Param(0.0, 0.02, doc="how far shelves stop short of the front (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, back, plinth, sides and shelf boards."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         bt, sb = p["back_thickness"], p["shelf_setback"]
@@ -80,7 +80,7 @@ class Bookcase(PartsFactory):
                                         (x1, W / 2 - t + OVERLAP, zt)), "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and each shelf level (`shelf_i`)."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         bt, sb = p["back_thickness"], p["shelf_setback"]
@@ -118,7 +118,7 @@ class CellShelf(PartsFactory):
         "base_height": Param(0.03, 0.15, doc="plinth / leg height (m)"),
     }
 
-    def bottom_is_solid(self, params):
+    def bottom_is_solid(self, params: dict[str, Any]) -> bool:
         """Whether it stands on its frame or a plinth (not on legs)."""
         return self.resolve(params)["base_style"] != "legs"
 
@@ -138,7 +138,7 @@ class CellShelf(PartsFactory):
         y0 = -W / 2 + to + k * (c + ti)
         return y0, y0 + c, zb + to + r * (c + ti)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The frame with its cells cut out (placeholder: its boards), back and base."""
         D, to, ti = p["depth"], p["outer_thickness"], p["inner_thickness"]
         W, Hf, zb, bp = self._dims(p)
@@ -173,7 +173,7 @@ class CellShelf(PartsFactory):
                                                      sections=16 if detail else 8)]
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and every cell floor (`cell_<row>_<col>`)."""
         D = p["depth"]
         W, Hf, zb, bp = self._dims(p)
@@ -236,7 +236,7 @@ class WallShelf(PartsFactory):
             return -D / 2
         return -D / 2 + self.BACK - OVERLAP
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The boards and their back panel, side boards or brackets and track."""
         W, D = p["width"], p["depth"]
         bt, st = self._bt(p), p["style"]
@@ -293,7 +293,7 @@ class WallShelf(PartsFactory):
                 out.append(Part(br, "metal"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Every board top (`shelf_i`) and the flat `back` on the wall."""
         W, D, st = p["width"], p["depth"], p["style"]
         bt = self._bt(p)
@@ -383,7 +383,7 @@ class CornerShelf(PartsFactory):
         xy = self._to_design(np.asarray(clipped.exterior.coords)[:-1], R)
         return sg.polygon.orient(sg.Polygon(xy), 1.0)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Two wall panels and the shelves, with aprons if asked."""
         R, bt, tp = p["size"], p["board_thickness"], p["panel_thickness"]
         H = self._levels(p)[-1]
@@ -403,7 +403,7 @@ class CornerShelf(PartsFactory):
                                     "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Every shelf top (`shelf_i`), inset from its outline."""
         poly = self._shelf_polygon(p).buffer(-0.015, join_style="mitre")
         poly = sg.Polygon(np.asarray(poly.exterior.coords))
@@ -450,7 +450,7 @@ class ShoeRack(PartsFactory):
         xs = np.linspace(-D / 2 + 0.001, D / 2 - 0.001 - sw, n)
         return [(float(x), float(x) + sw) for x in xs]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Side panels or corner posts and the tiers (slats cut from one board)."""
         D, W, ft = p["depth"], p["width"], p["frame_thickness"]
         zs = self._levels(p)
@@ -485,7 +485,7 @@ class ShoeRack(PartsFactory):
         sl = self._slats(p)
         return [(a[1], b[0], -yi + self.RAIL, yi - self.RAIL) for a, b in zip(sl, sl[1:], strict=False)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """Every tier top (`tier_i`), the gaps between slats as holes."""
         D = p["depth"]
         yi = self._inner(p)

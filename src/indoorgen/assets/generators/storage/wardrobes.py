@@ -3,10 +3,12 @@ rows, on a plinth or legs. Interior shelves and floors are Interior surfaces."""
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
 from indoorgen.assets.generators.storage._cases import (
+    Case,
     CaseFactory,
     Row,
     back_surface,
@@ -22,7 +24,7 @@ from indoorgen.assets.generators.storage._cases import (
     shelf_heights,
 )
 from indoorgen.assets.parts_factory import make_joint
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_T, MOVING_GAP, REVEAL, DoorJoint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, rod
@@ -81,7 +83,7 @@ class Wardrobe(CaseFactory):
             return -W / 2 + 2 * W / n
         return None
 
-    def layout(self, p):
+    def layout(self, p: dict[str, Any]) -> Case:
         """Drawer rows at the bottom and the door zone above, split by any divider."""
         W, D, H, t = p["width"], p["depth"], p["height"], p["board_thickness"]
         z_top = H - t
@@ -136,7 +138,7 @@ class Wardrobe(CaseFactory):
         return [Part(box_between((fx - OVERLAP, -W / 2, z0 - case.t), (fx + td, W / 2, z0 + 0.02)),
                      "metal")]
 
-    def fronts(self, p):
+    def fronts(self, p: dict[str, Any]) -> list[tuple[list[Part], DoorJoint]]:
         """Hinged doors and drawers, or the drawers and two sliding doors."""
         case = self.layout(p)
         if not self._sliding(p):
@@ -144,7 +146,7 @@ class Wardrobe(CaseFactory):
         drawers = case_fronts(case, p["handle"], "flat", self.drawer_depth(case), drawers_only=True)
         return drawers + self._sliding_doors(p, case)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """Sliding doors slide, drawers pull out, hinged doors swing."""
         case = self.layout(p)
         out = []
@@ -188,7 +190,7 @@ class Wardrobe(CaseFactory):
                 out += [shelf_board(case, y0, y1, z) for z in self._column_shelves(p, case)]
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Case, top, base, and in detail rails, shelves, tracks and fronts."""
         case = self.layout(p)
         W, D = p["width"], p["depth"]
@@ -208,7 +210,7 @@ class Wardrobe(CaseFactory):
             out += [q for parts, _ in self.fronts(p) for q in parts]
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top`, footprint, back and every interior floor and shelf."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]

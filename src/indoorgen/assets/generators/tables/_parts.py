@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.shapes.frames import legs
-from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, Vec3, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import rect_side_surfaces, support_rect
 
 LEG_STYLES = ("straight", "tapered", "round")
@@ -56,13 +56,15 @@ def rect_table_parts(p: dict[str, Any], detail: bool, depth: float, width: float
     return out
 
 
-def rect_table_surfaces(p: dict[str, Any], depth: float, width: float):
+def rect_table_surfaces(p: dict[str, Any], depth: float, width: float) -> list[Surface]:
+    """A rectangular table's `top` (2 cm in from its edge) and its four side facets."""
     h = p["height"]
     return [support_rect("top", (0, 0, h), depth / 2 - 0.02, width / 2 - 0.02),
             *rect_side_surfaces(depth, width, h)]
 
 
 def table_params(h: tuple[float, float], lt: tuple[float, float]) -> dict[str, Param]:
+    """The params rectangular tables share, with their height and leg thickness ranges."""
     return {
         "height": Param(*h, doc="overall height = tabletop's upper face (m)"),
         "top_thickness": Param(0.025, 0.05, doc="tabletop thickness (m)"),
@@ -73,6 +75,7 @@ def table_params(h: tuple[float, float], lt: tuple[float, float]) -> dict[str, P
     }
 
 
-def translate_parts(parts: list[Part], offset) -> list[Part]:
+def translate_parts(parts: list[Part], offset: Vec3) -> list[Part]:
+    """The parts moved by `offset` (slot and link kept)."""
     off = tuple(float(v) for v in offset)
     return [Part(p.solid.translate(off), p.slot, p.link) for p in parts]

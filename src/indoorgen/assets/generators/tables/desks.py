@@ -2,9 +2,11 @@
 Drawers slide out on prismatic joints (front, the user side, is +X)."""
 from __future__ import annotations
 
+from typing import Any
+
 from indoorgen.assets.generators.tables._parts import translate_parts
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
@@ -107,7 +109,7 @@ class Desk(PartsFactory):
             out += [(f, depth) for f in cabinet_fronts(xf, cells, depth, prefix="c_")]
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, pedestals or legs with aprons, panels, drawers and the hutch."""
         W, D, h, tt = p["width"], p["depth"], p["height"], p["top_thickness"]
         t, lt = self.BOARD, p["leg_thickness"]
@@ -177,11 +179,11 @@ class Desk(PartsFactory):
             out.append(board((x0, ya, z0), (x1, yb, z1 - t + OVERLAP), "wood"))
         return out
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """A prismatic joint per drawer, opening to 80% of its depth."""
         return [make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth) for (_, m), depth in self._fronts(p)]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` (in front of any hutch), the front edge `side_0`, the hutch top."""
         W, D, h = p["width"], p["depth"], p["height"]
         x0 = -D / 2 + (self._hutch_depth(p) + 0.01 if p["hutch"] else 0.02)

@@ -3,6 +3,7 @@ or stadium top on one or two pedestals or four legs); chairs go against their `s
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
@@ -45,11 +46,11 @@ class DiningTableRect(PartsFactory):
         "stretchers": Param(kind="bool", doc="add an H of stretchers between the legs"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, legs, apron and optional stretchers."""
         return rect_table_parts(p, detail, p["depth"], p["length"], apron=True)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["length"])
 
@@ -78,7 +79,7 @@ class DiningTableRound(PartsFactory):
         "leg_radius_frac": Param(0.55, 0.75, doc="leg circle radius / top radius"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The round top and a pedestal or 3-4 legs with a ring apron."""
         r, h, tt = p["radius"], p["height"], p["top_thickness"]
         er = p["edge_radius"]
@@ -124,7 +125,7 @@ class DiningTableRound(PartsFactory):
             out.append(Part(lathe(ring, n, circumscribed=circ), "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The round `top` and `n_sides` chair facets."""
         r, h = p["radius"], p["height"]
         return [support_polygon("top", (0, 0, h), circle_polygon(r - 0.02, 64)),
@@ -250,7 +251,7 @@ class DiningTableOval(PartsFactory):
                 Part(cylinder(min(2.2 * cr, 0.2), 0.03, (0, y, zu - 0.03), 32 if detail else 8,
                               circumscribed=c), "wood")]
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """The oval top and one or two pedestals, or four legs with an oval apron."""
         a, b = p["width"] / 2, p["length"] / 2
         h, tt = p["height"], p["top_thickness"]
@@ -282,7 +283,7 @@ class DiningTableOval(PartsFactory):
             out.append(Part(ring, "wood"))
         return out
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and the facets tangent to its edge."""
         a, b, h, er = p["width"] / 2, p["length"] / 2, p["height"], p["edge_radius"]
         if p["top_shape"] == "stadium":

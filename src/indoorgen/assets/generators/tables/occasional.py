@@ -11,7 +11,7 @@ from indoorgen.assets.generators.tables._parts import (
     translate_parts,
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
@@ -39,11 +39,11 @@ class CoffeeTable(PartsFactory):
         "shelf_height": Param(0.08, 0.15, doc="height of the lower shelf's upper face (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, legs, optional apron and lower shelf."""
         return rect_table_parts(p, detail, p["depth"], p["length"], apron=p["apron"])
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["length"])
 
@@ -67,11 +67,11 @@ class SideTable(PartsFactory):
         "shelf_height": Param(0.12, 0.25, doc="height of the lower shelf's upper face (m)"),
     }
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, legs, optional apron and lower shelf."""
         return rect_table_parts(p, detail, p["depth"], p["width"], apron=p["apron"])
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and the four side facets."""
         return rect_table_surfaces(p, p["depth"], p["width"])
 
@@ -137,7 +137,7 @@ class ConsoleTable(PartsFactory):
                 "apron_height": p["apron_height"], "lower_shelf": p["lower_shelf"],
                 "shelf_height": p["shelf_height"], "stretchers": False}
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top on legs or slab ends, lower shelf, and the apron with its drawers."""
         D, W, h, tt = p["depth"], p["width"], p["height"], p["top_thickness"]
         lt, t = p["leg_thickness"], self.BOARD
@@ -178,12 +178,12 @@ class ConsoleTable(PartsFactory):
                 out.append(board((x0, y0, z0), (D / 2 - 0.005, y1, h - tt + OVERLAP), "front"))
         return out
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
         """A prismatic joint per apron drawer."""
         fronts, depth = self._fronts(p)
         return _drawer_joints(fronts, depth)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The `top` and the lower `shelf`."""
         D, W, h, lt = p["depth"], p["width"], p["height"], p["leg_thickness"]
         out = [support_rect("top", (0, 0, h), D / 2 - 0.02, W / 2 - 0.02)]
