@@ -8,7 +8,7 @@ import pytest
 import trimesh
 from pxr import Usd, UsdGeom
 
-from indoorgen.assets.base import Asset, box_surfaces
+from indoorgen.assets.protocol import Asset, box_surfaces
 from indoorgen.errors import OutputError
 from indoorgen.export.usd import sanitize_name, write_usd
 from indoorgen.floorplan.room import build_room, rectangle

@@ -1,28 +1,40 @@
-"""Helpers for asset tests: cached builds and exact point-to-mesh distances."""
+"""Helpers for asset tests: cached builds, exact point-to-mesh distances, surfaces on the mesh,
+faces by material slot, and the checks several generator families share."""
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
+import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.base import get_factory
+from indoorgen.assets.registry import get_factory
+from indoorgen.model.tags import Semantics, Subpart
+
+#: how close (m) a surface's points must lie to the mesh, and a built asset to its local frame
+TOL = 1e-3
 
 
-@lru_cache(maxsize=None)
+@cache
 def build(name: str, seed: int):
     f = get_factory(name)
     p = f.sample_params(np.random.default_rng(seed))
     return f, p, f.placeholder(p), f.create(p)
 
 
-def make(name: str, seed: int, **overrides):
+def make(name: str, seed: int = 0, **overrides):
     """A generator's params for `seed` with some overridden, and the detailed asset."""
     f = get_factory(name)
     p = f.sample_params(np.random.default_rng(seed))
     p.update(overrides)
     return f, p, f.create(p)
+
+
+def variant(name: str, **overrides):
+    """`make` on seed 0, plus the placeholder of the same params."""
+    f, p, a = make(name, 0, **overrides)
+    return f, p, a, f.placeholder(p)
 
 
 def distances(mesh: trimesh.Trimesh, pts: np.ndarray) -> np.ndarray:
@@ -104,3 +116,85 @@ def inert_params(factory, n_bases: int = 16) -> list[str]:
                         for v in param_values(prm)}) > 1 for b in bases):
             inert.append(k)
     return inert
+
+
+def surface_gap(asset, surface) -> float:
+    """Largest distance from the surface's sample points to the mesh."""
+    pts = surface.to_world(sample_polygon(surface.polygon))
+    assert len(pts) >= 3
+    return float(distances(asset.mesh, pts).max())
+
+
+def assert_on_mesh(asset, surface) -> None:
+    """The surface lies on the mesh (within TOL)."""
+    assert surface_gap(asset, surface) < TOL, surface.name
+
+
+def support_surfaces(asset) -> dict:
+    """The asset's support surfaces by name."""
+    return {s.name: s for s in asset.surfaces if s.subpart == Subpart.SupportSurface}
+
+
+def point_inside(asset, pts) -> np.ndarray:
+    """Whether each point is inside the asset's mesh."""
+    return asset.mesh.contains(np.atleast_2d(np.asarray(pts, float)))
+
+
+def slot_faces(a, slot: str) -> np.ndarray:
+    """Indices of the faces in material slot `slot` (none if the asset has no such slot)."""
+    return np.nonzero(a.face_slots == a.slots.index(slot))[0] if slot in a.slots else np.zeros(0, int)
+
+
+def slot_mesh(a, slot: str) -> trimesh.Trimesh:
+    """The faces of one material slot as a mesh."""
+    return a.mesh.submesh([slot_faces(a, slot)], append=True, repair=False)
+
+
+def as_manifold(mesh: trimesh.Trimesh) -> m3d.Manifold:
+    """A closed trimesh as a manifold3d solid (for exact boolean checks)."""
+    return m3d.Manifold(m3d.Mesh(vert_properties=np.asarray(mesh.vertices, np.float32),
+                                 tri_verts=np.asarray(mesh.faces, np.uint32)))
+
+
+def assert_furniture_tags(name: str, must: set, must_not: set) -> None:
+    """A large piece of furniture tagged with all of `must` and none of `must_not`."""
+    f = get_factory(name)
+    assert {Semantics.Object, Semantics.Furniture} | must <= f.tags
+    assert not (must_not & f.tags)
+    assert f.size_class == "large"
+
+
+def assert_objects_tagged(names) -> None:
+    """Each generator is an Object, and a small one a SmallObject."""
+    for name in names:
+        f = get_factory(name)
+        assert Semantics.Object in f.tags
+        if f.size_class == "small":
+            assert Semantics.SmallObject in f.tags, name
+
+
+def choice_cases(names) -> list[tuple]:
+    """(generator, param, value) for every choice and both values of every flag of `names`:
+    random seeds need not reach every style."""
+    out = []
+    for name in names:
+        f = get_factory(name)
+        for k, prm in sorted(f.params.items()):
+            if prm.kind == "choice":
+                out += [(name, k, c) for c in prm.choices]
+            elif prm.kind == "bool":
+                out += [(name, k, True), (name, k, False)]
+    return out
+
+
+def assert_clean_variant(name: str, key: str, value) -> None:
+    """The seed-0 design with `key` set to `value`: one watertight shell per link, within the
+    triangle budget, the placeholder on its bounds, in the local frame."""
+    f, p, a, ph = variant(name, **{key: value})
+    m = a.mesh
+    assert m.is_watertight and m.is_winding_consistent and m.volume > 0
+    assert m.body_count == len(a.links)
+    limit = 30000 if f.size_class == "large" else 5000 if f.size_class == "small" else 20000
+    assert len(m.faces) <= limit
+    assert np.abs(ph.mesh.bounds - m.bounds).max() <= 0.02
+    assert abs(m.bounds[0, 2]) < TOL and np.all(np.abs(m.bounds[:, :2].sum(axis=0)) < 2 * TOL)

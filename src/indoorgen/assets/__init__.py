@@ -1,16 +1,13 @@
-"""Procedural assets: the protocol (`base`), shared mesh parts (`parts`) and the generators."""
-from indoorgen.assets.base import (
-           Asset,
-           AssetFactory,
-           Joint,
-           Param,
-           Surface,
-           box_surfaces,
-           factories_with,
-           factory_names,
-           get_factory,
-           register,
+"""Procedural assets: the protocol, the registry, shared mesh parts (`shapes`), materials, generators."""
+from indoorgen.assets.protocol import (
+    Asset,
+    AssetFactory,
+    Joint,
+    Param,
+    Surface,
+    box_surfaces,
 )
+from indoorgen.assets.registry import factories_with, factory_names, get_factory, register
 
 __all__ = ["Asset", "AssetFactory", "Joint", "Param", "Surface", "box_surfaces",
            "factories_with", "factory_names", "get_factory", "register"]

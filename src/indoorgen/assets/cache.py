@@ -10,12 +10,14 @@ from typing import Any
 
 import fcl
 import numpy as np
+import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets import Asset, get_factory
 
 
 def params_key(generator: str, params: dict[str, Any]) -> tuple:
+    """A hashable key for (generator, params): the params as sorted JSON."""
     return (generator, json.dumps(params, sort_keys=True, default=str))
 
 
@@ -48,6 +50,7 @@ class AssetCache:
         self.builds = 0
 
     def placeholder(self, generator: str, params: dict[str, Any]) -> Asset:
+        """The generator's placeholder for these params (built once; counted in `builds`)."""
         key = params_key(generator, params)
         a = self._placeholders.get(key)
         if a is None:
@@ -57,6 +60,7 @@ class AssetCache:
         return a
 
     def full(self, generator: str, params: dict[str, Any]) -> Asset:
+        """The generator's detailed asset for these params (built once)."""
         key = params_key(generator, params)
         a = self._full.get(key)
         if a is None:
@@ -69,7 +73,6 @@ class AssetCache:
         key = params_key(generator, params)
         h = self._hull.get(key)
         if h is None:
-            import shapely.geometry as sg
             pts = self.placeholder(generator, params).mesh.vertices[:, :2]
             h = np.asarray(sg.MultiPoint(pts).convex_hull.exterior.coords)[:-1]
             self._hull[key] = h

@@ -13,7 +13,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from indoorgen.assets.base import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
+from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
 from indoorgen.assets.shapes.collision import convex_pieces, free_space_above
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
 from indoorgen.assets.shapes.moving_parts import DoorJoint
@@ -51,6 +51,7 @@ class PartsFactory(AssetFactory):
 
     # ---- to implement
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """The pieces for resolved params `p`: cheap (placeholder) ones, or detailed ones."""
         raise NotImplementedError
 
     def joints(self, p: dict[str, Any]) -> list[Joint]:

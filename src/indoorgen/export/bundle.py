@@ -31,9 +31,9 @@ import trimesh
 
 from indoorgen.architecture import scene_architecture
 from indoorgen.assets import get_factory
-from indoorgen.assets.base import Asset
 from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
+from indoorgen.assets.protocol import Asset
 from indoorgen.export.convex import convex_parts
 from indoorgen.export.physics import Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject

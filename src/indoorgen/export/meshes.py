@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from indoorgen.assets.base import Asset
+from indoorgen.assets.protocol import Asset
 from indoorgen.assets.shapes.mesh import box_uv
 
 #: corners whose vertex normal deviates more than this from the face normal get the face normal

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from indoorgen.assets.base import Asset
 from indoorgen.assets.materials import get_material
+from indoorgen.assets.protocol import Asset
 from indoorgen.export.meshes import face_slot_names
 
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros

@@ -38,7 +38,7 @@ import numpy as np
 import trimesh
 from pxr import Gf, Sdf, Sdr, Tf, Usd, UsdGeom, UsdLux, UsdPhysics, UsdSemantics, UsdShade, Vt
 
-from indoorgen.assets.base import Asset
+from indoorgen.assets.protocol import Asset
 from indoorgen.errors import OutputError
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
 from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names, mesh_uv

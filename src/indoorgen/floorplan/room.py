@@ -20,7 +20,7 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.errors import InvalidGeometryError
 from indoorgen.model.scene import Door, Room
 from indoorgen.model.tags import Subpart

@@ -32,7 +32,7 @@ import shapely.geometry as sg
 import trimesh
 from shapely.geometry.polygon import orient
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.errors import InvalidGeometryError
 from indoorgen.floorplan import fixtures
 from indoorgen.floorplan.plan import DoorSpec, Floorplan, StairSpec, Storey

@@ -13,22 +13,15 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators.seating_more import rod_between
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Joint, Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer
-from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
+from indoorgen.assets.shapes.sweeps import rod_between
 from indoorgen.model.tags import Semantics as S
-
-OVERLAP = 0.002  # how far touching pieces interpenetrate so each link unions into one shell
-
-
-def _board(lo, hi, slot: str = "wood", link: str = "base") -> Part:
-    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
-    return Part(box_between(lo, hi), slot, link)
-
 
 MATTRESS_WIDTHS = {"single": 0.9, "double": 1.4, "queen": 1.6, "king": 1.8}
 CLEAR = 0.01  # gap between the mattress and the frame around it (m)
@@ -57,7 +50,7 @@ def pillow(x0: float, x1: float, yc: float, width: float, z0: float, height: flo
 def side_drawer(side: int, face: float, x0: float, x1: float, z0: float, z1: float,
                 depth: float, link: str) -> tuple[list[Part], DoorJoint]:
     """A drawer opening sideways (+Y for side=1, -Y for side=-1) from a face at |y| = `face`,
-    for the opening x0..x1, z0..z1: `parts.drawer` built facing +X, turned about Z."""
+    for the opening x0..x1, z0..z1: `shapes.moving_parts.drawer` built facing +X, turned about Z."""
     deg = 90.0 * side
     ly0, ly1 = (-x1, -x0) if side > 0 else (x0, x1)
     parts, motion = drawer(face, ly0, ly1, z0, z1, depth, 0.018, link)
@@ -176,23 +169,23 @@ class Bed(PartsFactory):
                                           0.45 * min(x1 - x0, cw), 3), "upholstery"))
             return out
         pt = 0.06
-        out = [_board((x0, s * W / 2 - (pt if s > 0 else 0), 0.0),
+        out = [board((x0, s * W / 2 - (pt if s > 0 else 0), 0.0),
                       (x1, s * W / 2 + (pt if s < 0 else 0), zt + 0.02), "wood") for s in (-1, 1)]
         yi = W / 2 - pt + OVERLAP
         zb = g["fh"] - 0.1
         xa, xb = x0 + 0.008, x1 - 0.008
         if hs == "panel" or not detail:
-            out.append(_board((xa, -yi, zb), (xb, yi, zt), "wood"))
+            out.append(board((xa, -yi, zb), (xb, yi, zt), "wood"))
             if hs == "panel":
                 out.append(Part(_soft((x0 - 0.0, -W / 2, zt - 0.01), (x1, W / 2, zt + 0.02), 0.006,
                                       detail), "wood"))
             return out
-        out.append(_board((xa, -yi, zt - 0.06), (xb, yi, zt), "wood"))
-        out.append(_board((xa, -yi, zb), (xb, yi, zb + 0.06), "wood"))
+        out.append(board((xa, -yi, zt - 0.06), (xb, yi, zt), "wood"))
+        out.append(board((xa, -yi, zb), (xb, yi, zb + 0.06), "wood"))
         n = max(3, int((2 * yi) / 0.12))
         for i in range(n):
             yc = -yi + (i + 0.5) * 2 * yi / n
-            out.append(_board((xa + 0.005, yc - 0.025, zb + 0.06 - OVERLAP),
+            out.append(board((xa + 0.005, yc - 0.025, zb + 0.06 - OVERLAP),
                               (xb - 0.005, yc + 0.025, zt - 0.06 + OVERLAP), "wood"))
         return out
 
@@ -202,9 +195,9 @@ class Bed(PartsFactory):
         out: list[Part] = []
         if style == "platform":
             inset = 0.08
-            out.append(_board((xa, -W / 2, zr0), (g["x_f1"], W / 2, g["z_deck"]), "wood"))
+            out.append(board((xa, -W / 2, zr0), (g["x_f1"], W / 2, g["z_deck"]), "wood"))
             if not p["drawers"]:
-                out.append(_board((xa, -W / 2 + inset, 0.0),
+                out.append(board((xa, -W / 2 + inset, 0.0),
                                   (g["x_f1"] - inset, W / 2 - inset, zr0 + OVERLAP), "wood"))
         else:
             rt = g["rt"]
@@ -217,23 +210,23 @@ class Bed(PartsFactory):
             # the deck (slats) the mattress lies on
             yi = W / 2 - rt + OVERLAP
             if style == "slatted":  # slats on a centre beam
-                out.append(_board((xa, -0.03, g["z_deck"] - 0.06),
+                out.append(board((xa, -0.03, g["z_deck"] - 0.06),
                                   (xb, 0.03, g["z_deck"] - 0.02 + OVERLAP), "wood"))
             if style == "slatted" and detail:
                 n = max(6, int((xb - xa) / 0.12))
                 for i in range(n):
                     xc = xa + 0.03 + i * (xb - xa - 0.06) / (n - 1)
-                    out.append(_board((xc - 0.035, -yi, g["z_deck"] - 0.02),
+                    out.append(board((xc - 0.035, -yi, g["z_deck"] - 0.02),
                                       (xc + 0.035, yi, g["z_deck"]), "wood"))
             else:
-                out.append(_board((xa, -yi, g["z_deck"] - 0.02), (xb, yi, g["z_deck"]), "wood"))
+                out.append(board((xa, -yi, g["z_deck"] - 0.02), (xb, yi, g["z_deck"]), "wood"))
             if not p["drawers"]:
                 lt = 0.06
                 lz = (z0 if style == "slatted" else zr0) + OVERLAP
                 for x in (g["x_h1"], g["x_f1"] - lt):
                     for s in (-1, 1):
                         y = s * W / 2 - (lt if s > 0 else 0)
-                        out.append(_board((x, y, 0.0), (x + lt, y + lt, lz), "wood"))
+                        out.append(board((x, y, 0.0), (x + lt, y + lt, lz), "wood"))
         # the foot: a rail, or a footboard reaching above the mattress
         if style == "platform" and not p["footboard"]:
             return out
@@ -252,7 +245,7 @@ class Bed(PartsFactory):
         # up to the deck (or the platform slab) it carries
         z1 = (g["zr0"] if g["style"] == "platform" else g["z_deck"] - 0.02) + OVERLAP
         if not detail:  # the block with its drawers shut, fronts and handles included
-            return [_board((x0, -W / 2, 0.0), (x1, W / 2, z1), "wood")]
+            return [board((x0, -W / 2, 0.0), (x1, W / 2, z1), "wood")]
         block = box_between((x0, -face, 0.0), (x1, face, z1))
         _, depth = self._drawers(p, g)
         cuts = []
@@ -294,21 +287,24 @@ class Bed(PartsFactory):
     def _folded_x(self, g) -> tuple[float, float]:
         return g["xm1"] - 0.5, g["xm1"] - 0.06
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """Headboard, frame, bedding and (with `drawers`) the under-bed drawers."""
         g = self._g(p)
         out = self._headboard(p, g, detail) + self._frame(p, g, detail) + self._bedding(p, g, detail)
         if p["drawers"]:
             out += self._storage(p, g, detail)
         return out
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
+        """A prismatic joint per under-bed drawer, opening to 80% of its depth."""
         if not p["drawers"]:
             return []
         g = self._g(p)
         drawers, depth = self._drawers(p, g)
         return [make_joint(f"{m.link}_joint", m, 0.0, 0.8 * depth) for _, m in drawers]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """The bedding's top (`mattress`, clear of the pillows) and a folded blanket's top."""
         g = self._g(p)
         mw, r = g["mw"], g["r"]
         x0 = self._pillows_end(p, g) + 0.03
@@ -372,18 +368,18 @@ class BunkBed(PartsFactory):
                     xi=mw / 2 + CLEAR, yi=ml / 2 + CLEAR)
 
     def _level(self, p, g, zd: float, upper: bool, detail) -> list[Part]:
-        xi, yi, rt, pt = g["xi"], g["yi"], self.RAIL_T, g["pt"]
+        xi, yi, rt = g["xi"], g["yi"], self.RAIL_T
         z0, z1 = zd - 0.05, zd - 0.05 + self.RAIL_H
         if not detail:  # rails, deck, mattress and bedding as one block
             ztop = max(z1, zd + g["mt"] + (0.11 if p["bedding"] else 0.0))
-            return [_board((-xi - rt, -yi - rt, z0), (xi + rt, yi + rt, ztop), "wood")]
+            return [board((-xi - rt, -yi - rt, z0), (xi + rt, yi + rt, ztop), "wood")]
         out = []
         for s in (-1, 1):  # long rails front/back, end rails
-            out.append(_board((s * xi - (0 if s > 0 else rt), -yi - OVERLAP, z0),
+            out.append(board((s * xi - (0 if s > 0 else rt), -yi - OVERLAP, z0),
                               (s * xi + (rt if s > 0 else 0), yi + OVERLAP, z1), "wood"))
-            out.append(_board((-xi - OVERLAP, s * yi - (0 if s > 0 else rt), z0),
+            out.append(board((-xi - OVERLAP, s * yi - (0 if s > 0 else rt), z0),
                               (xi + OVERLAP, s * yi + (rt if s > 0 else 0), z1), "wood"))
-        out.append(_board((-xi - OVERLAP, -yi - OVERLAP, zd - 0.02), (xi + OVERLAP, yi + OVERLAP, zd),
+        out.append(board((-xi - OVERLAP, -yi - OVERLAP, zd - 0.02), (xi + OVERLAP, yi + OVERLAP, zd),
                           "wood"))  # deck
         mt = g["mt"]
         out.append(Part(_soft((-g["mw"] / 2, -g["ml"] / 2, zd - OVERLAP),
@@ -416,23 +412,23 @@ class BunkBed(PartsFactory):
         for s in (-1, 1):
             y0, y1 = (s * yi - (0 if s > 0 else rt), s * yi + (rt if s > 0 else 0))
             if not detail:  # both spans (and the rails between them) as one board
-                out.append(_board((-xi - OVERLAP, y0, spans[0][0]), (xi + OVERLAP, y1, spans[1][1]),
+                out.append(board((-xi - OVERLAP, y0, spans[0][0]), (xi + OVERLAP, y1, spans[1][1]),
                                   "wood"))
                 continue
             for z0, z1 in spans:
                 if style == "panel":
-                    out.append(_board((-xi - OVERLAP, y0 + 0.005, z0), (xi + OVERLAP, y1 - 0.005, z1),
+                    out.append(board((-xi - OVERLAP, y0 + 0.005, z0), (xi + OVERLAP, y1 - 0.005, z1),
                                       "wood"))
                 elif style == "slats":
-                    out.append(_board((-xi - OVERLAP, y0, z1 - 0.05), (xi + OVERLAP, y1, z1), "wood"))
+                    out.append(board((-xi - OVERLAP, y0, z1 - 0.05), (xi + OVERLAP, y1, z1), "wood"))
                     n = max(3, int(2 * xi / 0.12))
                     for i in range(n):
                         xc = -xi + (i + 0.5) * 2 * xi / n
-                        out.append(_board((xc - 0.02, y0 + 0.005, z0),
+                        out.append(board((xc - 0.02, y0 + 0.005, z0),
                                           (xc + 0.02, y1 - 0.005, z1 - 0.05 + OVERLAP), "wood"))
                 else:
                     for z in np.linspace(z0 + 0.06, z1 - 0.025, 3):
-                        out.append(_board((-xi - OVERLAP, y0, z - 0.025), (xi + OVERLAP, y1, z + 0.025),
+                        out.append(board((-xi - OVERLAP, y0, z - 0.025), (xi + OVERLAP, y1, z + 0.025),
                                           "wood"))
         return out
 
@@ -450,22 +446,22 @@ class BunkBed(PartsFactory):
             if not detail:  # rails and posts as one board (the closing post included)
                 if s > 0:
                     ya, yb = ya - 0.02, yb + 0.02
-                out.append(_board((x0 - 0.004, ya, z0), (x1 + (0.01 if s > 0 else 0.004), yb, z1),
+                out.append(board((x0 - 0.004, ya, z0), (x1 + (0.01 if s > 0 else 0.004), yb, z1),
                                   "wood"))
                 continue
-            out.append(_board((x0, ya, z1 - 0.05), (x1, yb, z1), "wood"))
-            out.append(_board((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025), "wood"))
+            out.append(board((x0, ya, z1 - 0.05), (x1, yb, z1), "wood"))
+            out.append(board((x0, ya, (z0 + z1) / 2 - 0.025), (x1, yb, (z0 + z1) / 2 + 0.025), "wood"))
             # posts 4 mm thicker than the rails, so that no faces are coplanar (slivers)
             if s > 0:  # a short post closing the guard at the opening
                 yp = g["ls"] * (yi - self.OPENING)
-                out.append(_board((x0 - 0.004, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1), "wood"))
+                out.append(board((x0 - 0.004, yp - 0.02, z0), (x1 + 0.01, yp + 0.02, z1), "wood"))
             else:
                 for y in np.linspace(-yi * 0.5, yi * 0.5, 2):
-                    out.append(_board((x0 - 0.004, y - 0.02, z0), (x1 + 0.004, y + 0.02, z1), "wood"))
+                    out.append(board((x0 - 0.004, y - 0.02, z0), (x1 + 0.004, y + 0.02, z1), "wood"))
         return out
 
     def _ladder(self, p, g, detail) -> list[Part]:
-        xi, yi, pt, X = g["xi"], g["yi"], g["pt"], g["X"]
+        xi, yi, X = g["xi"], g["yi"], g["X"]
         ls = g["ls"]
         zl, zu = g["decks"]
         top = zu - 0.05 + self.RAIL_H
@@ -477,16 +473,16 @@ class BunkBed(PartsFactory):
         if p["ladder_style"] == "vertical":
             if not detail:
                 xr = (x_in + X) / 2
-                return [_board((min(x_in, xr - 0.014), ya, 0.0), (max(X, xr + 0.014), yb, top), "wood")]
+                return [board((min(x_in, xr - 0.014), ya, 0.0), (max(X, xr + 0.014), yb, top), "wood")]
             for y in (ya, yb - sw):
-                out.append(_board((x_in, y, 0.0), (X, y + sw, top), "wood"))
+                out.append(board((x_in, y, 0.0), (X, y + sw, top), "wood"))
             if detail:
                 for z in rung_zs:
                     out.append(Part(rod_between(((x_in + X) / 2, ya + sw / 2, z),
                                                 ((x_in + X) / 2, yb - sw / 2, z),
                                                 0.014, True, 12), "wood"))
             else:
-                out.append(_board(((x_in + X) / 2 - 0.014, ya, rung_zs[0] - 0.014),
+                out.append(board(((x_in + X) / 2 - 0.014, ya, rung_zs[0] - 0.014),
                                   ((x_in + X) / 2 + 0.014, yb, rung_zs[-1] + 0.014), "wood"))
             return out
         run = 0.35  # how far the foot of an angled ladder stands out
@@ -496,13 +492,14 @@ class BunkBed(PartsFactory):
         xs = x_in + d / 2 + run * (1 - rung_zs / top)  # the rungs' axes, along Y
         if detail:
             out += [Part(rod_between((x, ya + sw / 2, z), (x, yb - sw / 2, z), 0.014, True, 12), "wood")
-                    for x, z in zip(xs, rung_zs)]
+                    for x, z in zip(xs, rung_zs, strict=True)]
         else:
-            out.append(_board((xs.min() - 0.014, ya + sw / 2, rung_zs.min() - 0.014),
+            out.append(board((xs.min() - 0.014, ya + sw / 2, rung_zs.min() - 0.014),
                               (xs.max() + 0.014, yb - sw / 2, rung_zs.max() + 0.014), "wood"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """Four posts, both decks with their mattresses, the ends, the guard rails and the ladder."""
         g = self._g(p)
         X, Y, pt, H = g["X"], g["Y"], g["pt"], g["H"]
         out = []
@@ -515,12 +512,13 @@ class BunkBed(PartsFactory):
             out += self._level(p, g, zd, i == 1, detail)
         return out + self._ends(p, g, detail) + self._guard(p, g, detail) + self._ladder(p, g, detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """Both mattress tops (`mattress_lower`, `mattress_upper`), clear of any bedding."""
         g = self._g(p)
         mw, ml, mt = g["mw"], g["ml"], g["mt"]
         r = _mattress_r(mt)
         out = []
-        for name, zd in zip(("mattress_lower", "mattress_upper"), g["decks"]):
+        for name, zd in zip(("mattress_lower", "mattress_upper"), g["decks"], strict=True):
             if p["bedding"]:
                 yh = -g["ls"] * (ml / 2 - 0.04) + g["ls"] * 0.42
                 f0, f1 = self._folded_y(g)

@@ -1,8 +1,8 @@
-"""Household objects: towels, folded clothes, a laptop, a TV remote, baskets and storage boxes.
+"""Household objects: towels, folded clothes, baskets and storage boxes.
 
 Textiles are solid extrusions of their side profile (a towel's serpentine folds, a rolled towel's
 spiral with the end lying flat), so they stay single watertight shells with the layering
-visible. Moving parts (a laptop's screen, a storage box's lid) are their own links.
+visible. A storage box's lid is its own link.
 """
 from __future__ import annotations
 
@@ -14,25 +14,24 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Joint, Param, register
-from indoorgen.assets.generators.plants import loft
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Joint, Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.outlines import ccw, largest_polygon
 from indoorgen.assets.shapes.primitives import (
+    SMALL_OVERLAP,
     Part,
     bevel_box,
-    box,
     box_between,
     circle_polygon,
     cylinder,
-    lathe,
     torus,
 )
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
+from indoorgen.assets.shapes.sweeps import loft
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-O1 = 0.001  # 1 mm overlap between touching pieces
 
 
 def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
@@ -43,23 +42,11 @@ def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
                                  [0.0, 1.0, 0.0, 0.0]]))
 
 
-def _ccw(pts: np.ndarray) -> np.ndarray:
-    x, y = pts[:, 0], pts[:, 1]
-    area = 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-    return pts if area > 0 else pts[::-1]
-
-
 def _seed(p: dict[str, Any]) -> int:
     """A deterministic seed from the params (for small per-item variations)."""
     return zlib.crc32(repr(sorted(p.items())).encode())
 
 
-def _largest_polygon(cs: m3d.CrossSection) -> sg.Polygon:
-    polys = [sg.Polygon(np.asarray(q, float)) for q in cs.to_polygons()]
-    return max(polys, key=lambda q: q.area)
-
-
-# ------------------------------------------------------------------------------------ towel
 @register
 class Towel(PartsFactory):
     """A towel, or a few: `folded` (a stack of layers whose serpentine folds bulge at the front
@@ -96,12 +83,12 @@ class Towel(PartsFactory):
             c = np.array([side * d / 2, z])
             a = np.linspace(-math.pi / 2, math.pi / 2, 9)
             half = np.c_[c[0] + side * rb * 2 * np.cos(a) * 0.5, c[1] + t * np.sin(a)]
-            bulges.append(m3d.CrossSection([_ccw(np.vstack([half, [[c[0] - side * 0.01, z + t],
+            bulges.append(m3d.CrossSection([ccw(np.vstack([half, [[c[0] - side * 0.01, z + t],
                                                                    [c[0] - side * 0.01, z - t]]]))]))
             nx = -side * d / 2
             notch = np.array([[nx - side * 0.001, z - 0.25 * t], [nx + side * 0.003, z],
                               [nx - side * 0.001, z + 0.25 * t]])
-            notches.append(m3d.CrossSection([_ccw(notch)]))
+            notches.append(m3d.CrossSection([ccw(notch)]))
         out = slab
         if bulges:
             out = m3d.CrossSection.batch_boolean([slab] + bulges, m3d.OpType.Add)
@@ -116,7 +103,7 @@ class Towel(PartsFactory):
         for i in range(int(p["n_towels"])):
             k = 1.0 - 0.04 * i
             out.append((p["depth"] * k, p["width"] * k, z, 0.006 * (i % 2)))
-            z += n * t - O1
+            z += n * t - SMALL_OVERLAP
         return out
 
     def _folded(self, p, detail):
@@ -158,7 +145,7 @@ class Towel(PartsFactory):
         outer = np.c_[r_out * np.cos(ang), R + r_out * np.sin(ang)]
         tail = p["tail_length"]
         end = np.array([[tail, 0.0], [tail, 0.85 * t]])
-        return _ccw(np.vstack([outer, end, inner[::-1]]))
+        return ccw(np.vstack([outer, end, inner[::-1]]))
 
     def _roll_centres(self, p) -> list[tuple[float, float]]:
         """Roll positions: side by side overlapping 2 mm, a third one resting on the two."""
@@ -166,15 +153,15 @@ class Towel(PartsFactory):
         pts = self._roll_profile(dict(p, tail_length=0.0015))
         span = pts[:, 0].max() - pts[:, 0].min()
         n = int(p["n_towels"])
-        c1 = span - 2 * O1
+        c1 = span - 2 * SMALL_OVERLAP
         out = [(0.0, 0.0), (c1, 0.0)][:n]
         if n == 3:
-            reach = 2 * (R - 0.75 * t) - 2 * O1  # the turns' smallest outer radius, twice
+            reach = 2 * (R - 0.75 * t) - 2 * SMALL_OVERLAP  # the turns' smallest outer radius, twice
             out.append((c1 / 2, math.sqrt(max(reach ** 2 - (c1 / 2) ** 2, 0.0))))
         return out
 
     def _rolled(self, p, detail):
-        w, R = p["width"], self._roll_radius(p)
+        w = p["width"]
         out = []
         centres = self._roll_centres(p)
         n_bottom = sum(1 for _, cz in centres if cz == 0.0)
@@ -191,11 +178,11 @@ class Towel(PartsFactory):
             out.append(Part(_xz_extrude(cs, -w / 2, w / 2).translate((cx, 0.0, cz)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """A stack of folded towels or rolled towels, by style."""
         return self._folded(p, detail) if p["style"] == "folded" else self._rolled(p, detail)
 
 
-# ---------------------------------------------------------------------------- clothes
 GARMENTS = ("tshirt", "shirt", "sweater", "pants")
 
 
@@ -235,7 +222,7 @@ class FoldedClothes(PartsFactory):
                 t *= 1.3
             off = p["offset_jitter"] * (rng.random(2) * 2 - 1)
             out.append(dict(kind=kind, d=d, w=w, t=t, z=z, x=off[0], y=off[1]))
-            z += t - O1
+            z += t - SMALL_OVERLAP
         return out
 
     @staticmethod
@@ -269,7 +256,8 @@ class FoldedClothes(PartsFactory):
                                     (-d / 2 + 0.045, w / 2 - 0.01, top + 0.003)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """The folded garments, stacked, with the top one's collar, buttons or hem."""
         out = []
         items = self._items(p)
         for i, it in enumerate(items):
@@ -287,180 +275,6 @@ class FoldedClothes(PartsFactory):
         return out
 
 
-# ---------------------------------------------------------------------------- laptop
-@register
-class Laptop(PartsFactory):
-    """A laptop: a bevelled base with a keyboard (chiclet keys in a well, or a flat key plate)
-    and touchpad, and a screen lid on its own link hinged along the base's back edge. The lid
-    is built at `open_angle` (0 = closed) and its joint runs from closed to 150 degrees."""
-
-    name = "laptop"
-    tags = frozenset({S.Object, S.SmallObject, S.Electronics, S.Laptop})
-    size_class = "small"
-    slots = ["body", "screen", "plastic"]
-    solid_bottom = True
-    MAX_ANGLE = 150.0
-    params = {
-        "width": Param(0.28, 0.4, doc="Y extent (m)"),
-        "depth": Param(0.19, 0.27, doc="X extent of the base (m)"),
-        "base_thickness": Param(0.012, 0.022, doc="base thickness (m)"),
-        "lid_thickness": Param(0.005, 0.009, doc="lid thickness (m)"),
-        "open_angle": Param(0.0, 125.0, doc="lid angle as built (degrees, 0 = closed)"),
-        "bezel": Param(0.006, 0.016, doc="border around the screen (m)"),
-        "corner_radius": Param(0.003, 0.01, doc="rounding of the edges (m)"),
-        "touchpad_ratio": Param(0.25, 0.45, doc="touchpad width / laptop width"),
-        "key_style": Param(kind="choice", choices=("chiclet", "flat"), doc="keyboard style"),
-    }
-
-    def _pivot(self, p) -> np.ndarray:
-        return np.array([-p["depth"] / 2, 0.0, p["base_thickness"] + MOVING_GAP])
-
-    def _open(self, solid: m3d.Manifold, p) -> m3d.Manifold:
-        pv = self._pivot(p)
-        return solid.translate(tuple(-pv)).rotate((0.0, -p["open_angle"], 0.0)).translate(tuple(pv))
-
-    def _lid(self, p, detail) -> list[Part]:
-        D, W, lt = p["depth"], p["width"], p["lid_thickness"]
-        z0 = p["base_thickness"] + MOVING_GAP
-        cr = min(p["corner_radius"], 0.45 * lt)
-        shell = bevel_box((D, W, lt), (0.0, 0.0, z0 + lt / 2), cr, 2)
-        b = p["bezel"]
-        screen = box_between((-D / 2 + b, -W / 2 + b, z0 - 0.0003), (D / 2 - b * 1.6, W / 2 - b, z0 + O1))
-        if not detail:  # the hull of shell and screen: exact bounds at any opening angle
-            return [Part(self._open(m3d.Manifold.batch_hull([shell, screen]), p), "body", "lid")]
-        return [Part(self._open(shell, p), "body", "lid"), Part(self._open(screen, p), "screen", "lid")]
-
-    def _base(self, p, detail) -> list[Part]:
-        D, W, bt = p["depth"], p["width"], p["base_thickness"]
-        cr = p["corner_radius"]
-        if not detail:
-            return [Part(box((D, W, bt), (0.0, 0.0, bt / 2)), "body")]
-        base = bevel_box((D, W, bt), (0.0, 0.0, bt / 2), min(cr, 0.45 * bt), 2)
-        # keyboard well behind the touchpad (the hinge is at the back, -X)
-        kx0, kx1 = -D / 2 + 0.02, -D / 2 + 0.02 + 0.5 * D
-        ky = 0.44 * W
-        well = box_between((kx0, -ky, bt - 0.0015), (kx1, ky, bt + 0.01))
-        tw = W * p["touchpad_ratio"]
-        tx0, tx1 = kx1 + 0.012, min(D / 2 - 0.012, kx1 + 0.012 + 0.6 * tw)
-        pad_cut = box_between((tx0, -tw / 2, bt - 0.0006), (tx1, tw / 2, bt + 0.01))
-        out = [Part(base - well - pad_cut, "body"),
-               Part(box_between((tx0 + 0.0005, -tw / 2 + 0.0005, bt - 0.0016),
-                                (tx1 - 0.0005, tw / 2 - 0.0005, bt - 0.0003)), "plastic")]
-        if p["key_style"] == "flat":
-            out.append(Part(box_between((kx0 + 0.001, -ky + 0.001, bt - 0.0025),
-                                        (kx1 - 0.001, ky - 0.001, bt - 0.0005)), "plastic"))
-            return out
-        rows, cols = 6, 14
-        pitch_x, pitch_y = (kx1 - kx0) / rows, 2 * ky / cols
-        keys = []
-        for r in range(rows):
-            if r == rows - 1:  # bottom row (nearest the front): a space bar between small keys
-                spans = [(-ky, -ky + 3 * pitch_y), (-ky + 3 * pitch_y, ky - 3 * pitch_y),
-                         (ky - 3 * pitch_y, ky)]
-            else:
-                spans = [(-ky + c * pitch_y, -ky + (c + 1) * pitch_y) for c in range(cols)]
-            x0 = kx0 + r * pitch_x
-            for y0, y1 in spans:
-                keys.append(box_between((x0 + 0.0012, y0 + 0.0012, bt - 0.0025),
-                                        (x0 + pitch_x - 0.0012, y1 - 0.0012, bt - 0.0004)))
-        out.append(Part(m3d.Manifold.compose(keys), "plastic"))
-        return out
-
-    def parts(self, p, detail):
-        return self._base(p, detail) + self._lid(p, detail)
-
-    def joints(self, p):
-        a = math.radians(p["open_angle"])
-        return [make_joint("lid_joint", DoorJoint("revolute", np.array([0.0, -1.0, 0.0]),
-                                                  self._pivot(p), "lid"),
-                           -a, math.radians(self.MAX_ANGLE) - a)]
-
-    def extra_surfaces(self, p):
-        D, W, cr = p["depth"], p["width"], min(p["corner_radius"], 0.45 * p["base_thickness"])
-        # the bevelled base's flat underside, 0.5 mm in from its edge
-        return [bottom_rect((0.0, 0.0, 0.0), D / 2 - cr - 0.0005, W / 2 - cr - 0.0005)]
-
-
-# ---------------------------------------------------------------------------- remote
-@register
-class Remote(PartsFactory):
-    """A TV remote: a bevelled slab tapering towards its tail, a red power button at the head
-    (+X), an optional direction pad (ring and OK button) and rows of round or square buttons."""
-
-    name = "remote"
-    tags = frozenset({S.Object, S.SmallObject, S.Electronics, S.Remote})
-    size_class = "small"
-    slots = ["plastic", "rubber"]
-    solid_bottom = True
-    params = {
-        "length": Param(0.14, 0.22, doc="X extent (m)"),
-        "width": Param(0.035, 0.055, doc="Y extent at the head (m)"),
-        "thickness": Param(0.012, 0.025, doc="Z extent of the body (m)"),
-        "taper": Param(0.75, 1.0, doc="width at the tail / width at the head"),
-        "n_button_rows": Param(3, 7, kind="int", doc="rows of three buttons"),
-        "button_style": Param(kind="choice", choices=("round", "square"), doc="button shape"),
-        "dpad": Param(kind="bool", doc="direction pad (ring and OK button)"),
-        "edge_radius": Param(0.003, 0.008, doc="rounding of the body's edges (m)"),
-    }
-    RAISE = 0.0015  # how far buttons stand above the top
-
-    def _body(self, p, detail) -> m3d.Manifold:
-        L, w, th = p["length"], p["width"], p["thickness"]
-        r = min(p["edge_radius"], 0.45 * th)
-        wt = w * p["taper"]
-        if not detail:
-            return box((L, w, th), (0.0, 0.0, th / 2))
-        head = bevel_box((0.02, w, th), (L / 2 - 0.01, 0.0, th / 2), r, 2)
-        tail = bevel_box((0.02, wt, th), (-L / 2 + 0.01, 0.0, th / 2), r, 2)
-        return m3d.Manifold.batch_hull([head, tail])
-
-    def _buttons(self, p) -> list[Part]:
-        L, w, th = p["length"], p["width"], p["thickness"]
-        r = min(p["edge_radius"], 0.45 * th)
-        z0, z1 = th - 0.0008, th + self.RAISE
-        out = [Part(cylinder(0.0045, z1 - z0, (L / 2 - 0.016, w / 2 - r - 0.0065, z0), 16), "rubber")]
-        x = L / 2 - 0.03
-        if p["dpad"]:
-            rd = min(0.4 * w - r, 0.018)
-            ring = lathe([(0.55 * rd, 0.0), (rd, 0.0), (rd, z1 - z0), (0.55 * rd, z1 - z0)], 24)
-            out.append(Part(ring.translate((x - rd, 0.0, z0)), "rubber"))
-            out.append(Part(cylinder(0.4 * rd, z1 - z0, (x - rd, 0.0, z0), 16), "rubber"))
-            x -= 2 * rd + 0.008
-        wt = w * p["taper"]
-        for row in range(int(p["n_button_rows"])):
-            xc = x - 0.004 - row * 0.013
-            if xc < -L / 2 + 0.015:
-                break
-            wl = wt + (w - wt) * (xc + L / 2) / L  # body width at this x
-            pitch = min(0.013, (wl - 2 * r - 0.004) / 3)
-            for c in (-1, 0, 1):
-                yc = c * pitch
-                if p["button_style"] == "round":
-                    b = cylinder(0.35 * pitch, z1 - z0, (xc, yc, z0), 12)
-                else:
-                    b = box_between((xc - 0.0045, yc - 0.35 * pitch, z0),
-                                    (xc + 0.0045, yc + 0.35 * pitch, z1))
-                out.append(Part(b, "rubber"))
-        return out
-
-    def parts(self, p, detail):
-        L, w, th = p["length"], p["width"], p["thickness"]
-        if not detail:
-            return [Part(box_between((-L / 2, -w / 2, 0.0), (L / 2, w / 2, th + self.RAISE)), "plastic")]
-        return [Part(self._body(p, True), "plastic")] + self._buttons(p)
-
-    def extra_surfaces(self, p):
-        L, w, th = p["length"], p["width"], p["thickness"]
-        r = min(p["edge_radius"], 0.45 * th)
-        wt = w * p["taper"]
-        # the flat underside: a trapezoid from the tail to the head, 0.5 mm in from its edge
-        h, t = w / 2 - r - 0.0005, wt / 2 - r - 0.0005
-        x0, x1 = -L / 2 + r + 0.0005, L / 2 - r - 0.0005
-        poly = sg.Polygon([(x0, -t), (x1, -h), (x1, h), (x0, t)])
-        return [support_polygon("bottom", (0, 0, 0), poly, subpart=Subpart.Bottom, up=False)]
-
-
-# ---------------------------------------------------------------------------- basket
 @register
 class Basket(PartsFactory):
     """A woven basket: `round` (a hollow lathe-like shell whose outer wall bulges in
@@ -504,7 +318,10 @@ class Basket(PartsFactory):
         th = np.arange(k) * 2 * math.pi / k
         per = 3
         zs = np.linspace(0.0, H, rows * per + 1)
-        rad = lambda z: rb + (rt - rb) * z / H
+
+        def rad(z: float) -> float:  # the wall's radius at height z
+            return rb + (rt - rb) * z / H
+
         rings = [np.c_[rb * np.cos(th), rb * np.sin(th), np.zeros(k)]]
         for i, z in enumerate(zs[1:-1], start=1):
             row, u = divmod(i, per)
@@ -513,8 +330,8 @@ class Basket(PartsFactory):
             r = rad(z) + bulge * phase
             rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
         lip = wt * (1.6 if p["rim"] else 1.0)
-        for r, z in ((rad(H), H), (rad(H) - lip, H)):
-            rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
+        for r_rim, z in ((rad(H), H), (rad(H) - lip, H)):
+            rings.append(np.c_[r_rim * np.cos(th), r_rim * np.sin(th), np.full(k, z)])
         for z in np.linspace(H - 0.004, self.FLOOR, 4):
             r = rad(z) - wt
             rings.append(np.c_[r * np.cos(th), r * np.sin(th), np.full(k, z)])
@@ -531,7 +348,10 @@ class Basket(PartsFactory):
         if not detail:
             return [Part(box_between((-Dt / 2, -Wt / 2, 0.0), (Dt / 2, Wt / 2, H)), "wood")]
         out = [Part(box_between((-Db / 2, -Wb / 2, 0.0), (Db / 2, Wb / 2, self.FLOOR)), "wood")]
-        half = lambda D, z: D / 2 + (D * p["flare"] - D) / 2 * z / H
+
+        def half(D: float, z: float) -> float:  # half the flaring wall's width D at height z
+            return D / 2 + (D * p["flare"] - D) / 2 * z / H
+
         pw = 0.018
         for sx in (-1, 1):
             for sy in (-1, 1):
@@ -544,15 +364,15 @@ class Basket(PartsFactory):
             z0 = self.FLOOR + r * pitch + (0.0 if r == 0 else 0.3 * pitch)
             z1 = self.FLOOR + (r + 1) * pitch
             if r == 0:
-                z0 -= O1
+                z0 -= SMALL_OVERLAP
             zm = (z0 + z1) / 2
             hx, hy = half(Db, zm), half(Wb, zm)
             for sx in (-1, 1):
-                out.append(Part(box_between((min(sx * hx, sx * (hx - wt)), -hy + O1, z0),
-                                            (max(sx * hx, sx * (hx - wt)), hy - O1, z1)), "wood"))
+                out.append(Part(box_between((min(sx * hx, sx * (hx - wt)), -hy + SMALL_OVERLAP, z0),
+                                            (max(sx * hx, sx * (hx - wt)), hy - SMALL_OVERLAP, z1)), "wood"))
             for sy in (-1, 1):
-                out.append(Part(box_between((-hx + O1, min(sy * hy, sy * (hy - wt)), z0),
-                                            (hx - O1, max(sy * hy, sy * (hy - wt)), z1)), "wood"))
+                out.append(Part(box_between((-hx + SMALL_OVERLAP, min(sy * hy, sy * (hy - wt)), z0),
+                                            (hx - SMALL_OVERLAP, max(sy * hy, sy * (hy - wt)), z1)), "wood"))
         if p["rim"]:
             ring = (box_between((-Dt / 2, -Wt / 2, H - 0.015), (Dt / 2, Wt / 2, H))
                     - box_between((-Dt / 2 + wt * 1.5, -Wt / 2 + wt * 1.5, H - 0.02),
@@ -588,10 +408,10 @@ class Basket(PartsFactory):
             out.append(Part(loop.rotate((90.0, 0.0, 0.0)).translate((0.0, y, H - 0.01)), "fabric"))
         return out
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """The woven round shell or slatted rectangular body, and the handles."""
         if p["shape"] == "round":
             rb, rt = self._round_radii(p)
-            H = p["height"]
             if detail:
                 body = [Part(self._round_shell(p), "wood")]
             else:  # a box on the woven wall's exact bounds
@@ -601,7 +421,8 @@ class Basket(PartsFactory):
             body = self._rect(p, detail)
         return body + self._handles(p, detail)
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """The underside (`bottom`) and the basket floor (`interior_0`)."""
         wt = p["wall_thickness"]
         if p["shape"] == "round":
             rb, _ = self._round_radii(p)
@@ -618,7 +439,6 @@ class Basket(PartsFactory):
                                 subpart=Subpart.Interior)]
 
 
-# ---------------------------------------------------------------------------- storage box
 @register
 class StorageBox(PartsFactory):
     """A storage box: `cardboard` (straight walls, optional hand holes) or `plastic` (tapered,
@@ -712,14 +532,15 @@ class StorageBox(PartsFactory):
             (0.0, 0.0, z0))
         parts = [plate]
         if lift:
-            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), sk + O1)
+            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0),
+                                         sk + SMALL_OVERLAP)
             inner = m3d.Manifold.extrude(self._plan(Dl - 2 * wt, Wl - 2 * wt, r + fl + g if r else 0.0),
                                          sk + 0.02).translate((0.0, 0.0, -0.01))
             parts.append((outer - inner).translate((0.0, 0.0, z0 - sk)))
         else:  # a raised stacking rim on the flat lid
             rim = (m3d.Manifold.extrude(self._plan(Dl - 0.01, Wl - 0.01, r), 0.006)
                    - m3d.Manifold.extrude(self._plan(Dl - 0.02, Wl - 0.02, r), 0.02)
-                   .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, z0 + lt - O1))
+                   .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, z0 + lt - SMALL_OVERLAP))
             parts.append(rim)
         return [Part(q, slot, "lid") for q in parts]
 
@@ -730,10 +551,12 @@ class StorageBox(PartsFactory):
         extra = 2 * (MOVING_GAP + wt) if lift else 0.0
         return D + 2 * fl + extra, W + 2 * fl + extra, max(wt, 0.004)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
+        """The box and its lid (on the `lid` link)."""
         return self._base(p, detail) + self._lid(p, detail)
 
-    def joints(self, p):
+    def joints(self, p: dict[str, Any]) -> list[Joint]:
+        """The lid's motion: lifted straight up, or hinged at the back."""
         Dl, Wl, lt = self._lid_dims(p)
         z0 = self._lid_z(p)
         if p["lid_style"] == "lift_off":
@@ -743,7 +566,8 @@ class StorageBox(PartsFactory):
                                                   np.array([-Dl / 2, 0.0, z0]), "lid"),
                            0.0, math.radians(110))]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """The underside, the lid's `top` and the box floor (`interior_0`)."""
         D, W, sc, r, fl = self._dims(p)
         wt = p["wall_thickness"]
         Dl, Wl, lt = self._lid_dims(p)
@@ -751,7 +575,7 @@ class StorageBox(PartsFactory):
         rim = 0.0 if p["lid_style"] == "lift_off" else 0.012
         inset = max(r, 0.0) + 0.002
         # the underside: the (scaled) plan 0.5 mm in from its edge
-        foot = _largest_polygon(self._plan(D, W, r).scale((sc, sc)).offset(
+        foot = largest_polygon(self._plan(D, W, r).scale((sc, sc)).offset(
             -0.0005, m3d.JoinType.Miter, 2.0))
         return [support_polygon("bottom", (0, 0, 0), foot, subpart=Subpart.Bottom, up=False),
                 support_rect("top", (0, 0, z_top), Dl / 2 - inset - rim, Wl / 2 - inset - rim),

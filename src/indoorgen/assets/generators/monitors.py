@@ -4,8 +4,9 @@ from __future__ import annotations
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, cylinder
 from indoorgen.model.tags import Semantics as S
 

@@ -7,7 +7,7 @@ one watertight shell. The leaf skeletons are computed for all leaves at once wit
 placeholder encloses them in one box computed from the very same points (so its bounding box is
 exact and cheap).
 
-`loft` and `arc_paths` are public: the other decor/household modules reuse them.
+`loft` lives in `assets.shapes.sweeps` (woven baskets use it too).
 """
 from __future__ import annotations
 
@@ -18,14 +18,15 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
+from indoorgen.assets.shapes.sweeps import loft
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
-OVERLAP = 0.002
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
 #: how far (radians) a leaf's direction turns downwards over its length at droop = 1
 DROOP_TURN = 2.2
@@ -35,34 +36,6 @@ Z = np.array([0.0, 0.0, 1.0])
 
 
 # ------------------------------------------------------------------------------ swept solids
-def loft(rings: np.ndarray, start: np.ndarray | None = None, end: np.ndarray | None = None
-         ) -> m3d.Manifold:
-    """A closed solid through `rings` (n, k, 3): ring i joined to ring i+1 by k quads, both ends
-    closed by a fan to an apex (`start` / `end`, default the ring's centroid). Rings must be
-    consistently ordered and the sweep must not cross itself; the winding is fixed from the
-    signed volume, so either ring direction works."""
-    rings = np.asarray(rings, float)
-    n, k, _ = rings.shape
-    a0 = rings[0].mean(axis=0) if start is None else np.asarray(start, float)
-    a1 = rings[-1].mean(axis=0) if end is None else np.asarray(end, float)
-    verts = np.vstack([rings.reshape(-1, 3), a0, a1])
-    i = (np.arange(n - 1) * k)[:, None]
-    j = np.arange(k)[None, :]
-    jn = (j + 1) % k
-    q00, q01 = (i + j).ravel(), (i + jn).ravel()
-    q10, q11 = q00 + k, q01 + k
-    js, jns = j.ravel(), jn.ravel()
-    ia0, ia1, last = n * k, n * k + 1, (n - 1) * k
-    tris = np.vstack([np.c_[q00, q01, q11], np.c_[q00, q11, q10],
-                      np.c_[np.full(k, ia0), jns, js],
-                      np.c_[np.full(k, ia1), last + js, last + jns]])
-    tv = verts[tris]
-    vol = np.einsum("ij,ij->i", tv[:, 0], np.cross(tv[:, 1], tv[:, 2])).sum()
-    if vol < 0:
-        tris = tris[:, ::-1]
-    mesh = m3d.Mesh(vert_properties=np.ascontiguousarray(verts, np.float32),
-                    tri_verts=np.ascontiguousarray(tris, np.uint32))
-    return m3d.Manifold(mesh)
 
 
 def arc_paths(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, length: np.ndarray,
@@ -84,7 +57,7 @@ def arc_paths(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, leng
     return pts, tang, side, normal
 
 
-def tube_rings(pts: np.ndarray, side: np.ndarray, normal: np.ndarray, radius: np.ndarray,
+def stem_rings(pts: np.ndarray, side: np.ndarray, normal: np.ndarray, radius: np.ndarray,
                sections: int = 8) -> np.ndarray:
     """Circular rings (L, n, sections, 3) around planar paths `pts` (L, n, 3) whose cross
     sections are spanned by `side` (L, 3) and `normal` (L, n, 3); `radius` is (L, n)."""
@@ -150,10 +123,12 @@ class Leaves:
         return ring, start, pts[:, n]
 
     def solids(self, n: int = 6) -> list[m3d.Manifold]:
+        """One lofted solid per leaf."""
         ring, start, tip = self.rings(n)
         return [loft(ring[i], start[i], tip[i]) for i in range(len(ring))]
 
     def points(self, n: int = 6) -> np.ndarray:
+        """Every vertex of every leaf (for the placeholder's bounding box)."""
         ring, start, tip = self.rings(n)
         return np.vstack([ring.reshape(-1, 3), start, tip])
 
@@ -168,6 +143,7 @@ class Leaves:
                                       np.minimum(self.elevation + 0.15, 1.5), self.elevation)
 
     def points_per_leaf(self, n: int = 6) -> np.ndarray:
+        """The z of each leaf's vertices, one row per leaf."""
         ring, start, tip = self.rings(n)
         return np.concatenate([ring.reshape(len(ring), -1, 3), start[:, None], tip[:, None]],
                               axis=1)[..., 2]
@@ -182,14 +158,15 @@ def stem_solids(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray,
     pts, tang, side, normal = arc_paths(base, azimuth, elevation, length, droop, n)
     s = np.linspace(0.0, 1.0, n + 1)
     rad = r0[:, None] + (r1 - r0)[:, None] * s[None, :]
-    rings = tube_rings(pts, side, normal, rad, sections)
+    rings = stem_rings(pts, side, normal, rad, sections)
     starts = pts[:, 0] - tang[:, 0] * r0[:, None] * 0.5
     ends = pts[:, -1] + tang[:, -1] * r1[:, None] * 0.8
     solids = [loft(rings[i], starts[i], ends[i]) for i in range(len(base))] if build else []
     return solids, np.vstack([rings.reshape(-1, 3), starts, ends])
 
 
-def stem_points(base, azimuth, elevation, length, droop, u: np.ndarray, n: int = 6
+def stem_points(base: np.ndarray, azimuth: np.ndarray, elevation: np.ndarray, length: np.ndarray,
+                droop: np.ndarray, u: np.ndarray, n: int = 6
                 ) -> tuple[np.ndarray, np.ndarray]:
     """Points (and tangents) at fractions `u` (L, m) along the stems' arcs, interpolated on the
     same polyline the stem tubes are swept along (so a point is on the stem's axis)."""
@@ -203,7 +180,7 @@ def stem_points(base, azimuth, elevation, length, droop, u: np.ndarray, n: int =
     return p, d / np.linalg.norm(d, axis=-1, keepdims=True)
 
 
-def _leaf_parts(leaves: "Leaves", build: bool, n: int = 6) -> list[Part]:
+def _leaf_parts(leaves: Leaves, build: bool, n: int = 6) -> list[Part]:
     """The leaves as foliage parts (none when only the placeholder is wanted)."""
     return [Part(s, "foliage") for s in leaves.solids(n)] if build else []
 
@@ -241,21 +218,23 @@ def pot_parts(p: dict[str, Any], detail: bool, z0: float = 0.0) -> list[Part]:
     rs = np.array([pot_radius(p, t) for t in ts])
     if not detail:
         return [Part(cylinder(float(rs.max()), H, (0, 0, z0), 16, circumscribed=True), "ceramic")]
-    outer = [(0.0, z0)] + [(float(r), z0 + float(t) * H) for r, t in zip(rs, ts)]
+    outer = [(0.0, z0)] + [(float(r), z0 + float(t) * H) for r, t in zip(rs, ts, strict=True)]
     # the inner wall at the same heights as the outer one: a constant wall thickness
-    inner = [(float(r) - w, z0 + float(t) * H) for r, t in zip(rs[::-1], ts[::-1]) if t >= t_floor]
+    inner = [(float(r) - w, z0 + float(t) * H) for r, t in zip(rs[::-1], ts[::-1], strict=True)
+             if t >= t_floor]
     pot = lathe(outer + inner + [(0.0, z0 + zs - 0.01)], 48)
     # the soil follows the inner wall 0.8 mm into it, from just under the recess floor to 2 mm
     # above the nominal soil top (the same piecewise-linear profile: it never pokes outside)
     t_lo, t_hi = (zs - 0.011) / H, (zs + 0.002) / H
     tz = np.union1d(ts[(ts > t_lo) & (ts < t_hi)], [t_lo, t_hi])
     rz = np.interp(tz, ts, rs) - w + 0.0008
-    soil = lathe([(0.0, z0 + t_lo * H)] + [(float(r), z0 + float(t) * H) for r, t in zip(rz, tz)]
+    soil = lathe([(0.0, z0 + t_lo * H)] + [(float(r), z0 + float(t) * H) for r, t in zip(rz, tz, strict=True)]
                  + [(0.0, z0 + t_hi * H)], 48)
     return [Part(pot, "ceramic"), Part(soil, "soil")]
 
 
 def pot_foot_radius(p: dict[str, Any]) -> float:
+    """The pot's radius at its base (what it stands on)."""
     return pot_radius(p, 0.0)
 
 
@@ -299,7 +278,7 @@ class _PlantBase(PartsFactory):
         H, _, zs, r_in = pot_layout(p)
         return self.foliage(p, self._z0(p) + zs, r_in, build)
 
-    def parts(self, p, detail):
+    def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         z0 = self._z0(p)
         out = self._saucer(p, detail) + pot_parts(p, detail, z0)
         plant, pts = self._foliage(p, detail)
@@ -312,7 +291,7 @@ class _PlantBase(PartsFactory):
     def _saucer(self, p, detail) -> list[Part]:
         return []
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         r = pot_foot_radius(p) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 48),
                                 subpart=Subpart.Bottom, up=False)]
@@ -358,12 +337,15 @@ class PottedPlant(_PlantBase):
                 (0.0, 0.005)]
         return [Part(lathe(prof, 48), "ceramic")]
 
-    def extra_surfaces(self, p):
+    def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
+        """The pot's foot (or the saucer's, with one) as the `bottom`."""
         r = (pot_foot_radius(p) + 0.03 - 0.012 if p["saucer"] else pot_foot_radius(p)) - 0.0005
         return [support_polygon("bottom", (0, 0, 0), circle_polygon(r, 48),
                                 subpart=Subpart.Bottom, up=False)]
 
-    def foliage(self, p, z_soil, r_in, build):
+    def foliage(self, p: dict[str, Any], z_soil: float, r_in: float, build: bool
+                ) -> tuple[list[Part], np.ndarray]:
+        """A rosette, stemmed branches or a palm's fronds, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "rosette":
             return self._rosette(p, z_soil, build)
@@ -469,7 +451,9 @@ class TabletopPlant(_PlantBase):
         "n_ribs": Param(6, 14, kind="int", doc="cactus ribs"),
     }
 
-    def foliage(self, p, z_soil, r_in, build):
+    def foliage(self, p: dict[str, Any], z_soil: float, r_in: float, build: bool
+                ) -> tuple[list[Part], np.ndarray]:
+        """A succulent rosette, a ribbed cactus or a leafy plant, by `plant_type`."""
         kind = p["plant_type"]
         if kind == "cactus":
             return self._cactus(p, z_soil, r_in, build)

@@ -17,8 +17,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.architectural import (
     MEMBER_OVERLAP,
     baluster,

@@ -7,8 +7,9 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S

@@ -18,7 +18,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from indoorgen.assets.base import Param
+from indoorgen.assets.protocol import Param
 from indoorgen.errors import ParameterError, UnknownGeneratorError
 
 log = logging.getLogger(__name__)
@@ -58,6 +58,7 @@ class MaterialMaps:
 
     @property
     def resolution(self) -> int:
+        """The maps' size in pixels (they are square)."""
         return int(self.base_color.shape[0])
 
 
@@ -78,11 +79,13 @@ class Layers:
 
 
 def srgb_to_linear(c: np.ndarray) -> np.ndarray:
+    """sRGB-encoded colour values (0..1) to linear light, for averaging colours."""
     c = np.asarray(c, np.float64)
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
 def linear_to_srgb(c: np.ndarray) -> np.ndarray:
+    """Linear-light values to sRGB encoding (clamped to 0..1)."""
     c = np.clip(np.asarray(c, np.float64), 0.0, 1.0)
     return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)
 
@@ -168,6 +171,7 @@ class MaterialGenerator:
         return self._finish(layers, p, res)
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """The raw layers for resolved params `p` at `res` pixels, drawing from `rng`."""
         raise NotImplementedError
 
     def _finish(self, layers: Layers, p: dict[str, Any], res: int) -> MaterialMaps:
@@ -180,7 +184,8 @@ class MaterialGenerator:
             metal = np.clip(np.broadcast_to(layers.metallic, (res, res)), 0.0, 1.0).astype(F32)
         step = max(1, res // 64)  # a 64 x 64 subsample is plenty for the mean
         lin = srgb_to_linear(color[::step, ::step].reshape(-1, 3)).mean(axis=0)
-        mean_color = tuple(float(x) for x in linear_to_srgb(lin))
+        r, g, b = (float(x) for x in linear_to_srgb(lin))
+        mean_color = (r, g, b)
         return MaterialMaps(
             name=self.name, base_color=color, roughness=rough, normal=normal, metallic=metal,
             mean_color=mean_color, mean_roughness=float(rough.mean()),

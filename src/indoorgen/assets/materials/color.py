@@ -31,7 +31,7 @@ def scale_value(color: np.ndarray, factor: float) -> np.ndarray:
     return np.array(colorsys.hsv_to_rgb(h, s, float(np.clip(v * factor, 0.0, 1.0))), F32)
 
 
-def mix(a: np.ndarray, b: np.ndarray, t: np.ndarray | float) -> np.ndarray:
+def mix(a: np.ndarray, b: np.ndarray, t: np.ndarray | float | np.floating) -> np.ndarray:
     """Linear blend of colours (or colour fields) a -> b by t (scalar or (H, W) field)."""
     t = np.asarray(t, F32)
     if t.ndim >= 2:
@@ -54,4 +54,5 @@ def modulate(color: np.ndarray, factor: np.ndarray) -> np.ndarray:
 
 
 def solid(color: np.ndarray, res: int) -> np.ndarray:
+    """A (res, res, 3) image of one colour."""
     return np.broadcast_to(np.asarray(color, F32), (res, res, 3)).astype(F32)

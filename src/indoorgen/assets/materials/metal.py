@@ -11,10 +11,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, ramp, rgb, scale_value
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -49,6 +49,7 @@ class BrushedSteel(_Metal):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Alloy colour with fine brushing streaks along u in colour, roughness and relief."""
         base = jitter(rgb(METAL_TONES[p["tone"]]), rng, 0.01, 0.05, 0.03)
         streak = brush_streaks(res, rng)
         coarse = brush_streaks(res, rng, 0.15)
@@ -76,6 +77,7 @@ class Chrome(_Metal):
     TINTS = {"chrome": "#d8dadc", "nickel": "#d4cfc4", "silver": "#e6e6e4"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A near-mirror plating with faint smudges and hairline scratches."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.02, 0.02)
         smudge = nz.spectral_noise(res, rng, knee=6.0, beta=1.8)
         sm = nz.smoothstep(0.5, 1.8, smudge) * F32(p["smudges"])
@@ -105,6 +107,7 @@ class Brass(_Metal):
     ALLOYS = {"brass": "#e0c27a", "bronze": "#c99a62", "copper": "#e0a080", "gold": "#f0cf72"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Polished or brushed brass, bronze or copper with patchy, less metallic tarnish."""
         base = jitter(rgb(self.ALLOYS[p["alloy"]]), rng, 0.008, 0.05, 0.03)
         streak = brush_streaks(res, rng) if p["brushed"] else nz.spectral_noise(res, rng, knee=4.0)
         amt = 0.05 if p["brushed"] else 0.01
@@ -140,14 +143,15 @@ class PaintedMetal(_Metal):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Paint colour with orange-peel relief; chips show bare metal where asked."""
         paint = jitter(rgb(PAINTS[p["color"]]), rng, 0.01, 0.04, 0.04)
         peel = nz.band_noise(res, rng, 48.0, 20.0)
         low = nz.spectral_noise(res, rng, knee=3.0, beta=2.0)
         g = nz.grain(res, rng)
         col = modulate(paint, 1.0 + 0.015 * peel + 0.02 * low + 0.008 * g)
         rough = F32(0.55 - 0.45 * p["gloss"]) + F32(0.03) * peel + F32(0.01) * g
-        height = F32(0.1 * p["orange_peel"]) * peel
-        metal = np.zeros((res, res), F32)
+        height: np.ndarray = F32(0.1 * p["orange_peel"]) * peel
+        metal: np.ndarray = np.zeros((res, res), F32)
         if p["chips"] > 0.02:
             cn = nz.spectral_noise(res, rng, knee=14.0, beta=1.6)
             thr = 3.2 - 2.2 * p["chips"]
@@ -178,6 +182,7 @@ class RustyMetal(_Metal):
             "dark": ("#2a1a12", "#4e2a18", "#7a4424")}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Steel with rough, flaky, non-metallic rust patches."""
         c0, c1, c2 = (jitter(rgb(c), rng, 0.01, 0.05, 0.05) for c in self.HUES[p["hue"]])
         steel = jitter(rgb("#8f9194"), rng, 0.01, 0.05, 0.05)
         field = nz.smooth_warp(res, rng, 5.0, 0.015, beta=1.5)
@@ -210,6 +215,7 @@ class GalvanizedSteel(_Metal):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Zinc spangle crystals of differing brightness and white-rust bloom."""
         cells = nz.worley(res, p["spangle"], rng, 1.0)
         n = cells.n * cells.n
         bright = (1.0 + 2 * p["contrast"] * (rng.random(n) - 0.5)).astype(F32)[cells.cell]

@@ -66,6 +66,7 @@ def unit(x: np.ndarray) -> np.ndarray:
 
 
 def fract(x: np.ndarray) -> np.ndarray:
+    """The fractional part x - floor(x), in [0, 1) (wraps coordinates onto the tile)."""
     return x - np.floor(x)
 
 
@@ -117,7 +118,7 @@ def _shaped(res: int, rng: np.random.Generator, filt: tuple[np.ndarray, int],
     amp, K = filt
     lead = () if count is None else (count,)
     half = res // 2 + 1
-    if 2 * K + 1 >= res or K + 1 >= half:
+    if res <= 2 * K + 1 or half <= K + 1:
         spec = (rng.random(lead + (res, half, 2), dtype=F32) - F32(0.5)).view(np.complex64)[..., 0]
         spec *= amp
     else:

@@ -10,10 +10,11 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, scale_value, solid
+from indoorgen.assets.materials.textile import weave
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -52,6 +53,7 @@ class Paper(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Fibrous matte paper in its tone, with ruled lines where asked."""
         c = jitter(rgb(PAPERS[p["color"]]), rng, 0.005, 0.05, 0.02)
         fb = fibres(res, rng)
         col = modulate(c, 1.0 + 0.025 * fb)
@@ -83,6 +85,7 @@ class Cardboard(MaterialGenerator):
     COLORS = {"kraft": "#c09a6a", "brown": "#a07a50", "white_top": "#e8e4da", "grey": "#a8a49c"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Kraft fibres with the flute ridges showing through."""
         c = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         fb = fibres(res, rng)
         specks = nz.smoothstep(2.8, 3.3, nz.spectral_noise(res, rng, knee=res / 6, beta=1.0))
@@ -135,10 +138,10 @@ class BookCover(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Cloth weave, leatherette grain or printed paper, with optional foil."""
         c = jitter(rgb(BOOK_COLORS[p["color"]]), rng, 0.01, 0.06, 0.05)
         u, v = nz.grid(res)
         if p["binding"] == "cloth":
-            from indoorgen.assets.materials.textile import weave
             wv = weave(res, 96, 96, "plain")
             fb = nz.spectral_noise(res, rng, knee=res / 5, beta=0.8)
             col = modulate(c, (0.8 + 0.2 * wv.height) * (1 + 0.04 * fb))
@@ -195,6 +198,7 @@ class Leaf(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A waxy green blade with a raised, lighter vein network."""
         dark, light = (jitter(rgb(x), rng, 0.01, 0.06, 0.05) for x in LEAVES[p["kind"]])
         major = nz.worley(res, p["veins"], rng, 0.9)
         minor = nz.worley(res, int(p["veins"]) * 5, rng, 1.0)
@@ -260,6 +264,7 @@ class StripedWallpaper(_Wallpaper):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A main stripe and its pinstripes on the paper ground."""
         bg, main, accent = self.colors(p, rng)
         n = int(p["repeats"])
         u, _ = nz.grid(res)
@@ -323,6 +328,7 @@ class DamaskWallpaper(_Wallpaper):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A symmetric floral ornament in a half-drop repeat, tone on tone."""
         bg, main, accent = self.colors(p, rng)
         n = 2 * int(p["repeats"])
         rows = n
@@ -363,6 +369,7 @@ class GeometricWallpaper(_Wallpaper):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """The chosen geometric motif printed on the paper ground."""
         bg, main, accent = self.colors(p, rng)
         n = int(p["repeats"])
         w = F32(p["line_width"] / n)

@@ -11,10 +11,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, solid
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -65,6 +65,7 @@ class Marble(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A cloudy ground crossed by branching veins at two scales."""
         g, c, v = (jitter(rgb(x), rng, 0.01, 0.05, 0.03) for x in MARBLES[p["kind"]])
         cloud = nz.spectral_noise(res, rng, knee=3.0, beta=1.8, hi=40.0)
         col = mix(solid(g, res), c, nz.smoothstep(-1.0, 2.0, cloud))
@@ -105,6 +106,7 @@ class Granite(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A polished mosaic of mineral crystals in two grain sizes."""
         minerals = GRANITES[p["kind"]]
         cols = np.stack([jitter(rgb(c), rng, 0.01, 0.08, 0.06) for c, _ in minerals])
         probs = np.array([w for _, w in minerals], float)
@@ -144,6 +146,7 @@ class Concrete(MaterialGenerator):
     TONES = {"grey": "#9c9c98", "light": "#c4c2bc", "dark": "#6c6c6a", "warm": "#aca496"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Mottled grey cement with sand grain and air-bubble pits."""
         base = jitter(rgb(self.TONES[p["tone"]]), rng, 0.01, 0.06, 0.04)
         cloud = nz.spectral_noise(res, rng, knee=5.0, beta=1.3)
         sand = nz.spectral_noise(res, rng, knee=res / 4, beta=0.6)
@@ -188,6 +191,7 @@ class Terrazzo(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Angular chips of several colours in a polished cement matrix."""
         matrix = jitter(rgb(TERRAZZO_MATRIX[p["matrix"]]), rng, 0.01, 0.05, 0.03)
         pal_idx = rng.choice(len(TERRAZZO_CHIPS), int(p["colors"]), replace=False)
         pal = np.stack([jitter(rgb(TERRAZZO_CHIPS[i]), rng, 0.01, 0.05, 0.05) for i in pal_idx])
@@ -229,6 +233,7 @@ class Slate(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Dark layered stone with stepped cleft terraces."""
         c0, c1 = (jitter(rgb(x), rng, 0.01, 0.06, 0.05) for x in SLATES[p["kind"]])
         n = nz.spectral_noise(res, rng, knee=3.0, beta=1.7)
         lv = float(p["layers"])
@@ -260,6 +265,7 @@ class Soil(MaterialGenerator):
     TONES = {"peat": "#3a2a1e", "loam": "#4e3a28", "clay": "#7a5a40", "dry": "#8a7258"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Dark crumbly clumps with lighter grit and bits of bark."""
         base = jitter(rgb(self.TONES[p["tone"]]), rng, 0.01, 0.06, 0.06)
         clumps = nz.worley(res, 36, rng, 1.0)
         crumb = nz.spectral_noise(res, rng, knee=res / 5, beta=0.8)

@@ -10,10 +10,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, scale_value, solid
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -49,6 +49,7 @@ class GlazedCeramic(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Glossy glaze that pools darker and breaks lighter over the relief."""
         glaze = jitter(rgb(GLAZES[p["color"]]), rng, 0.01, 0.05, 0.04)
         pool = nz.spectral_noise(res, rng, knee=5.0, beta=1.6)
         fine = nz.spectral_noise(res, rng, knee=40.0, beta=1.2)
@@ -81,6 +82,7 @@ class MatteCeramic(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Dry, rough stoneware speckled with iron spots."""
         base = jitter(rgb(STONEWARE[p["color"]]), rng, 0.01, 0.05, 0.04)
         low = nz.spectral_noise(res, rng, knee=4.0, beta=1.8)
         grain = nz.spectral_noise(res, rng, knee=100.0, beta=1.0)
@@ -107,6 +109,7 @@ class Porcelain(MaterialGenerator):
     TINTS = {"white": "#f4f4f2", "cool": "#eef1f4", "warm": "#f4f0e8", "bone": "#ece6d8"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Pure white, very smooth, with a faint cool tint."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.05, 0.01)
         low = nz.spectral_noise(res, rng, knee=3.0, beta=2.0)
         col = modulate(base, 1.0 + 0.006 * low)
@@ -133,6 +136,7 @@ class ClearGlass(MaterialGenerator):
              "blue": "#c8dcec"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Faintly green, mirror-smooth, mostly transparent glass."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.05, 0.02)
         wave = nz.spectral_noise(res, rng, knee=2.0, beta=2.5)
         dust = speckles(res, rng, 0.3, 0.1)
@@ -159,6 +163,7 @@ class FrostedGlass(MaterialGenerator):
     TINTS = {"white": "#eceeee", "green": "#dce8e2", "grey": "#c8cacc"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Rough, diffusing, translucent sandblasted glass."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.05, 0.02)
         blast = nz.spectral_noise(res, rng, knee=res / 5, beta=0.8)
         low = nz.spectral_noise(res, rng, knee=4.0, beta=2.0)
@@ -183,6 +188,7 @@ class ScreenGlass(MaterialGenerator):
     TINTS = {"black": "#0e0f10", "blue_black": "#0b0e14", "grey": "#1c1d1f"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Near-black glossy glass with faint smudges and a pixel grid."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.05, 0.05)
         smudge = nz.spectral_noise(res, rng, knee=8.0, beta=1.6)
         sm = nz.smoothstep(0.6, 1.8, smudge) * F32(p["smudges"])
@@ -209,6 +215,7 @@ class Mirror(MaterialGenerator):
     TINTS = {"silver": "#e8eaea", "bronze": "#cdb89c", "grey": "#a4a8aa"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A near-perfect metallic reflector, dimmed where the silvering has aged."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.004, 0.03, 0.02)
         spots = nz.spectral_noise(res, rng, knee=24.0, beta=1.2)
         thr = 3.0 - 3.0 * p["age"]
@@ -236,6 +243,7 @@ class Water(MaterialGenerator):
     TINTS = {"clear": "#eef6f6", "blue": "#d4e6ee", "green": "#d6e8dc"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Clear, faintly tinted water with gentle ripples."""
         base = jitter(rgb(self.TINTS[p["tint"]]), rng, 0.005, 0.05, 0.02)
         ripple = nz.band_noise(res, rng, 6.0, 3.0, stretch=(1.0, 1.6))
         g = nz.grain(res, rng)
@@ -268,6 +276,7 @@ class GlossyPlastic(MaterialGenerator):
     params = _plastic_params((0.04, 0.2))
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Saturated, smooth plastic with faint flow marks."""
         base = jitter(rgb(PLASTICS[p["color"]]), rng, 0.01, 0.05, 0.04)
         flow = nz.spectral_noise(res, rng, knee=3.0, beta=2.2, stretch=(3.0, 1.0))
         col = modulate(base, 1.0 + 0.015 * flow)
@@ -286,6 +295,7 @@ class MattePlastic(MaterialGenerator):
     params = _plastic_params((0.45, 0.8))
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Plastic with a fine uniform micro-grain."""
         base = jitter(rgb(PLASTICS[p["color"]]), rng, 0.01, 0.05, 0.04)
         grain = nz.spectral_noise(res, rng, knee=res / 4, beta=0.7)
         low = nz.spectral_noise(res, rng, knee=3.0, beta=2.0)
@@ -308,6 +318,7 @@ class TexturedPlastic(MaterialGenerator):
               "depth": Param(0.3, 1.0, doc="relief depth")}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Stippled or leather-grain moulded plastic."""
         base = jitter(rgb(PLASTICS[p["color"]]), rng, 0.01, 0.05, 0.04)
         cells = nz.worley(res, p["cells"], rng, 0.9)
         bump = nz.smoothstep(0.0, 0.35, cells.border)
@@ -336,6 +347,7 @@ class Wax(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Soft waxy sheen with faint vertical drips and mottling."""
         base = jitter(rgb(WAXES[p["color"]]), rng, 0.01, 0.05, 0.04)
         drip = nz.spectral_noise(res, rng, knee=10.0, beta=1.4, stretch=(1.0, 8.0))
         mottle = nz.spectral_noise(res, rng, knee=6.0, beta=1.6)
@@ -370,6 +382,7 @@ class FruitSkin(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Apple, citrus or other fruit skin: blush, dimples, lenticels."""
         c0, c1, c2 = (jitter(rgb(c), rng, 0.01, 0.05, 0.05) for c in FRUITS[p["fruit"]])
         citrus = p["fruit"] in ("orange", "lemon", "lime")
         streak = nz.spectral_noise(res, rng, knee=6.0, beta=1.6, stretch=(1.0, 4.0))
@@ -413,6 +426,7 @@ class Rubber(MaterialGenerator):
               "blue": "#28384e"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Dark matte rubber, optionally with a coin-stud or ribbed relief."""
         base = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.05, 0.06)
         grain = nz.spectral_noise(res, rng, knee=res / 4, beta=0.8)
         low = nz.spectral_noise(res, rng, knee=4.0, beta=2.0)
@@ -451,6 +465,7 @@ class Cork(MaterialGenerator):
     TONES = {"natural": "#b88a58", "light": "#d0aa78", "dark": "#8a5e38"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Pressed granules of varying tone with dark gaps between them."""
         base = jitter(rgb(self.TONES[p["tone"]]), rng, 0.01, 0.05, 0.04)
         cells = nz.worley(res, p["granules"], rng, 1.0)
         n = cells.n * cells.n
@@ -484,6 +499,7 @@ class Plaster(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Painted plaster with faint trowel undulation and fine paint texture."""
         base = jitter(rgb(WALL_PAINTS[p["color"]]), rng, 0.005, 0.04, 0.02)
         trowel = nz.spectral_noise(res, rng, knee=4.0, beta=1.8, angle=rng.uniform(0, 3.14),
                                    stretch=(1.0, 2.0))
@@ -510,10 +526,11 @@ class Stucco(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Knock-down plateaus or a sand-float finish in plaster."""
         base = jitter(rgb(WALL_PAINTS[p["color"]]), rng, 0.005, 0.04, 0.03)
         if p["style"] == "knockdown":
             n = nz.spectral_noise(res, rng, knee=p["scale"] * 1.5, beta=1.3)
-            height = nz.smoothstep(0.2, 0.5, n) + 0.2 * nz.smoothstep(0.9, 1.1, n)
+            height: np.ndarray = nz.smoothstep(0.2, 0.5, n) + 0.2 * nz.smoothstep(0.9, 1.1, n)
             col = modulate(base, 0.95 + 0.06 * height)
             rough = F32(0.85) - F32(0.08) * height
         elif p["style"] == "sand":

@@ -13,10 +13,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, ramp, rgb, scale_value, solid
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -28,6 +28,8 @@ FABRIC_COLORS = {"natural": "#d8ccb4", "white": "#ecebe6", "charcoal": "#3c3d40"
 
 @dataclass
 class Weave:
+    """A woven thread pattern per pixel: its relief, which thread is on top, and thread ids."""
+
     height: np.ndarray      # relief, 0 (gaps) .. 1 (top of a float)
     warp_top: np.ndarray    # bool: the warp (vertical) thread is on top here
     across: np.ndarray      # 0 at a thread's edges .. 1 at its centre line
@@ -118,6 +120,7 @@ class PlainWeave(_Fabric):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Over-under threads of the plain weave in the cloth's colour."""
         c = jitter(rgb(FABRIC_COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         weft = mix(c, np.array([0.92, 0.92, 0.9], F32), F32(p["two_tone"]))
         col, height = self.woven(res, rng, p["threads"], "plain", c, weft)
@@ -142,6 +145,7 @@ class Linen(_Fabric):
               "sage": "#9aa88e", "terracotta": "#b8714e", "washed_navy": "#4a5a72"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Plain weave of slubby, uneven flax threads in natural tones."""
         c = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         col, height = self.woven(res, rng, p["threads"], "plain", c, scale_value(c, 1.05),
                                  slub=p["slub"], thread_var=0.15)
@@ -166,6 +170,7 @@ class Denim(_Fabric):
               "khaki": "#b4a27a", "olive": "#5e6240", "grey": "#6a6c70"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Diagonal 2/2 twill ribs in the warp colour, washed out by `fade`."""
         c = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         weft = mix(c, rgb("#e4e0d6"), 0.7)
         col, height = self.woven(res, rng, p["threads"], "twill", c, weft, slub=0.3)
@@ -190,6 +195,7 @@ class Knit(_Fabric):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Rows of V-shaped stockinette stitches."""
         c = jitter(rgb(FABRIC_COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         nc = min(int(p["stitches"]), res // 6)
         nr = int(round(nc * 1.4))  # stitches are wider than tall
@@ -237,6 +243,7 @@ class Velvet(_Fabric):
               "teal": "#1e5a60", "burgundy": "#5a1a26", "grey": "#6a6a6e", "rust": "#8a3e22"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Deep saturated pile with crushed-pile sheen patches."""
         c = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.05, 0.04)
         crush = nz.spectral_noise(res, rng, knee=5.0, beta=1.5, stretch=(1.0, 1.8), angle=0.5)
         pile = nz.spectral_noise(res, rng, knee=res / 4, beta=0.6)
@@ -273,6 +280,7 @@ class Painting(_Fabric):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Colour fields and brush strokes over the canvas weave."""
         pal = [rgb(c) for c in PAINTING_PALETTES[int(p["palette"])]]
         order = rng.permutation(len(pal))
         field = nz.smooth_warp(res, rng, p["regions"], 0.03)
@@ -314,6 +322,7 @@ class Leather(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Pebbled cellular grain with darker creases."""
         c = jitter(rgb(LEATHERS[p["color"]]), rng, 0.01, 0.06, 0.05)
         n = min(int(p["grain"]), res // 4)
         cells = nz.worley(res, n, rng, 1.0)
@@ -345,6 +354,7 @@ class Suede(MaterialGenerator):
               "navy": "#2e3a54", "grey": "#7a7a7c", "rust": "#9a4e2e"}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Very rough napped leather with brushed light and dark patches."""
         c = jitter(rgb(self.COLORS[p["color"]]), rng, 0.01, 0.06, 0.05)
         nap = nz.spectral_noise(res, rng, knee=5.0, beta=1.6, stretch=(1.0, 1.5), angle=1.0)
         fib = nz.spectral_noise(res, rng, knee=res / 4, beta=0.5)
@@ -376,6 +386,7 @@ class Carpet(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Dense cut-pile tufts with soft shading, optionally heathered."""
         c = jitter(rgb(CARPET_COLORS[p["color"]]), rng, 0.01, 0.06, 0.05)
         f = min(p["tufts"], res / 3.0)
         tuft = nz.band_noise(res, rng, f, f * 0.4)
@@ -408,6 +419,7 @@ class BerberCarpet(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Rows of yarn loops with dark flecks."""
         base, fleck = (jitter(rgb(x), rng, 0.01, 0.05, 0.05) for x in BERBER[p["color"]])
         n = min(int(p["loops"]), res // 5)
         rows = n + n % 2  # even, so the alternating offsets wrap
@@ -450,6 +462,7 @@ class PatternedRug(MaterialGenerator):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A lattice of stepped diamond medallions in the palette, pile texture on top."""
         pal = np.stack([jitter(rgb(c), rng, 0.01, 0.05, 0.05) for c in RUG_PALETTES[p["palette"]]])
         k = int(p["medallions"])
         u, v = nz.grid(res)

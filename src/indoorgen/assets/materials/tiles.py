@@ -11,10 +11,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, solid
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 
@@ -27,6 +27,7 @@ GROUT_COLORS = {"white": "#e4e2dc", "light_grey": "#bcbcb8", "grey": "#8a8a88",
 
 def tile_params(count: tuple[int, int], count_doc: str,
                 colors: tuple[str, ...] = tuple(TILE_COLORS)) -> dict[str, Param]:
+    """The params every tile material shares, with its own count range and colours."""
     return {
         "count": Param(count[0], count[1], "int", doc=count_doc),
         "color": Param(kind="choice", choices=colors, doc="main tile colour"),
@@ -48,9 +49,11 @@ class _Tile(MaterialGenerator):
     bevel_ratio = 0.04  # bevel width relative to the tile width
 
     def layout(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> nz.Layout:
+        """The tiling of the texture (a `noise.Layout`: tile ids, local coordinates, joint distance)."""
         raise NotImplementedError
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Glazed tiles (main and accent colours, bevelled edges) in grout on the layout."""
         lay = self.layout(p, res, rng)
         size = lay.width
         main = jitter(rgb(TILE_COLORS[p["color"]]), rng, 0.01, 0.05, 0.03)
@@ -88,6 +91,7 @@ class SquareTile(_Tile):
     params = tile_params((3, 10), "tiles across the texture")
 
     def layout(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> nz.Layout:
+        """A square grid, `count` tiles each way."""
         return nz.grid_layout(res, p["count"], p["count"])
 
 
@@ -101,6 +105,7 @@ class HexTile(_Tile):
     params = tile_params((4, 14), "hexagons across the texture")
 
     def layout(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> nz.Layout:
+        """Hexagons, `count` across."""
         return nz.hex_layout(res, p["count"])
 
 
@@ -114,9 +119,11 @@ class HerringboneTile(_Tile):
               "ratio": Param(2, 4, "int", doc="tile length in tile widths")}
 
     def layout(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> nz.Layout:
+        """Tiles `ratio` widths long in a herringbone, `count` repeats across."""
         return nz.herringbone_layout(res, p["ratio"], p["count"])
 
     def tile_size_m(self, p: dict[str, Any]) -> float:
+        """The texture's width in metres, for 75 mm wide tiles."""
         return 2 * p["ratio"] * p["count"] * 0.075  # 75 mm wide tiles
 
 
@@ -133,6 +140,7 @@ class SubwayTile(_Tile):
               "glaze": Param(kind="choice", choices=("gloss", "satin"), doc="tile glaze")}
 
     def layout(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> nz.Layout:
+        """2:1 bricks in running bond (every other row offset by half a tile)."""
         rows = 2 * int(p["count"])
         return nz.grid_layout(res, p["count"], rows, np.tile([0.25, 0.75], rows // 2))
 
@@ -178,6 +186,7 @@ class Brick(_Brick):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Clay faces in varied colours, sandy and burnt, set in recessed mortar."""
         lay = self.brick_layout(p, res)
         light, dark = (jitter(rgb(c), rng, 0.01, 0.06, 0.05) for c in BRICKS[p["color"]])
         t = (0.5 + p["variation"] * (rng.random(lay.count) - 0.5)).astype(F32)[lay.tile]
@@ -210,6 +219,7 @@ class PaintedBrick(_Brick):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """The brick relief under one paint colour, mortar painted alike."""
         lay = self.brick_layout(p, res)
         paint = jitter(rgb(TILE_COLORS.get(p["color"], "#f0efea")), rng, 0.005, 0.04, 0.03)
         sand = nz.spectral_noise(res, rng, knee=res / 5, beta=0.7)

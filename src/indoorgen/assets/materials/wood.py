@@ -13,10 +13,10 @@ from typing import Any
 
 import numpy as np
 
-from indoorgen.assets.base import Param
 from indoorgen.assets.materials import noise as nz
 from indoorgen.assets.materials.base import Layers, MaterialGenerator, register
 from indoorgen.assets.materials.color import jitter, mix, modulate, rgb, scale_value
+from indoorgen.assets.protocol import Param
 
 F32 = np.float32
 TAU = 2.0 * math.pi
@@ -82,6 +82,7 @@ class _Wood(MaterialGenerator):
     pore_dark = 0.35
 
     def board_layout(self, res: int, rng: np.random.Generator, rows: int, splits: int) -> nz.Layout:
+        """The boards: `rows` rows of `splits` boards each, the rows' joints staggered."""
         return nz.grid_layout(res, splits, rows, nz.seam_safe_offsets(rng, rows))
 
     def grain(self, p: dict[str, Any], res: int, rng: np.random.Generator, lay: nz.Layout,
@@ -112,6 +113,7 @@ class _Wood(MaterialGenerator):
 
     def finish(self, p: dict[str, Any], res: int, rng: np.random.Generator, col: np.ndarray,
                prof: np.ndarray, pr: np.ndarray, joints: np.ndarray | None) -> Layers:
+        """The layers: the finish's roughness with smudges and pores, relief from rings, pores, joints."""
         lo, hi = FINISH_ROUGHNESS[p.get("finish", "satin")]
         base_r = rng.uniform(lo, hi)
         smudge = nz.spectral_noise(res, rng, knee=4.0, beta=2.0)
@@ -146,6 +148,7 @@ class _SolidWood(_Wood):
     """Boards of one species with optional visible joints."""
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Grain of the species (earlywood/latewood rings, rays) on boards with joints."""
         rows = int(p["boards"])
         splits = int(rng.integers(1, 3)) if rows > 1 else 1
         lay = self.board_layout(res, rng, rows, splits)
@@ -200,6 +203,7 @@ class PinePlanks(_Wood):
     })
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Pale planks with contrasting latewood, knots and visible joints."""
         rows = int(p["boards"])
         lay = self.board_layout(res, rng, rows, int(rng.integers(1, 3)))
         light, dark = jitter(rgb(self.light), rng), jitter(rgb(self.dark), rng)
@@ -230,6 +234,7 @@ class PaintedWood(_Wood):
     }
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """A flat paint colour over faint grain relief and board joints."""
         rows = int(p["boards"])
         lay = self.board_layout(res, rng, rows, 1)
         wood_col, prof, pr = self.grain(p, res, rng, lay, 40.0, 0.6, 0.5, rgb("#c9a57a"),
@@ -276,6 +281,7 @@ class Plywood(_Wood):
              "oak_veneer": ("#d6b282", "#a47848")}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Rotary-cut veneer: wide wavy low-contrast grain, no joints."""
         lay = nz.grid_layout(res, 1, 1)
         lt, dk = self.TONES[p["species"]]
         light, dark = jitter(rgb(lt), rng), jitter(rgb(dk), rng)
@@ -305,16 +311,19 @@ class Parquet(_Wood):
                         doc="surface finish; sets roughness"),
     }
     def tile_size_m(self, p: dict[str, Any]) -> float:
+        """The texture's width in metres, for 70 mm wide planks."""
         return 2 * p["ratio"] * p["repeats"] * 0.07  # 70 mm wide planks
 
     TONES = {"oak": ("#d0a672", "#9a6a3c"), "smoked_oak": ("#8f6a4a", "#54392a"),
              "walnut": ("#7a5238", "#3e2618"), "maple": ("#ecd3a8", "#c9a070")}
 
     def build(self, p: dict[str, Any], res: int, rng: np.random.Generator) -> Layers:
+        """Short planks in herringbone, straight grain along each plank."""
         lay = nz.herringbone_layout(res, p["ratio"], p["repeats"])
         lt, dk = self.TONES[p["tone"]]
         light, dark = jitter(rgb(lt), rng), jitter(rgb(dk), rng)
         vert = lay.vertical
+        assert vert is not None  # a herringbone layout flags its vertical planks
         wob_u = nz.spectral_noise(res, rng, knee=4.0, beta=2.0, hi=16.0, stretch=(4.0, 1.0))
         wob_v = nz.spectral_noise(res, rng, knee=4.0, beta=2.0, hi=16.0, stretch=(1.0, 4.0))
         wob = np.where(vert, wob_v, wob_u)

@@ -25,7 +25,7 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box, box_between, lathe, rod
 from indoorgen.model.tags import Subpart

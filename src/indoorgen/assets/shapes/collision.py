@@ -1,7 +1,8 @@
-"""Convex collision pieces: each part's hull, carved around moving parts and the free space over covered shelves, large hollow parts split."""
+"""Convex collision pieces: each part's hull, carved around moving parts and the free space over
+covered shelves, large hollow parts split."""
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import manifold3d as m3d
 import numpy as np

@@ -1,7 +1,7 @@
 """Frames, legs and cabinet carcasses: the structural skeletons many furniture families share."""
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import manifold3d as m3d
 
@@ -61,7 +61,8 @@ def carcass(depth: float, width: float, z0: float, z1: float, board: float,
         Part(box_between((-d2, -w2, z0), (d2, -w2 + t, z1)), slot),            # sides
         Part(box_between((-d2, w2 - t, z0), (d2, w2, z1)), slot),
         Part(box_between((-d2, -w2 + t - o, z0), (d2, w2 - t + o, z0 + t)), slot),  # bottom
-        Part(box_between((-d2, -w2 + t - o, z0 + t - o), (-d2 + back, w2 - t + o, z1 - (t if top else 0) + o)), bs),
+        Part(box_between((-d2, -w2 + t - o, z0 + t - o),
+                         (-d2 + back, w2 - t + o, z1 - (t if top else 0) + o)), bs),
     ]
     if top:
         solids.append(Part(box_between((-d2, -w2 + t - o, z1 - t), (d2, w2 - t + o, z1)), slot))

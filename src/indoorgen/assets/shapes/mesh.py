@@ -1,4 +1,5 @@
-"""Parts to meshes: `union` (manifold3d boolean, watertight, material slot kept per face), `concat` (no booleans, for placeholders), per-link unions and box UVs.
+"""Parts to meshes: `union` (manifold3d boolean, watertight, material slot kept per face),
+`concat` (no booleans, for placeholders), per-link unions and box UVs.
 
 Part identity survives the union through manifold3d's originalID (each part is made
 `as_original()`, and the result's `run_original_id`/`run_index` say which triangles came from
@@ -6,7 +7,7 @@ which part), so every output face keeps its part's material slot.
 """
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -26,13 +27,7 @@ def _mesh_arrays(man: m3d.Manifold) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _slot_table(parts: Sequence[Part], slots: Sequence[str] | None) -> list[str]:
-    if slots is not None:
-        out = list(slots)
-        for p in parts:
-            if p.slot not in out:
-                out.append(p.slot)
-        return out
-    out: list[str] = []
+    out: list[str] = [] if slots is None else list(slots)
     for p in parts:
         if p.slot not in out:
             out.append(p.slot)
@@ -157,7 +152,7 @@ def flip_caps(verts: np.ndarray, faces: np.ndarray, face_slots: np.ndarray,
             faces[k] = (c, a, d)
             faces[n] = (b, c, d)
             face_slots[k] = face_slots[n]
-            done.update((k, n))
+            done.update((int(k), int(n)))
     return faces, face_slots
 
 
@@ -196,8 +191,9 @@ def union_links(parts: Sequence[Part], slots: Sequence[str] | None = None,
         flinks.append(np.full(len(mesh.faces), li, np.int64))
     if len(meshes) == 1:
         return meshes[0], fslots[0], table, links, flinks[0]
-    mesh = trimesh.util.concatenate(meshes)
-    return mesh, np.concatenate(fslots), table, links, np.concatenate(flinks)
+    joined = trimesh.util.concatenate(meshes)
+    assert isinstance(joined, trimesh.Trimesh)  # concatenating Trimeshes gives a Trimesh
+    return joined, np.concatenate(fslots), table, links, np.concatenate(flinks)
 
 
 def box_uv(vertices: np.ndarray, faces: np.ndarray, scale: float = 1.0) -> np.ndarray:
@@ -215,5 +211,6 @@ def box_uv(vertices: np.ndarray, faces: np.ndarray, scale: float = 1.0) -> np.nd
 
 
 def manifold_to_trimesh(man: m3d.Manifold) -> trimesh.Trimesh:
+    """A manifold as an unprocessed trimesh (vertices and faces as manifold3d made them)."""
     v, f = _mesh_arrays(man)
     return trimesh.Trimesh(v, f, process=False)

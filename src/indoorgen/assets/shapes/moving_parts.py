@@ -1,8 +1,10 @@
-"""Parts that move and what moves them: handles, knobs, hinged doors, drawers, cabinet fronts, and their hinge or slide motions."""
+"""Parts that move and what moves them: handles, knobs, hinged doors, drawers, cabinet fronts, and
+their hinge or slide motions."""
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import manifold3d as m3d
 import numpy as np
@@ -13,9 +15,17 @@ from indoorgen.assets.shapes.primitives import Part, Vec3, box_between, rod
 # --------------------------------------------------------------------------- moving parts
 #: clearance between a moving part and the body it moves against (m)
 MOVING_GAP = 0.002
+#: door / drawer front thickness (m)
+FRONT_T = 0.018
+#: gap left around every front, so neighbouring fronts never touch (m)
+REVEAL = 0.002
+#: how far `bar_handle` and `knob` stand proud of the front they are on (their defaults) (m)
+HANDLE_STANDOFF = {"bar": 0.03, "knob": 0.025}
+#: how far hinged doors open (rad)
+DOOR_OPEN = math.radians(100)
 
 
-def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = 0.03,
+def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = HANDLE_STANDOFF["bar"],
                thickness: float = 0.012) -> m3d.Manifold:
     """A bar handle on a +X-facing front: a bar `length` long (vertical or horizontal) held
     `standoff` proud of the front by two posts; `center` is on the front face. The posts sink
@@ -34,7 +44,7 @@ def bar_handle(center: Vec3, length: float, vertical: bool, standoff: float = 0.
     return solid_union([bar] + posts)
 
 
-def knob(center: Vec3, radius: float = 0.015, standoff: float = 0.025) -> m3d.Manifold:
+def knob(center: Vec3, radius: float = 0.015, standoff: float = HANDLE_STANDOFF["knob"]) -> m3d.Manifold:
     """A round knob on a +X-facing front at `center`."""
     cx, cy, cz = (float(c) for c in center)
     stem = rod((cx - 0.001, cy, cz), (cx + standoff * 0.6, cy, cz), radius * 0.45, 12)
@@ -45,7 +55,7 @@ def knob(center: Vec3, radius: float = 0.015, standoff: float = 0.025) -> m3d.Ma
 def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thickness: float,
                 hinge: str, link: str, handle: str = "bar", slot: str = "front",
                 handle_slot: str = "metal", gap: float = MOVING_GAP
-                ) -> tuple[list[Part], "DoorJoint"]:
+                ) -> tuple[list[Part], DoorJoint]:
     """A door leaf covering the opening y0..y1, z0..z1 of a +X-facing front whose face is at
     `front_x`, hinged on its `hinge` side ("left" = low y, "right" = high y, "bottom" = a
     drop-down flap like an oven door, "top" = a lift-up flap). The leaf stands `gap` in front of
@@ -77,7 +87,7 @@ def hinged_door(front_x: float, y0: float, y1: float, z0: float, z1: float, thic
 def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: float,
            thickness: float, link: str, board: float = 0.012, handle: str = "bar",
            slot: str = "front", box_slot: str = "wood", handle_slot: str = "metal",
-           gap: float = MOVING_GAP) -> tuple[list[Part], "DoorJoint"]:
+           gap: float = MOVING_GAP) -> tuple[list[Part], DoorJoint]:
     """A drawer for the opening y0..y1, z0..z1 of a +X-facing front at `front_x`: a front panel
     `gap` proud of the face plus an open-topped box `depth` deep that slides inside the opening
     with `gap` clearance all round. Returns its parts (on `link`) and a prismatic joint along +X
@@ -105,7 +115,7 @@ def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: fl
 @dataclass(frozen=True)
 class DoorJoint:
     """How a moving part built here moves (kind, axis, origin, link); the generator adds the
-    joint's name and range when it turns this into an `assets.base.Joint`."""
+    joint's name and range when it turns this into an `assets.protocol.Joint`."""
 
     kind: str
     axis: np.ndarray
@@ -149,9 +159,9 @@ class Front:
     kind: str
 
 
-def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thickness: float = 0.018,
+def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thickness: float = FRONT_T,
                    handle: str = "bar", prefix: str = "", slot: str = "front",
-                   handle_slot: str = "metal", reveal: float = 0.002
+                   handle_slot: str = "metal", reveal: float = REVEAL
                    ) -> list[tuple[list[Part], DoorJoint]]:
     """Doors, flaps and drawers for the `cells` of a +X front at `front_x`, each on its own link
     (`door_0`, `drawer_1`...); each cell is shrunk by `reveal` on every edge so neighbours never
@@ -174,4 +184,4 @@ def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thic
 
 
 #: how far cabinet fronts and their handles stand proud of the carcass (gap + leaf + bar handle)
-FRONT_PROUD = MOVING_GAP + 0.018 + 0.03
+FRONT_PROUD = MOVING_GAP + FRONT_T + HANDLE_STANDOFF["bar"]

@@ -1,4 +1,6 @@
-"""Solid building blocks as manifold3d Manifolds: boxes, bevelled and tapered boxes, cylinders, rods, lathed profiles, tori, panels, circle polygons.
+"""Solid building blocks as manifold3d Manifolds (boxes, bevelled and tapered boxes, rounded
+slabs, cylinders, rods, lathed profiles, tori, panels), the `Part` that tags one with its material
+slot and link, circle and rounded-rectangle polygons, and the overlap touching pieces share.
 
 Round things come in two flavours: `circumscribed=False` (the default, for detailed meshes) puts
 polygon vertices on the true circle, with one on each of +-X and +-Y when `sections` is a multiple
@@ -9,13 +11,20 @@ axes: the low-poly solid contains the true circle and still has the exact boundi
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import manifold3d as m3d
 import numpy as np
+import shapely.geometry as sg
 
-Vec3 = Sequence[float]
+#: a point or size in 3D: a tuple, a list or a numpy array of three floats
+Vec3 = Sequence[float] | np.ndarray
+
+#: how far touching pieces of one link interpenetrate, so that their union is one closed shell (m)
+OVERLAP = 0.002
+#: the same for millimetre-scale details of small objects (books, clocks, towels, laptops) (m)
+SMALL_OVERLAP = 0.001
 
 
 @dataclass(frozen=True)
@@ -30,6 +39,7 @@ class Part:
 
 
 def _round_sections(sections: int) -> int:
+    """`sections` rounded up to a multiple of 4 (at least 4): a vertex on each of +-X and +-Y."""
     return max(4, int(math.ceil(sections / 4.0)) * 4)
 
 
@@ -42,8 +52,13 @@ def box(extents: Vec3, center: Vec3 = (0.0, 0.0, 0.0)) -> m3d.Manifold:
 
 def box_between(lo: Vec3, hi: Vec3) -> m3d.Manifold:
     """An axis-aligned box spanning corner `lo` to corner `hi`."""
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    return box(hi - lo, (lo + hi) / 2)
+    a, b = np.asarray(lo, float), np.asarray(hi, float)
+    return box(b - a, (a + b) / 2)
+
+
+def board(lo: Vec3, hi: Vec3, slot: str = "wood", link: str = "base") -> Part:
+    """A box part spanning corner `lo` to corner `hi` (a board, rail, post or placeholder)."""
+    return Part(box_between(lo, hi), slot, link)
 
 
 def _octant_dirs(segments: int) -> np.ndarray:
@@ -88,6 +103,35 @@ def tapered_box(bottom_xy: tuple[float, float], top_xy: tuple[float, float], z0:
             for b in (-0.5, 0.5):
                 pts.append((cx + a * sx, cy + b * sy, z))
     return m3d.Manifold.hull_points(np.array(pts, float))
+
+
+def rounded_slab(dx: float, dy: float, z0: float, z1: float, corner: float,
+                 center: Sequence[float] = (0.0, 0.0), sections: int = 32) -> m3d.Manifold:
+    """A slab dx (X) by dy (Y) from z0 to z1 whose plan has corners rounded by `corner` (half
+    the smaller side: a stadium or a disc). Its bounding box is exact."""
+    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
+    n = max(4, int(math.ceil(sections / 4.0)) * 4)
+    a = 2 * np.pi * np.arange(n) / n
+    circ = r * np.c_[np.cos(a), np.sin(a)]
+    pts = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            c = np.array([center[0] + sx * (dx / 2 - r), center[1] + sy * (dy / 2 - r)])
+            for z in (z0, z1):
+                pts.append(np.c_[c[0] + circ[:, 0], c[1] + circ[:, 1], np.full(n, z)])
+    return m3d.Manifold.hull_points(np.vstack(pts))
+
+
+def rounded_rect_polygon(dx: float, dy: float, corner: float, inset: float,
+                         center: Sequence[float] = (0.0, 0.0)) -> sg.Polygon:
+    """The plan of `rounded_slab(dx, dy, ..., corner)` shrunk by `inset`, as a shapely polygon
+    (for support surfaces on rounded seats and tops)."""
+    r = min(max(corner, 1e-4), 0.5 * min(dx, dy) - 1e-6)
+    core = sg.box(center[0] - dx / 2 + r, center[1] - dy / 2 + r,
+                  center[0] + dx / 2 - r, center[1] + dy / 2 - r)
+    if r - inset > 1e-4:
+        return core.buffer(r - inset, 16)
+    return core.buffer(r - inset, 16, join_style=2)
 
 
 def cylinder(radius: float, height: float, center: Vec3 = (0.0, 0.0, 0.0), sections: int = 32,
@@ -163,15 +207,10 @@ def panel(width: float, height: float, thickness: float, center: Vec3 = (0.0, 0.
     return box(ext, center)
 
 
-def circle_polygon(radius: float, sections: int = 32, center: tuple[float, float] = (0.0, 0.0)):
+def circle_polygon(radius: float, sections: int = 32, center: tuple[float, float] = (0.0, 0.0)
+                   ) -> sg.Polygon:
     """A shapely polygon inscribed in a circle (vertices on it, one on +X), so that it lies inside
     any mesh disc of the same radius built with a multiple of `sections` segments."""
-    import shapely.geometry as sg
-
     n = _round_sections(sections)
     a = np.arange(n) * 2 * math.pi / n
     return sg.Polygon(np.c_[center[0] + radius * np.cos(a), center[1] + radius * np.sin(a)])
-
-
-#: how far touching pieces of one link interpenetrate, so that their union is one closed shell (m)
-OVERLAP = 0.002

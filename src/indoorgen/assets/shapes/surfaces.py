@@ -1,23 +1,26 @@
-"""Named surfaces a generator declares beyond its bounding box: support rectangles and polygons, bottoms, side faces."""
+"""Named surfaces a generator declares beyond its bounding box: support rectangles and polygons,
+bottoms, side faces."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 import shapely.geometry as sg
+from numpy.typing import ArrayLike
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.model.tags import Subpart
 
 
 # ------------------------------------------------------------------------- surface helpers
-def support_rect(name: str, center, half_x: float, half_y: float) -> Surface:
+def support_rect(name: str, center: ArrayLike, half_x: float, half_y: float) -> Surface:
     """An upward (+Z) support surface: a rectangle +-half_x (X) by +-half_y (Y) about `center`."""
     return Surface.rect(name, Subpart.SupportSurface, center, (0, 0, 1), (1, 0, 0),
                         max(half_x, 0.005), max(half_y, 0.005))
 
 
-def support_polygon(name: str, center, polygon: sg.Polygon, subpart=Subpart.SupportSurface,
+def support_polygon(name: str, center: ArrayLike, polygon: sg.Polygon,
+                    subpart: Subpart = Subpart.SupportSurface,
                     up: bool = True) -> Surface:
     """A horizontal surface with an arbitrary polygon in (x, y) about `center` (upward), or,
     with up=False, a downward one (a bottom: normal -Z, u = +X so v = -Y: y is mirrored)."""
@@ -29,7 +32,7 @@ def support_polygon(name: str, center, polygon: sg.Polygon, subpart=Subpart.Supp
                    np.array([1.0, 0.0, 0.0]), mirrored)
 
 
-def bottom_rect(center, half_x: float, half_y: float) -> Surface:
+def bottom_rect(center: ArrayLike, half_x: float, half_y: float) -> Surface:
     """A `bottom` (normal -Z) rectangle about `center`: a footprint smaller than the bbox."""
     return Surface.rect("bottom", Subpart.Bottom, center, (0, 0, -1), (1, 0, 0), half_x, half_y)
 

@@ -16,7 +16,7 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, Surface
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Subpart

@@ -10,7 +10,7 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Surface
+from indoorgen.assets.protocol import Surface
 from indoorgen.model.tags import Subpart
 
 Rect = tuple[float, float, float, float]  # (x0, x1, y0, y1)

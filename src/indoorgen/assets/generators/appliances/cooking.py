@@ -10,14 +10,6 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._cabinet_parts import (
-    interior_rect,
-    joint_for,
-    open_shell,
-    pull_bar,
-    window_leaf,
-)
 from indoorgen.assets.generators.appliances._parts import (
     rack_surface,
     rects_polygon,
@@ -25,6 +17,9 @@ from indoorgen.assets.generators.appliances._parts import (
     wire_rack,
 )
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.cabinet_parts import interior_rect, joint_for, open_shell, pull_bar, window_leaf
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, knob, slide_motion
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between, cylinder, lathe

@@ -7,10 +7,11 @@ from typing import Any
 
 import manifold3d as m3d
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import HANDLE_PROUD, joint_for, open_shell, pull_bar
 from indoorgen.assets.generators.appliances._parts import rack_surface, slotted_plate, wire_rack
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.cabinet_parts import HANDLE_PROUD, joint_for, open_shell, pull_bar
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, cylinder
 from indoorgen.assets.shapes.surfaces import bottom_rect

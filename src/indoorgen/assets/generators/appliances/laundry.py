@@ -5,9 +5,10 @@ from typing import Any
 
 import manifold3d as m3d
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import joint_for, open_shell
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.cabinet_parts import joint_for, open_shell
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, slide_motion
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box, box_between, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_rect

@@ -3,9 +3,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import joint_for, pull_bar, window_leaf
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.cabinet_parts import joint_for, pull_bar, window_leaf
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, hinge_motion, knob
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box_between, circle_polygon, cylinder
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect

@@ -12,16 +12,11 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
-from indoorgen.assets.generators._cabinet_parts import (
-    interior_rect,
-    joint_for,
-    open_shell,
-    pull_bar,
-    window_leaf,
-)
 from indoorgen.assets.generators.appliances._parts import rack_surface, wire_rack
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.cabinet_parts import interior_rect, joint_for, open_shell, pull_bar, window_leaf
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, hinge_motion, slide_motion
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect

@@ -13,9 +13,10 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.generators.bathroom._parts import FIXTURE_MATERIALS, Prim, prim_bounds, prim_solid
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
 from indoorgen.assets.shapes.moving_parts import Front, cabinet_fronts
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between

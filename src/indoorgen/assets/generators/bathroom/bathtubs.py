@@ -12,7 +12,6 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.generators.bathroom._parts import (
     FIXTURE_MATERIALS,
     corner_outline,
@@ -28,6 +27,8 @@ from indoorgen.assets.generators.bathroom._parts import (
     rounded_rect,
 )
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, cylinder, lathe, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

@@ -12,7 +12,6 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.generators.bathroom._parts import (
     FAUCET_STYLES,
     FIXTURE_MATERIALS,
@@ -28,6 +27,8 @@ from indoorgen.assets.generators.bathroom._parts import (
     rounded_rect,
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, MOVING_GAP, Front, cabinet_fronts

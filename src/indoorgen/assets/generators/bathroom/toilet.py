@@ -11,7 +11,6 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, Surface, register
 from indoorgen.assets.generators.bathroom._parts import (
     FIXTURE_MATERIALS,
     Prim,
@@ -24,6 +23,8 @@ from indoorgen.assets.generators.bathroom._parts import (
     rounded_rect,
 )
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import support_polygon

@@ -1,2 +1,2 @@
 """Kitchen cabinetry (cabinets) and the sink (sink); the cabinet units they are built from are in
-`_parts`, what they share with the appliances in `generators._cabinet_parts`."""
+`_parts`, what they share with the appliances in `assets.shapes.cabinet_parts`."""

@@ -9,9 +9,8 @@ from dataclasses import dataclass
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Joint, Surface
-from indoorgen.assets.generators._cabinet_parts import (
-    DOOR_OPEN,
+from indoorgen.assets.protocol import Joint, Surface
+from indoorgen.assets.shapes.cabinet_parts import (
     HANDLE_PROUD,
     interior_rect,
     joint_for,
@@ -21,6 +20,8 @@ from indoorgen.assets.generators._cabinet_parts import (
 )
 from indoorgen.assets.shapes.frames import carcass, frame
 from indoorgen.assets.shapes.moving_parts import (
+    DOOR_OPEN,
+    FRONT_T,
     MOVING_GAP,
     DoorJoint,
     Front,
@@ -32,8 +33,6 @@ from indoorgen.assets.shapes.primitives import Part, box_between
 
 #: how far the raised frame of a shaker front stands proud of the leaf (m)
 SHAKER_DEPTH = 0.006
-#: front panel thickness of cabinet doors and drawers (m)
-FRONT_T = 0.018
 #: gap between neighbouring fronts (m)
 REVEAL = 0.003
 

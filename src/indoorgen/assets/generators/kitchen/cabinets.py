@@ -10,10 +10,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from indoorgen.assets.base import Param, Surface, register
-from indoorgen.assets.generators._cabinet_parts import DOOR_OPEN
 from indoorgen.assets.generators.kitchen._parts import Unit, unit_parts
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.moving_parts import DOOR_OPEN
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S

@@ -8,8 +8,9 @@ from typing import Any
 import manifold3d as m3d
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, lathe, rod, torus
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

@@ -6,9 +6,10 @@ import math
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.kitchenware._parts import LID_GAP
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DoorJoint
 from indoorgen.assets.shapes.primitives import Part, cylinder, lathe
 from indoorgen.assets.shapes.vessels import (

@@ -13,9 +13,10 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.generators.kitchenware._parts import sweep
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder
 from indoorgen.assets.shapes.surfaces import support_polygon

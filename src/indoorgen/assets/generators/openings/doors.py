@@ -15,8 +15,9 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.base import Joint, Param, register
 from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.protocol import Joint, Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.architectural import (
     CASING_REVEAL,
     GLASS,

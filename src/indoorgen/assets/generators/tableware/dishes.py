@@ -1,8 +1,9 @@
 """Dishes: lathed plates and hollow bowls (bowls of `shapes.vessels`, shared with the fruit bowl)."""
 from __future__ import annotations
 
-from indoorgen.assets.base import Param, register
 from indoorgen.assets.parts_factory import PartsFactory
+from indoorgen.assets.protocol import Param
+from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.assets.shapes.vessels import (
