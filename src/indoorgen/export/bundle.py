@@ -284,7 +284,7 @@ def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
     (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
     from their generators (through `cache`, an `AssetCache`, so identical objects are built
     once)."""
-    from indoorgen.architecture import scene_architecture
+    from indoorgen.architecture.rebuild import scene_architecture
     from indoorgen.assets.cache import AssetCache
     cache = cache or AssetCache()
     arch = None

@@ -71,7 +71,7 @@ def write_formats(bundle: ExportBundle, out_dir: Path, formats: str | Iterable[s
     from indoorgen.export.mjcf import write_mjcf
     from indoorgen.export.obj import MeshFiles, write_obj_format
     from indoorgen.export.urdf import write_urdf
-    from indoorgen.export.usd import write_usd_bundle
+    from indoorgen.export.usd.scene import write_usd_bundle
 
     fmts = parse_formats(formats)
     out_dir = Path(out_dir)

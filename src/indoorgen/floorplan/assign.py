@@ -21,8 +21,9 @@ import numpy as np
 
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL
 from indoorgen.floorplan.grid import OUTSIDE, Grid, room_polygon, runs
-from indoorgen.floorplan.rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
+from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.view import polygon_exterior_runs
+from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
 
 
 def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
@@ -72,7 +73,7 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         if n >= k_door:
             door_ok[a].add(b)
             door_ok[b].add(a)
-    order = [r for r in rooms if room_type_of(r) == STAIRCASE]
+    order = [r for r in rooms if room_type_of(r) == STAIRCASE_ROOM]
     order += [r for r in nx.bfs_tree(graph, entry) if r not in order]
     order += [r for r in rooms if r not in order]
     # the spaces each room could take at all (type, exterior, staircase, area), best first
@@ -81,12 +82,12 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         t = room_type_of(r)
         out = []
         for s in range(n_spaces):
-            if t == STAIRCASE:
+            if t == STAIRCASE_ROOM:
                 if in_stair[s] == 0:
                     continue
-            elif in_stair[s] > 0.3 * cells[s] or area[s] < MIN_AREA[t]:
+            elif in_stair[s] > 0.3 * cells[s] or area[s] < ROOM_TYPES[t].min_area:
                 continue
-            if (t in EXTERIOR_TYPES or r in needs_exterior) and ext[s] < k_door:
+            if (ROOM_TYPES[t].exterior or r in needs_exterior) and ext[s] < k_door:
                 continue
             if len(door_ok[s]) < graph.degree(r):
                 continue  # too few door-wide neighbours for the room's graph neighbours

@@ -16,7 +16,7 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.room import validate_polygon
+from indoorgen.model.polygons import validate_polygon
 
 #: The planning grid (m): every split, extrusion and rectangular bevel lies on it.
 GRID = 0.5

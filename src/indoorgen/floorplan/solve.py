@@ -39,7 +39,7 @@ _DIRS = ((1, 0), (-1, 0), (0, 1), (0, -1))  # (dy, dx)
 
 
 @dataclass
-class AnnealConfig:
+class FloorplanAnnealConfig:
     """Annealing schedule: `steps_per_storey` steps per storey; temperature from `t_start` to
     `t_end` (exponential); `p_stair` of steps move the staircase in multi-storey homes."""
 
@@ -220,10 +220,10 @@ def valid(plan: GridPlan, rooms: set[str]) -> bool:
 
 
 def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
-           config: AnnealConfig | None = None) -> AnnealStats:
+           config: FloorplanAnnealConfig | None = None) -> AnnealStats:
     """Anneal `plan` in place under `problem`. A plan that starts violating some hard
     constraint is driven towards satisfying it; one that satisfies them keeps doing so."""
-    cfg = config or AnnealConfig()
+    cfg = config or FloorplanAnnealConfig()
     t_start = time.perf_counter()
     ev = Evaluator(problem, plan, check=cfg.check)
     cur = ev.evaluate()

@@ -18,7 +18,8 @@ from shapely.geometry.polygon import orient
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
 from indoorgen.floorplan.graph import HomeGraph
 from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
-from indoorgen.floorplan.rooms import MIN_AREA, TYPICAL_AREA, room_type_of
+from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.model.room_types import ROOM_TYPES
 
 _TURN = math.radians(20.0)
 
@@ -123,7 +124,8 @@ class GridPlan(RoomView):
         for k, g in enumerate(graph.storeys):
             entry = graph.storey_entry(k)
             self._paths.update(nx.single_source_shortest_path(g, entry))
-        self._typical_total = [math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
+        self._typical_total = [math.fsum(ROOM_TYPES[room_type_of(n)].typical_area
+                                         for n in names)
                                for names in self.names]
 
     # -- RoomView: the basics ----------------------------------------------------------------
@@ -157,10 +159,10 @@ class GridPlan(RoomView):
         return self._paths[o]
 
     def typical_area(self, o: str) -> float:
-        return TYPICAL_AREA[room_type_of(o)]
+        return ROOM_TYPES[room_type_of(o)].typical_area
 
     def min_area(self, o: str) -> float:
-        return MIN_AREA[room_type_of(o)]
+        return ROOM_TYPES[room_type_of(o)].min_area
 
     def ideal_area(self, o: str) -> float:
         k = self.index[o][0]

@@ -16,10 +16,10 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
+from indoorgen.architecture.room import RoomGeometry
 from indoorgen.assets import Asset, Surface
 from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh
 from indoorgen.constraints.relations import Relation
-from indoorgen.floorplan.room import RoomGeometry
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Semantics
 from indoorgen.solver.broadphase import Broadphase, world_boxes

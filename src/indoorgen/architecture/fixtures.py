@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import trimesh
 
+from indoorgen.assets import get_factory
 from indoorgen.errors import IndoorGenError
 from indoorgen.rng import stream
 
@@ -40,7 +41,6 @@ def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
     """Sample `generator`'s params from (seed, path), pin `fixed`, check and build; None if the
     generator does not exist or rejects the values."""
     try:
-        from indoorgen.assets import get_factory
         f = get_factory(generator)
         params = f.sample_params(stream(seed, "architecture", *path))
         params.update(fixed)

@@ -1,82 +1,38 @@
-"""floorplan.json round trips; predefined plans; solidified rooms behave like RoomGeometry."""
+"""Solidified homes: predefined and generated plans as solids, rooms that behave like a single
+room's RoomGeometry, stairs and floor openings, catalogue doors, windows and stairs."""
 from __future__ import annotations
-
-import copy
-import json
-from pathlib import Path
 
 import numpy as np
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.errors import ConfigError, IndoorGenError, InvalidGeometryError
-from indoorgen.floorplan.check import floorplan_problems
+from indoorgen.architecture.room import RoomGeometry
+from indoorgen.architecture.solidify import HomeRoomGeometry, solidify
+from indoorgen.assets.cache import AssetCache
+from indoorgen.constraints.expressions import scene
+from indoorgen.errors import InvalidGeometryError
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-from indoorgen.floorplan.io import dumps, from_json, read_floorplan, to_json, write_floorplan
-from indoorgen.floorplan.room import RoomGeometry
-from indoorgen.floorplan.solidify import HomeRoomGeometry, solidify
-from indoorgen.floorplan.solve import AnnealConfig
-from indoorgen.floorplan.usd import build_architecture_stage
+from indoorgen.floorplan.solve import FloorplanAnnealConfig
+from indoorgen.model.floorplan_io import from_json
 from indoorgen.model.scene import Room
-from indoorgen.model.tags import Subpart
+from indoorgen.model.tags import Semantics, Subpart
+from indoorgen.programs import get_program
+from indoorgen.solver.greedy import solve
+from indoorgen.solver.state import State
+from support.plans import apartment
 
-#: A hand-drawn five-room apartment with doors, an open kitchen, windows and a front door.
-APARTMENT = json.loads((Path(__file__).parent / "data" / "apartment.json").read_text())
 
-
-def test_predefined_plan_round_trips_and_solidifies(tmp_path):
-    fp = from_json(copy.deepcopy(APARTMENT))
-    assert floorplan_problems(fp) == []
-    write_floorplan(fp, tmp_path / "floorplan.json")
-    again = read_floorplan(tmp_path / "floorplan.json")
-    assert dumps(again) == dumps(fp)
-    assert to_json(again)["storeys"][0]["rooms"][2]["polygon"] == [[0, 5], [5, 5], [5, 8], [0, 8]]
-    arch = solidify(again)
-    assert set(arch.rooms) == {r["name"] for r in APARTMENT["storeys"][0]["rooms"]}
+def test_predefined_plan_solidifies():
+    arch = solidify(from_json(apartment()))
+    assert set(arch.rooms) == {r["name"] for r in apartment()["storeys"][0]["rooms"]}
     kinds = sorted(e.kind for e in arch.elements)
     assert kinds == ["door"] * 4 + ["window"] * 3   # three doors and the entrance
     living = arch.rooms["living_room_0"]
     assert {d.name for d in living.room.doors} == {"d0", "d1", "o0", "entrance"}
 
 
-def test_schema_keys_are_exactly_the_contract():
-    fp = generate_floorplan(2, FloorplanConfig(floors=2,
-                                               anneal=AnnealConfig(steps_per_storey=30)))
-    d = json.loads(dumps(fp))
-    assert set(d) == {"storeys", "stairs", "entrance"}
-    assert set(d["entrance"]) == {"room", "center"}
-    for s in d["storeys"]:
-        assert set(s) == {"level", "elevation", "height", "rooms", "doors", "windows", "openings"}
-        assert all(set(r) == {"name", "type", "polygon"} for r in s["rooms"])
-        assert all(set(x) == {"name", "rooms", "center", "width", "height"}
-                   for x in s["doors"] + s["openings"])
-        assert all(set(w) == {"name", "room", "center", "width", "height", "sill"}
-                   for w in s["windows"])
-    assert [set(st) for st in d["stairs"]] == [{"from_level", "to_level", "polygon"}]
-    # a generated plan round-trips too
-    assert dumps(from_json(d)) == dumps(fp)
-
-
-@pytest.mark.parametrize("mutate, err, match", [
-    (lambda d: d["storeys"][0]["rooms"][1].update(polygon=[[5, 0], [10, 0], [10, 5], [5, 5]]),
-     InvalidGeometryError, "overlap"),
-    (lambda d: d["storeys"][0]["rooms"][0].update(type="ballroom"), IndoorGenError, "ballroom"),
-    (lambda d: d["storeys"][0]["doors"][0].update(rooms=["living_room_0", "attic_0"]),
-     ConfigError, "attic_0"),
-    (lambda d: d["storeys"][0].pop("rooms"), ConfigError, "no 'rooms'"),
-    (lambda d: d["storeys"][0]["windows"][0].update(width="wide"), ConfigError, "number"),
-    (lambda d: d["storeys"][0]["rooms"][0].update(polygon=[[0, 0], [6, 5], [6, 0], [0, 5]]),
-     InvalidGeometryError, "simple polygon"),
-])
-def test_bad_predefined_plans_say_what_is_wrong(mutate, err, match):
-    d = copy.deepcopy(APARTMENT)
-    mutate(d)
-    with pytest.raises(err, match=match):
-        from_json(d)
-
-
 def test_door_off_its_wall_is_rejected_when_solidifying():
-    d = copy.deepcopy(APARTMENT)
+    d = apartment()
     d["storeys"][0]["doors"][0]["center"] = [2.5, 3.0]
     with pytest.raises(InvalidGeometryError, match="d0"):
         solidify(from_json(d))
@@ -85,7 +41,7 @@ def test_door_off_its_wall_is_rejected_when_solidifying():
 @pytest.fixture(scope="module")
 def two_storeys():
     fp = generate_floorplan(1, FloorplanConfig(floors=2,
-                                               anneal=AnnealConfig(steps_per_storey=60)))
+                                               anneal=FloorplanAnnealConfig(steps_per_storey=60)))
     return fp, solidify(fp)
 
 
@@ -144,39 +100,6 @@ def test_stairs_and_floor_opening(two_storeys):
     assert any(z.intersects(hole) for z in upper.door_zones)
 
 
-def test_usd_stage_layout(two_storeys):
-    from pxr import UsdGeom
-    fp, arch = two_storeys
-    stage = build_architecture_stage(arch)
-    assert UsdGeom.GetStageUpAxis(stage) == "Z"
-    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0
-    assert stage.GetDefaultPrim().GetPath() == "/World"
-    for storey in fp.storeys:
-        for r in storey.rooms:
-            for part in ("floor", "ceiling", "walls"):
-                prim = stage.GetPrimAtPath(f"/World/Architecture/storey_{storey.level}/"
-                                           f"{r.name}/{part}")
-                assert prim.IsValid(), (r.name, part)
-                assert prim.GetAttribute("indoorgen:room").Get() == r.name
-        for d in storey.doors:
-            assert stage.GetPrimAtPath(f"/World/Architecture/storey_{storey.level}/doors/"
-                                       f"{d.name}").IsValid()
-        for w in storey.windows:
-            assert stage.GetPrimAtPath(f"/World/Architecture/storey_{storey.level}/windows/"
-                                       f"{w.name}").IsValid()
-    assert stage.GetPrimAtPath("/World/Architecture/stairs/stair_0_1").IsValid()
-
-
-def test_scene_room_json_is_unchanged_for_single_rooms():
-    """`Room.elevation` is written only when set, so single-room scene.json stays as before."""
-    r = Room("living_room_0", "living_room", [(0, 0), (4, 0), (4, 3), (0, 3)])
-    assert set(r.to_json()) == {"name", "type", "polygon", "height", "wall_thickness",
-                                "storey", "doors"}
-    up = Room("bedroom_2", "bedroom", [(0, 0), (4, 0), (4, 3), (0, 3)], storey=1, elevation=3.0)
-    assert up.to_json()["elevation"] == 3.0
-    assert Room.from_json(up.to_json()) == up and Room.from_json(r.to_json()) == r
-
-
 @pytest.fixture(scope="module")
 def catalogue_arch(two_storeys):
     """The two-storey plan solidified with catalogue doors, windows and stairs."""
@@ -195,10 +118,6 @@ def test_catalogue_doors_windows_and_stairs(two_storeys, catalogue_arch):
     assert st.shape().buffer(0.3).contains(sg.box(*stair.bounds[0][:2], *stair.bounds[1][:2]))
     for e in arch.elements:
         assert all(m.is_watertight for m in e.meshes.values()), e.name
-    stage = build_architecture_stage(arch)
-    d = fp.storeys[0].doors[0]
-    prim = stage.GetPrimAtPath(f"/World/Architecture/storey_0/doors/{d.name}")
-    assert prim.GetAttribute("indoorgen:generator").Get() == "interior_door"
 
 
 @pytest.mark.xdist_group("catalogue_arch")
@@ -216,3 +135,19 @@ def test_catalogue_elements_carry_their_own_collision_pieces(catalogue_arch):
             assert piece.is_watertight and piece.is_convex, e.name
             assert np.all(piece.bounds[0] >= lo - 0.02), e.name
             assert np.all(piece.bounds[1] <= hi + 0.02), e.name
+
+
+@pytest.mark.slow
+def test_existing_object_solver_furnishes_an_upper_storey_room(two_storeys):
+    _, arch = two_storeys
+    name = next(n for n, g in arch.rooms.items()
+                if g.storey == 1 and g.room.room_type == "living_room")
+    geom = arch.rooms[name]
+    state = State({name: geom}, AssetCache())
+    problem = get_program("living_room")(scene()[Semantics.Room].named(name))
+    solve(state, {name: problem}, 0, steps={"large": 60, "medium": 30, "small": 30})
+    assert len(state.objects) > 3
+    free = sg.Polygon(geom.room.polygon).buffer(0.01)
+    for o, ob in state.objects.items():
+        assert free.contains(state.footprint(o)), o
+        assert ob.position[2] >= geom.elevation - 1e-6

@@ -16,7 +16,7 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.plan import DoorSpec, Entrance, Storey, WindowSpec
+from indoorgen.model.floorplan import DoorSpec, Entrance, Storey, WindowSpec
 
 
 @dataclass(frozen=True)

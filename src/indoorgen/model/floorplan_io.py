@@ -32,8 +32,8 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import ConfigError, InvalidGeometryError
-from indoorgen.floorplan.plan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
-from indoorgen.floorplan.rooms import check_room_type
+from indoorgen.model.floorplan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
+from indoorgen.model.room_types import room_type
 
 
 def _r(x: float) -> float:
@@ -155,7 +155,7 @@ def from_json(d: dict) -> Floorplan:
             if name in names:
                 raise ConfigError(f"floorplan.json: room name {name!r} is used twice")
             names.add(name)
-            st.rooms.append(RoomSpec(name, check_room_type(rr.get(room, "type", str)),
+            st.rooms.append(RoomSpec(name, room_type(rr.get(room, "type", str), floorplan=True).name,
                                      rr.polygon(rr.get(room, "polygon", list), "polygon")))
         for key, target in (("doors", st.doors), ("openings", st.openings)):
             for i, door in enumerate(r.get(s, key, list, [])):
