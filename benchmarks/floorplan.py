@@ -66,7 +66,10 @@ def main() -> None:
         ok = [r for r in rows if "error" not in r]
         errors = [r for r in rows if "error" in r]
         bad = [r for r in ok if r["problems"]]
-        q = lambda xs, p: float(np.percentile(xs, p)) if xs else float("nan")
+
+        def q(xs, p):
+            return float(np.percentile(xs, p)) if xs else float("nan")
+
         wall = [r["wall"] for r in ok]
         cpu = [r["cpu"] for r in ok]
         print(f"== {floors} storey(s), {len(rows)} seeds ==")

@@ -175,13 +175,13 @@ def test_door_openings_are_cut(rect_geo):
 def test_door_zones_inside_room(geo):
     poly = sg.Polygon(geo.room.polygon)
     assert len(geo.door_zones) == len(geo.room.doors)
-    for door, zone in zip(geo.room.doors, geo.door_zones):
+    for door, zone in zip(geo.room.doors, geo.door_zones, strict=False):
         assert zone.area > 0
         assert poly.buffer(1e-9).contains(zone)
         assert zone.area == pytest.approx((door.width + 0.2) * door.clearance_depth)
     meshes = geo.door_zone_meshes(height=2.0)
     assert len(meshes) == len(geo.door_zones)
-    for m, z in zip(meshes, geo.door_zones):
+    for m, z in zip(meshes, geo.door_zones, strict=False):
         assert m.is_watertight
         assert m.bounds[0, 2] == pytest.approx(0.0) and m.bounds[1, 2] == pytest.approx(2.0)
         assert m.volume == pytest.approx(z.area * 2.0)

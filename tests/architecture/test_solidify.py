@@ -11,15 +11,13 @@ from indoorgen.architecture.solidify import HomeRoomGeometry, solidify
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.expressions import scene
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.model.floorplan_io import from_json
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics, Subpart
 from indoorgen.programs import get_program
 from indoorgen.solver.greedy import solve
 from indoorgen.solver.state import State
-from support.plans import apartment
+from support.plans import apartment, two_storey_home
 
 
 def test_predefined_plan_solidifies():
@@ -40,9 +38,7 @@ def test_door_off_its_wall_is_rejected_when_solidifying():
 
 @pytest.fixture(scope="module")
 def two_storeys():
-    fp = generate_floorplan(1, FloorplanConfig(floors=2,
-                                               anneal=FloorplanAnnealConfig(steps_per_storey=60)))
-    return fp, solidify(fp)
+    return two_storey_home()
 
 
 def test_rooms_are_room_geometries(two_storeys):

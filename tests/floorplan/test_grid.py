@@ -13,7 +13,7 @@ from indoorgen.floorplan.grid import opening, runs, trace
 
 def _union(mask):
     ys, xs = np.nonzero(mask)
-    return shapely.union_all([sg.box(x, y, x + 1, y + 1) for x, y in zip(xs, ys)])
+    return shapely.union_all([sg.box(x, y, x + 1, y + 1) for x, y in zip(xs, ys, strict=False)])
 
 
 @settings(max_examples=150, deadline=None)

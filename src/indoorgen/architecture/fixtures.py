@@ -73,7 +73,7 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
          height: float, wall: float, elevation: float) -> Fixture | None:
     """A door leaf with frame and casings in the wall at `center`, swinging towards `into`."""
     gen = "exterior_door" if exterior else "interior_door"
-    fixed = {"width": width, "height": height, "wall_thickness": wall}
+    fixed: dict[str, Any] = {"width": width, "height": height, "wall_thickness": wall}
     if exterior:
         fixed["sidelites"] = "none"
     got = _build(gen, seed, ("door", name), fixed)

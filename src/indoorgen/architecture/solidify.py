@@ -86,7 +86,7 @@ class Element:
 
     @classmethod
     def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str]
-           ) -> "Element":
+           ) -> Element:
         """An element holding a catalogue fixture's mesh."""
         return cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
                    dict(fx.params), list(fx.collision))
@@ -222,11 +222,11 @@ def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, wid
             continue
         s = float(np.dot(face - pts[i], d[i]) / length[i])
         dist = abs(cross_2d(d[i] / length[i], face - pts[i]))
-        if -width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05:
-            if best is None or dist < best[2]:
-                off = float(np.clip(s, min(width / 2, length[i] / 2),
-                                    max(length[i] - width / 2, length[i] / 2)))
-                best = (i, off, dist)
+        if (-width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05
+                and (best is None or dist < best[2])):
+            off = float(np.clip(s, min(width / 2, length[i] / 2),
+                                max(length[i] - width / 2, length[i] / 2)))
+            best = (i, off, dist)
     return None if best is None else best[:2]
 
 
@@ -313,27 +313,27 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         fx = None if seed is None else fixtures.door(
             seed, d.name, False, f.center, f.n if swing_into == b else -f.n, d.width,
             d.height, f.thickness, e)
-        w, hh = fx.opening if fx is not None else (d.width, d.height)
-        cutter = _box(f, w, 3 * t.exterior, e - 0.01, e + hh)
-        for r in d.rooms:
-            cut[r].append(cutter)
-        for r, side in ((a, -f.n), (b, f.n)):
-            dep = SWING_DEPTH if r == swing_into else PASS_DEPTH
-            add_door(r, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
+        ow, oh = _opening(fx, d.width, d.height)
+        cutter = _box(f, ow, 3 * t.exterior, e - 0.01, e + oh)
+        for rn in d.rooms:
+            cut[rn].append(cutter)
+        for rn, side in ((a, -f.n), (b, f.n)):
+            dep = SWING_DEPTH if rn == swing_into else PASS_DEPTH
+            add_door(rn, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
         elements.append(Element.of(fx, d.name, "door", swing_into, storey.level,
                                    ["door", "architecture"]) if fx is not None
                         else _door_element(d, f, storey))
     for o in storey.openings:
         f = door_frame(storey, o, t)
         cutter = _box(f, o.width, 3 * t.exterior, e - 0.01, e + h + 0.01)
-        for r, side in ((o.rooms[0], -f.n), (o.rooms[1], f.n)):
-            cut[r].append(cutter)
-            add_door(r, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
+        for rn, side in ((o.rooms[0], -f.n), (o.rooms[1], f.n)):
+            cut[rn].append(cutter)
+            add_door(rn, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
     for w in storey.windows:
         f = window_frame(storey, w, t)
         fx = None if seed is None else fixtures.window(
             seed, w.name, f.center, -f.n, w.width, w.height, w.sill, f.thickness, e)
-        ww, wh = fx.opening if fx is not None else (w.width, w.height)
+        ww, wh = _opening(fx, w.width, w.height)
         cut[w.room].append(_box(f, ww, 3 * t.exterior, e + w.sill, e + w.sill + wh))
         elements.append(Element.of(fx, w.name, "window", w.room, storey.level,
                                    ["window", "architecture"]) if fx is not None
@@ -344,8 +344,8 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         f = entrance_frame(storey, en, t)
         fx = None if seed is None else fixtures.door(
             seed, "entrance", True, f.center, -f.n, en.width, en.height, f.thickness, e)
-        w, hh = fx.opening if fx is not None else (en.width, en.height)
-        cut[en.room].append(_box(f, w, 3 * t.exterior, e - 0.01, e + hh))
+        ow, oh = _opening(fx, en.width, en.height)
+        cut[en.room].append(_box(f, ow, 3 * t.exterior, e - 0.01, e + oh))
         add_door(en.room, "entrance", f, -f.n, en.width, en.height, SWING_DEPTH, en.width + 0.2)
         elements.append(Element.of(fx, "entrance", "door", en.room, 0, ["door", "entrance",
                                                                        "architecture"])
@@ -400,6 +400,15 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
             [checked_mesh(wall, f"{r.name} walls")], surfaces, zones[r.name],
             storey=storey.level, elevation=e, plan_polygon=poly)
     return out
+
+
+def _opening(fx: fixtures.Fixture | None, width: float, height: float) -> tuple[float, float]:
+    """The rough opening (width, height) a catalogue door or window needs, or the plan's own
+    for the simple solids."""
+    if fx is None:
+        return width, height
+    assert fx.opening is not None  # doors and windows always state theirs
+    return fx.opening
 
 
 def _shift(s: Surface, lift: np.ndarray) -> Surface:

@@ -68,7 +68,7 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         return None
     area, in_stair, cells, ext, door = space_stats(grid, labels, stair)
     k_door = int(math.ceil(MIN_DOOR_WALL / grid.size - 1e-9))
-    door_ok = [set() for _ in range(n_spaces)]
+    door_ok: list[set[int]] = [set() for _ in range(n_spaces)]
     for (a, b), n in door.items():
         if n >= k_door:
             door_ok[a].add(b)
@@ -93,8 +93,8 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
                 continue  # too few door-wide neighbours for the room's graph neighbours
             out.append(s)
         noise = rng.normal(0.0, 0.25, len(out))
-        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise)]
-        fits[r] = [s for _, s in sorted(zip(cost, out))]
+        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise, strict=False)]
+        fits[r] = [s for _, s in sorted(zip(cost, out, strict=False))]
     nbrs = {r: list(graph.neighbors(r)) for r in rooms}
 
     def candidates(r: str, used: set[int], placed: dict[str, int]) -> list[int]:
@@ -114,7 +114,8 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
             expansions += 1
             if expansions > budget:
                 return False
-            placed[r], _ = s, used.add(s)
+            used.add(s)
+            placed[r] = s
             # forward check: every unplaced neighbour must keep some space next to this one
             if all(any(x not in used and x in door_ok[s] for x in fits[nb])
                    for nb in nbrs[r] if nb not in placed) and dfs(i + 1):

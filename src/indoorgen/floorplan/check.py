@@ -58,7 +58,7 @@ def _segment_through(lines, c: np.ndarray) -> float | None:
     from c to the nearer end of the straight piece containing it)."""
     for ln in getattr(lines, "geoms", [lines]):
         pts = np.asarray(getattr(ln, "coords", []))
-        for a, b in zip(pts[:-1], pts[1:]):
+        for a, b in zip(pts[:-1], pts[1:], strict=False):
             d = b - a
             L = float(np.hypot(*d))
             if L < 1e-9:
@@ -76,7 +76,7 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
     out = []
     for s in fp.storeys:
         shapes = [r.shape() for r in s.rooms]
-        for r, p in zip(s.rooms, shapes):
+        for r, p in zip(s.rooms, shapes, strict=False):
             if not p.is_valid or p.area <= 0:
                 out.append(f"{r.name} is not a valid polygon")
         total = sum(p.area for p in shapes)
@@ -88,7 +88,7 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             gap = c.symmetric_difference(union).area
             if gap > 1e-4:
                 out.append(f"rooms on storey {s.level} differ from its outline by {gap:.4f} m^2")
-        for r, p in zip(s.rooms, shapes):
+        for r, p in zip(s.rooms, shapes, strict=False):
             width = min_width(r.type)
             if narrow_area(p, width) > 0.01:
                 out.append(f"{r.name} is narrower than {width} m somewhere "

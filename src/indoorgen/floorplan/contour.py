@@ -100,6 +100,7 @@ def make_contour(rng: np.random.Generator, area: float, max_aspect: float = 1.6)
         if err < 0.06:
             break
         target *= area / poly.area
+    assert best is not None  # the loop ran at least once
     return best[1]
 
 

@@ -13,8 +13,8 @@ import dataclasses
 import logging
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 import shapely.geometry as sg
@@ -70,6 +70,7 @@ class FloorplanConfig:
     anneal: FloorplanAnnealConfig = field(default_factory=FloorplanAnnealConfig)
 
     def to_json(self) -> dict:
+        """The settings as plain JSON (room counts parsed), recorded with the plan."""
         return {"floors": self.floors, "rooms": parse_room_counts(self.rooms),
                 "area": self.area, "contour": self.contour, "height": self.height,
                 "slab": self.slab, "interior_wall": self.interior_wall,
@@ -271,7 +272,9 @@ def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator)
     for k, names in enumerate(plan.names):
         rooms = []
         for n in names:
-            pts = np.asarray(plan.polygon(n).exterior.coords)[:-1]
+            poly = plan.polygon(n)
+            assert poly is not None  # annealing keeps every room one simple polygon
+            pts = np.asarray(poly.exterior.coords)[:-1]
             rooms.append(RoomSpec(n, room_type_of(n),
                                   [(round(float(x), 6), round(float(y), 6)) for x, y in pts]))
         storeys.append(Storey(k, round(k * pitch, 6), cfg.height, rooms, doors[k], windows[k],

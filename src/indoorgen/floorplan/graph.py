@@ -18,8 +18,8 @@ across the home, with attributes ``type`` and ``level``) plus the entrance and s
 from __future__ import annotations
 
 import logging
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import networkx as nx
 import numpy as np
@@ -95,6 +95,7 @@ class HomeGraph:
 
     @property
     def n_storeys(self) -> int:
+        """Number of storeys."""
         return len(self.storeys)
 
     def rooms(self, level: int | None = None) -> list[str]:
@@ -116,11 +117,12 @@ class HomeGraph:
     def home(self) -> nx.Graph:
         """All storeys in one graph, consecutive staircase rooms joined by 'stair' edges."""
         g = nx.union_all(self.storeys) if self.storeys else nx.Graph()
-        for a, b in zip(self.stairs, self.stairs[1:]):
+        for a, b in zip(self.stairs, self.stairs[1:], strict=False):
             g.add_edge(a, b, kind="stair")
         return g
 
     def to_json(self) -> dict:
+        """The graph as JSON (the form `graph_from_spec` reads back)."""
         return {"storeys": [{"rooms": list(g.nodes), "edges": [sorted(e) for e in g.edges]}
                             for g in self.storeys],
                 "entrance": self.entrance, "stairs": list(self.stairs)}

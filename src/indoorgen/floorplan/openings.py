@@ -70,7 +70,7 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
     """Doors and open connections (full storey `height`) per storey, one per graph edge;
     `wall` is the interior wall thickness."""
     doors, openings = [], []
-    for k, g in enumerate(plan.graph.storeys):
+    for g in plan.graph.storeys:
         dk, ok = [], []
         depth = {n: len(plan.entry_path(n)) for n in g.nodes}
         for a, b in sorted(tuple(sorted(e)) for e in g.edges):
@@ -90,10 +90,8 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
             lo = wall / 2 + END_MARGIN + w / 2
             if length < 2 * lo:
                 continue
-            if rng.random() < 0.5:
-                t = length / 2
-            else:
-                t = lo if rng.random() < 0.5 else length - lo
+            # centred, or near one end (leaving wall for furniture)
+            t = length / 2 if rng.random() < 0.5 else (lo if rng.random() < 0.5 else length - lo)
             dk.append(DoorSpec(f"door_{a}_{b}", (a, b), _pt(p + t * u), w, DOOR_HEIGHT))
         doors.append(dk)
         openings.append(ok)
@@ -115,7 +113,7 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
     """Windows per storey on the straight exterior walls of rooms whose type takes them."""
     out = []
     for k, names in enumerate(plan.names):
-        wk = []
+        wk: list[WindowSpec] = []
         for name in names:
             spec = ROOM_TYPES[room_type_of(name)].windows
             if spec is None:

@@ -5,6 +5,8 @@ be narrow, closets, MIN_CLOSET_WIDTH). Everything else about a type is in
 """
 from __future__ import annotations
 
+from typing import Any
+
 from indoorgen.errors import ConfigError
 from indoorgen.model.room_types import LIVING_ROOM, ROOM_TYPES, room_type
 
@@ -31,11 +33,12 @@ def parse_room_counts(spec: str | dict | None) -> dict[str, int]:
     negative count."""
     if spec is None or spec == "":
         return {}
+    items: list[tuple[Any, Any]]
     if isinstance(spec, dict):
         items = list(spec.items())
     else:
-        items = [tuple(p.split("=", 1)) if "=" in p else (p, None)
-                 for p in str(spec).split(",") if p.strip()]
+        items = [(k, v if eq else None) for k, eq, v in
+                 (p.partition("=") for p in str(spec).split(",") if p.strip())]
     out: dict[str, int] = {}
     for k, v in items:
         if v is None:

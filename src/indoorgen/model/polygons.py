@@ -4,7 +4,7 @@ shapely result."""
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 import numpy.typing as npt
@@ -18,8 +18,8 @@ MIN_AREA = 0.5
 MIN_SIDE = 0.5
 
 #: A room outline as given: (x, y) points (closing point optional) or a shapely Polygon.
-PolygonLike = sg.Polygon | Iterable[Sequence[float]]
-Points = npt.NDArray[np.float64]
+PolygonLike: TypeAlias = "sg.Polygon | Iterable[Sequence[float]]"
+Points: TypeAlias = npt.NDArray[np.float64]
 
 
 def validate_polygon(polygon: PolygonLike) -> sg.Polygon:

@@ -10,6 +10,8 @@ from enum import Enum
 
 
 class Semantics(str, Enum):
+    """Object classes (flat: an object carries every class it belongs to) and room tags."""
+
     # rooms and architecture
     Room = "room"
     # broad object groups

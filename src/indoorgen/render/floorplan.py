@@ -88,8 +88,8 @@ def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
         f = window_frame(storey, wdw, t)
         _patch(ax, f.rect(wdw.width, -f.thickness / 2, f.thickness / 2),
                facecolor="white", edgecolor=WINDOW_COLOUR, linewidth=1.0, zorder=4)
-        a, b = f.center - wdw.width / 2 * f.u, f.center + wdw.width / 2 * f.u
-        ax.plot([a[0], b[0]], [a[1], b[1]], color=WINDOW_COLOUR, linewidth=1.2, zorder=5)
+        p, q = f.center - wdw.width / 2 * f.u, f.center + wdw.width / 2 * f.u
+        ax.plot([p[0], q[0]], [p[1], q[1]], color=WINDOW_COLOUR, linewidth=1.2, zorder=5)
     for d in storey.doors:
         f = door_frame(storey, d, t)
         a, b = d.rooms
@@ -106,8 +106,9 @@ def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
         tail = f.center + f.n * 1.2
         ax.add_patch(FancyArrow(tail[0], tail[1], *(-f.n * 0.8), width=0.12, head_width=0.4,
                                 head_length=0.3, color="#c0392b", zorder=6))
-        ax.text(*(f.center + f.n * 1.45), "entrance", fontsize=7, color="#c0392b",
-                ha="center", va="center", zorder=6)
+        x, y = f.center + f.n * 1.45
+        ax.text(x, y, "entrance", fontsize=7, color="#c0392b", ha="center", va="center",
+                zorder=6)
     for st in fp.stairs:
         if st.from_level == storey.level:
             _stair_symbol(ax, st)
@@ -133,7 +134,7 @@ def _door_symbol(ax: Axes, f: WallFrame, width: float, into: np.ndarray) -> None
     a0 = math.degrees(math.atan2(f.u[1], f.u[0]))
     a1 = math.degrees(math.atan2(into[1], into[0]))
     lo, hi = (a0, a1) if (a1 - a0) % 360 <= 180 else (a1, a0)
-    ax.add_patch(Arc(hinge, 2 * width, 2 * width, theta1=lo, theta2=hi, color="#7a4b1e",
+    ax.add_patch(Arc((hinge[0], hinge[1]), 2 * width, 2 * width, theta1=lo, theta2=hi, color="#7a4b1e",
                      linewidth=0.6, linestyle="-", zorder=5))
 
 
@@ -150,4 +151,5 @@ def _stair_symbol(ax: Axes, st: StairSpec) -> None:
     mid = p0 + right * width / 2
     ax.add_patch(FancyArrow(*(mid + up * 0.2), *(up * (run - 0.6)), width=0.03,
                             head_width=0.25, head_length=0.25, color="#333333", zorder=4))
-    ax.text(*(mid + up * 0.1 - 0.0), "up", fontsize=6, ha="center", va="top", zorder=6)
+    x, y = mid + up * 0.1
+    ax.text(x, y, "up", fontsize=6, ha="center", va="top", zorder=6)

@@ -2,19 +2,16 @@
 from __future__ import annotations
 
 import pytest
-from pxr import UsdGeom
+from pxr import Usd, UsdGeom
 
 from indoorgen.architecture.solidify import solidify
 from indoorgen.export.usd.architecture import build_architecture_stage, write_architecture_usd
-from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-from indoorgen.floorplan.solve import FloorplanAnnealConfig
+from support.plans import two_storey_home
 
 
 @pytest.fixture(scope="module")
 def two_storeys():
-    fp = generate_floorplan(1, FloorplanConfig(floors=2,
-                                               anneal=FloorplanAnnealConfig(steps_per_storey=60)))
-    return fp, solidify(fp)
+    return two_storey_home()
 
 
 def test_usd_stage_layout(two_storeys):
@@ -48,7 +45,6 @@ def test_catalogue_elements_name_their_generator(two_storeys):
 
 
 def test_written_file_opens_as_the_same_stage(two_storeys, tmp_path):
-    from pxr import Usd
     _, arch = two_storeys
     write_architecture_usd(arch, tmp_path / "architecture.usda")
     stage = Usd.Stage.Open(str(tmp_path / "architecture.usda"))

@@ -68,7 +68,9 @@ class Looks:
             tex = UsdShade.Shader.Define(self.stage, path.AppendChild(f"tex_{kind}"))
             tid = "UsdUVTexture"
             tex.CreateIdAttr(tid)
-            inp(tex, tid, "file", Sdf.AssetPath("./" + files[kind]))
+            file = files[kind]
+            assert file is not None  # only maps the material has are read
+            inp(tex, tid, "file", Sdf.AssetPath("./" + file))
             inp(tex, tid, "st").ConnectToSource(st_out)
             inp(tex, tid, "wrapS", "repeat")
             inp(tex, tid, "wrapT", "repeat")
@@ -112,7 +114,7 @@ class Looks:
 def _linear(c) -> tuple[float, float, float]:
     c = np.asarray(c, float)
     lin = np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
-    return tuple(float(x) for x in lin)
+    return float(lin[0]), float(lin[1]), float(lin[2])
 
 
 def bind_slots(mesh: UsdGeom.Mesh, face_slots: np.ndarray, slots: list[str],

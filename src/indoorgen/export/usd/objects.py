@@ -78,6 +78,7 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
                             whole=True)
                 _write_lights(stage, prim.GetPath(), asset)
             if physics and not fixed:
+                assert inertial is not None  # computed whenever physics is on
                 _rigid_body(prim, inertial["base"])
         if asset.joints:
             _write_lights(stage, prim.GetPath(), asset)
@@ -179,7 +180,7 @@ def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset
         joint.CreateBody0Rel().SetTargets([link_paths[j.parent]])
         joint.CreateBody1Rel().SetTargets([link_paths[j.child]])
         origin = Gf.Vec3f(*map(float, j.origin))
-        q = quat_between([1.0, 0.0, 0.0], j.axis)
+        q = quat_between(np.array([1.0, 0.0, 0.0]), j.axis)
         rot = Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:])))
         joint.CreateLocalPos0Attr(origin)
         joint.CreateLocalRot0Attr(rot)

@@ -9,7 +9,7 @@ from os import PathLike
 
 import numpy as np
 import trimesh
-from pxr import Sdf, Tf, Usd, UsdGeom, UsdSemantics, Vt
+from pxr import Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
 
 from indoorgen.errors import OutputError
 
@@ -22,11 +22,14 @@ ATTR_NAME = "indoorgen:name"
 SEMANTICS_TAXONOMY = "class"
 
 
-def new_stage() -> Usd.Stage:
-    """An empty in-memory stage: upAxis Z, metersPerUnit 1, default prim /World (an Xform)."""
+def new_stage(kilograms_per_unit: float | None = None) -> Usd.Stage:
+    """An empty in-memory stage: upAxis Z, metersPerUnit 1, kilogramsPerUnit when given,
+    default prim /World (an Xform)."""
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
     UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    if kilograms_per_unit is not None:
+        UsdPhysics.SetStageKilogramsPerUnit(stage, kilograms_per_unit)
     world = UsdGeom.Xform.Define(stage, "/World")
     stage.SetDefaultPrim(world.GetPrim())
     return stage

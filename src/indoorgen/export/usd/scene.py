@@ -112,8 +112,7 @@ def build_stage(bundle: ExportBundle, textures: TextureStore, *, layer_dir: Path
                 instancing: bool = True, physics: bool = True) -> Usd.Stage:
     """The in-memory stage of `bundle` (see the module docstring for its layout); texture paths
     are made relative to `layer_dir`, where the stage will be saved."""
-    stage = new_stage()
-    UsdPhysics.SetStageKilogramsPerUnit(stage, 1.0)
+    stage = new_stage(kilograms_per_unit=1.0)
     textures.ensure(bundle.all_matrefs())
     looks = Looks(stage, textures, Path(layer_dir))
     if physics:
@@ -152,11 +151,11 @@ def _write_architecture(stage: Usd.Stage, bundle: ExportBundle, looks: Looks,
         generator = el.kind if el.kind in ("floor", "ceiling", "wall") else f"{el.kind}_simple"
         tag_prim(prim, name=el.name, generator=generator, room=el.room, parent=el.parent,
                  semantics=el.semantics)
-        for part in el.parts:
-            mp = path.AppendChild(sanitize_name(part.name))
-            m = define_mesh(stage, mp, part.mesh, mesh_uv(part.mesh), corner_normals(part.mesh))
+        for piece in el.parts:
+            mp = path.AppendChild(sanitize_name(piece.name))
+            m = define_mesh(stage, mp, piece.mesh, mesh_uv(piece.mesh), corner_normals(piece.mesh))
             UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(
-                looks.get(part.material, part.slot in EMISSIVE_SLOTS))
+                looks.get(piece.material, piece.slot in EMISSIVE_SLOTS))
             if physics:
                 UsdPhysics.CollisionAPI.Apply(m.GetPrim())
                 UsdPhysics.MeshCollisionAPI.Apply(m.GetPrim()).CreateApproximationAttr(
