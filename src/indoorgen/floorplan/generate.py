@@ -22,13 +22,13 @@ import shapely.geometry as sg
 from indoorgen.constraints.expressions import Problem
 from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
-from indoorgen.floorplan.contour import GRID, make_contour, upper_contour, user_contour
+from indoorgen.floorplan.contour import make_contour, upper_contour, user_contour
 from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
 from indoorgen.floorplan.grid import OUTSIDE, make_grid
 from indoorgen.floorplan.openings import place_doors, place_entrance, place_stairs, place_windows
 from indoorgen.floorplan.rooms import parse_room_counts, room_type_of
 from indoorgen.floorplan.rules import room_problems
-from indoorgen.floorplan.solve import AnnealStats, FloorplanAnnealConfig, anneal
+from indoorgen.floorplan.solve import FloorplanAnnealConfig, anneal
 from indoorgen.floorplan.subdivide import MIN_SIDE, grow_hub, merge, mondrian
 from indoorgen.floorplan.view import GridPlan
 from indoorgen.model.floorplan import Floorplan, RoomSpec, Storey
@@ -282,5 +282,4 @@ def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator)
     return Floorplan(storeys, stairs, entrance)
 
 
-__all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan",
-           "room_problems", "storey_pitch", "GRID", "AnnealStats"]
+__all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan", "storey_pitch"]
