@@ -28,7 +28,7 @@ Vector = npt.NDArray[np.float64]
 
 @dataclass
 class RoomSpec:
-    """A room: unique `name`, `type` (a RoomType value) and CCW partition polygon."""
+    """A room: unique `name`, `type` (a `room_types` name) and CCW partition polygon."""
 
     name: str
     type: str
