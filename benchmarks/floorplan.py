@@ -18,10 +18,10 @@ from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
 
+from indoorgen.architecture.solidify import solidify
 from indoorgen.floorplan.check import floorplan_problems
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-from indoorgen.floorplan.solidify import solidify
-from indoorgen.floorplan.solve import AnnealConfig
+from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.programs.floorplan import floorplan as default_program
 
 
@@ -29,7 +29,7 @@ def one(job: tuple[int, int, int | None]) -> dict:
     seed, floors, steps = job
     cfg = FloorplanConfig(floors=floors)
     if steps is not None:
-        cfg.anneal = AnnealConfig(steps_per_storey=steps)
+        cfg.anneal = FloorplanAnnealConfig(steps_per_storey=steps)
     w0, c0 = time.perf_counter(), time.process_time()
     try:
         fp = generate_floorplan(seed, cfg)
@@ -55,7 +55,7 @@ def main() -> None:
                     "process; use 1 for clean figures)")
     args = ap.parse_args()
     weights = {k: t.weight for k, t in default_program().score_terms.items()}
-    generate_floorplan(0, FloorplanConfig(anneal=AnnealConfig(steps_per_storey=5)))  # warm up
+    generate_floorplan(0, FloorplanConfig(anneal=FloorplanAnnealConfig(steps_per_storey=5)))  # warm up
     for floors in args.floors:
         jobs = [(s, floors, args.steps) for s in range(args.seeds)]
         if args.jobs > 1:
@@ -66,7 +66,10 @@ def main() -> None:
         ok = [r for r in rows if "error" not in r]
         errors = [r for r in rows if "error" in r]
         bad = [r for r in ok if r["problems"]]
-        q = lambda xs, p: float(np.percentile(xs, p)) if xs else float("nan")
+
+        def q(xs, p):
+            return float(np.percentile(xs, p)) if xs else float("nan")
+
         wall = [r["wall"] for r in ok]
         cpu = [r["cpu"] for r in ok]
         print(f"== {floors} storey(s), {len(rows)} seeds ==")

@@ -15,11 +15,11 @@ import time
 import numpy as np
 
 from indoorgen import GenerateConfig, generate
+from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints import Problem, rotational_asymmetry, scene
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import at_table, on_floor

@@ -14,13 +14,15 @@ from typing import Any, Callable
 
 import numpy as np
 
+from indoorgen.architecture.room import RoomGeometry, build_room, place_door, rectangle
 from indoorgen.assets import Asset
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError, InvalidGeometryError
-from indoorgen.floorplan.room import RoomGeometry, build_room, place_door, rectangle, validate_polygon
+from indoorgen.model.polygons import validate_polygon
+from indoorgen.model.room_types import ROOM_TYPES, RoomTypeSpec
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.model.tags import Semantics
 from indoorgen.outputs import atomic_dir
@@ -32,26 +34,6 @@ from indoorgen.solver.stages import solve
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
-
-#: plausible sizes (width range, depth range) in metres when the user gives none
-DEFAULT_SIZES = {
-    "living_room": ((4.6, 6.4), (3.9, 5.4)),
-    "dining_room": ((4.0, 5.4), (3.6, 4.8)),
-    "bedroom": ((3.4, 4.6), (3.2, 4.2)),
-    "kitchen": ((3.2, 4.8), (2.8, 4.2)),
-    "bathroom": ((2.2, 3.2), (2.0, 2.8)),
-    "closet": ((1.6, 2.4), (1.4, 2.2)),
-    "hallway": ((1.4, 2.0), (3.0, 5.0)),
-    "utility": ((2.0, 3.0), (1.8, 2.6)),
-    "staircase_room": ((2.4, 3.2), (3.0, 4.5)),
-    "garage": ((3.2, 6.0), (5.5, 6.5)),
-    "balcony": ((2.0, 4.0), (1.4, 2.2)),
-    "office": ((3.0, 4.2), (2.8, 3.8)),
-    "warehouse": ((14.0, 22.0), (10.0, 16.0)),
-}
-#: wall height per room type when the user gives none (m)
-DEFAULT_HEIGHTS = {"warehouse": 6.5}
-
 
 @dataclass
 class GenerateConfig:
@@ -85,7 +67,7 @@ class Generated:
     cache: AssetCache
     results: dict[str, Result]
     report: dict[str, Any] = field(default_factory=dict)
-    #: the solidified home (floorplan.solidify.Architecture) when this is a whole home
+    #: the solidified home (architecture.solidify.Architecture) when this is a whole home
     architecture: Any = None
 
     def full_assets(self) -> dict[str, Asset]:
@@ -100,6 +82,8 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
     if cfg.program is None and cfg.room_type not in ROOM_PROGRAMS:
         get_program(cfg.room_type)  # raises UnknownRoomTypeError
     rng = stream(seed, "room", "architecture")
+    # sizes and height when the user gives none: the table's, or its defaults for a custom type
+    spec = ROOM_TYPES.get(cfg.room_type) or RoomTypeSpec(cfg.room_type)
     if cfg.polygon is not None:
         poly = cfg.polygon
     else:
@@ -111,10 +95,10 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
                 raise InvalidGeometryError(f"room size {w} x {d} m is out of range; each side "
                                            "must be between 2 and 30 m")
         else:
-            (w0, w1), (d0, d1) = DEFAULT_SIZES.get(cfg.room_type, ((4.0, 6.0), (3.5, 5.0)))
+            (w0, w1), (d0, d1) = spec.width, spec.depth
             w, d = round(float(rng.uniform(w0, w1)), 2), round(float(rng.uniform(d0, d1)), 2)
         poly = rectangle(w, d)
-    height = cfg.height if cfg.height is not None else DEFAULT_HEIGHTS.get(cfg.room_type, 2.7)
+    height = cfg.height if cfg.height is not None else spec.height
     if not (1.8 <= height <= 12.0):
         raise InvalidGeometryError(f"wall height {height} m is out of range [1.8, 12.0]")
     shape = validate_polygon(poly)
@@ -169,10 +153,10 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
                   ) -> Generated:
     """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
     furnished by its program. Same seed + config + version => same scene."""
+    from indoorgen.architecture.solidify import room_geometries, solidify
     from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-    from indoorgen.floorplan.io import check_predefined, from_json
-    from indoorgen.floorplan.io import to_json as floorplan_json
-    from indoorgen.floorplan.solidify import room_geometries, solidify
+    from indoorgen.model.floorplan_io import check_predefined, from_json
+    from indoorgen.model.floorplan_io import to_json as floorplan_json
     from indoorgen.programs import ROOM_PROGRAMS
     cfg = config or HomeConfig()
     t0 = time.perf_counter()

@@ -21,7 +21,7 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.architecture import scene_architecture
+from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Evaluator

@@ -9,8 +9,8 @@ import pytest
 import shapely.geometry as sg
 import trimesh
 
+from indoorgen.assets.catalogue import factory_names, get_factory
 from indoorgen.assets.protocol import Param
-from indoorgen.assets.registry import factory_names, get_factory
 from indoorgen.assets.shapes.mesh import union
 from indoorgen.errors import ParameterError
 from indoorgen.model.tags import Semantics, Subpart

@@ -5,8 +5,9 @@ from __future__ import annotations
 import pytest
 
 from indoorgen.assets import generators
+from indoorgen.assets.catalogue import factories_with, factory_names, get_factory
 from indoorgen.assets.protocol import AssetFactory
-from indoorgen.assets.registry import factories_with, factory_names, get_factory, register
+from indoorgen.assets.registry import register
 from indoorgen.errors import UnknownGeneratorError
 from indoorgen.model.tags import Semantics
 

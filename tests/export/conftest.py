@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from indoorgen import generate
+from indoorgen.architecture.room import rectangle
 from indoorgen.assets import get_factory
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
-from indoorgen.floorplan.room import rectangle
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.pipeline import GenerateConfig
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets import get_factory
 from indoorgen.export.bundle import (
     MatRef,
@@ -14,7 +15,6 @@ from indoorgen.export.bundle import (
     params_json,
     texture_seed,
 )
-from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
 
 

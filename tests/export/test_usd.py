@@ -8,10 +8,11 @@ import pytest
 import trimesh
 from pxr import Usd, UsdGeom
 
+from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets.protocol import Asset, box_surfaces
 from indoorgen.errors import OutputError
-from indoorgen.export.usd import sanitize_name, write_usd
-from indoorgen.floorplan.room import build_room, rectangle
+from indoorgen.export.usd.prims import sanitize_name
+from indoorgen.export.usd.scene import write_usd
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 
 
@@ -139,7 +140,7 @@ from pxr import Sdf, UsdPhysics, UsdSemantics, UsdShade, UsdValidation  # noqa: 
 
 from indoorgen.export.bundle import make_bundle  # noqa: E402
 from indoorgen.export.textures import TextureStore  # noqa: E402
-from indoorgen.export.usd import write_usd_bundle  # noqa: E402
+from indoorgen.export.usd.scene import write_usd_bundle  # noqa: E402
 
 
 def _validate(stage):

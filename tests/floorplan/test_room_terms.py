@@ -19,7 +19,7 @@ from indoorgen.constraints.room_terms import (
     wall_count,
 )
 from indoorgen.floorplan.generate import FloorplanConfig, build_plan, generate_floorplan
-from indoorgen.floorplan.solve import AnnealConfig, anneal
+from indoorgen.floorplan.solve import FloorplanAnnealConfig, anneal
 from indoorgen.model.tags import Semantics
 from indoorgen.programs.floorplan import floorplan
 from indoorgen.rng import stream
@@ -64,7 +64,7 @@ def test_grid_measures_match_polygon_measures(seed, floors):
 def test_incremental_evaluation_is_exact_and_local():
     plan = build_plan(1, FloorplanConfig(floors=2))
     # check=True compares every incremental evaluation against a full one
-    stats = anneal(plan, floorplan(), stream(1, "t"), AnnealConfig(steps_per_storey=40,
+    stats = anneal(plan, floorplan(), stream(1, "t"), FloorplanAnnealConfig(steps_per_storey=40,
                                                                    check=True))
     assert stats.accepted > 0
     ev = Evaluator(floorplan(), plan)
@@ -79,7 +79,7 @@ def test_incremental_evaluation_is_exact_and_local():
 
 def test_annealing_lowers_the_objective():
     for seed in range(4):
-        fp = generate_floorplan(seed, FloorplanConfig(anneal=AnnealConfig(steps_per_storey=150)))
+        fp = generate_floorplan(seed, FloorplanConfig(anneal=FloorplanAnnealConfig(steps_per_storey=150)))
         a = fp.info["anneal"]
         assert a["objective_end"] < a["objective_start"]
         assert fp.info["stats"].end.violation == 0
@@ -99,7 +99,7 @@ def test_a_user_program_drives_the_solver():
                                                ).minimize(),
                          "outside": rooms.sum(exterior_length).maximize(0.01)})
     fp = generate_floorplan(3, FloorplanConfig(program=compact,
-                                               anneal=AnnealConfig(steps_per_storey=100)))
+                                               anneal=FloorplanAnnealConfig(steps_per_storey=100)))
     a = fp.info["anneal"]
     assert set(a["terms_end"]) == {"square", "convex", "few walls", "no narrow bits",
                                    "balanced", "outside"}

@@ -2,9 +2,9 @@
 room; objects are named per generator in creation order; a seed gives the same scene."""
 from __future__ import annotations
 
+from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints import Problem, scene
-from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import on_floor, on_top, on_wall

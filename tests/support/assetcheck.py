@@ -9,7 +9,7 @@ import numpy as np
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 
 #: how close (m) a surface's points must lie to the mesh, and a built asset to its local frame

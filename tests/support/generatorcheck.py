@@ -8,8 +8,8 @@ import math
 import numpy as np
 import trimesh
 
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.materials.base import material_names
-from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import distances, sample_polygon
 

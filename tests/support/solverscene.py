@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.evaluator import Evaluator
-from indoorgen.floorplan.room import build_room, rectangle
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Door, Room
 from indoorgen.model.tags import Semantics as S

@@ -13,7 +13,8 @@ import numpy as np
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets import Asset, get_factory
+from indoorgen.assets.catalogue import get_factory
+from indoorgen.assets.protocol import Asset
 
 
 def params_key(generator: str, params: dict[str, Any]) -> tuple:

@@ -16,7 +16,6 @@ import numpy as np
 from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
 from indoorgen.assets.shapes.collision import convex_pieces, free_space_above
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
-from indoorgen.assets.shapes.moving_parts import DoorJoint
 from indoorgen.assets.shapes.primitives import Part
 from indoorgen.model.tags import Subpart
 
@@ -141,8 +140,3 @@ class PartsFactory(AssetFactory):
             if box is not None:
                 out.append([min(box[0], back), *box[1:3], max(box[3], front), *box[4:]])
         return out
-
-
-def make_joint(name: str, moving: DoorJoint, lower: float, upper: float) -> Joint:
-    """A named `Joint` with range [lower, upper] from a moving part's description."""
-    return Joint(name, moving.kind, moving.axis, moving.origin, lower, upper, moving.link)

@@ -9,15 +9,15 @@ import sys
 import time
 from pathlib import Path
 
+from indoorgen.architecture.solidify import solidify
+from indoorgen.architecture.walls import WallThickness
 from indoorgen.errors import ConfigError
-from indoorgen.floorplan.draw import draw_floorplan
+from indoorgen.export.usd.architecture import write_architecture_usd
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
-from indoorgen.floorplan.io import read_floorplan, write_floorplan
-from indoorgen.floorplan.solidify import solidify
-from indoorgen.floorplan.solve import AnnealConfig
-from indoorgen.floorplan.usd import write_architecture_usd
-from indoorgen.floorplan.walls import WallThickness
+from indoorgen.floorplan.solve import FloorplanAnnealConfig
+from indoorgen.model.floorplan_io import read_floorplan, write_floorplan
 from indoorgen.outputs import atomic_dir, check_writable
+from indoorgen.render.floorplan import draw_floorplan
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -80,7 +80,7 @@ def run_floorplan(args: argparse.Namespace) -> int:
                           contour=_read_contour(args.contour) if args.contour else None,
                           graph=_read_json(args.graph, "--graph") if args.graph else None)
     if args.steps is not None:
-        cfg.anneal = AnnealConfig(steps_per_storey=args.steps)
+        cfg.anneal = FloorplanAnnealConfig(steps_per_storey=args.steps)
     if args.plan:
         fp = read_floorplan(args.plan)
         pitch = None

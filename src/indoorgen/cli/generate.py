@@ -11,6 +11,7 @@ from pathlib import Path
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
+from indoorgen.model.room_types import ROOM_TYPES
 from indoorgen.outputs import check_writable
 from indoorgen.pipeline import GenerateConfig, HomeConfig, generate, generate_home, write_scene_dir
 
@@ -25,9 +26,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     home.add_argument("--area", type=float, help="ground-floor area in m^2")
     home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
     g.add_argument("--room",
-                   help="one room of this type instead of a home: living_room, dining_room, "
-                        "bedroom, kitchen, bathroom, office, closet, hallway, utility, "
-                        "staircase_room, garage, balcony, warehouse")
+                   help="one room of this type instead of a home: " + ", ".join(ROOM_TYPES))
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
     g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")

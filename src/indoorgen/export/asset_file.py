@@ -15,7 +15,7 @@ from indoorgen.export.bundle import make_bundle
 from indoorgen.export.gltf import write_glb
 from indoorgen.export.obj import write_obj_format
 from indoorgen.export.textures import TextureStore
-from indoorgen.export.usd import write_usd_bundle
+from indoorgen.export.usd.scene import write_usd_bundle
 from indoorgen.model.scene import Pose, Scene, SceneObject
 from indoorgen.outputs import atomic_file, check_writable
 

@@ -14,8 +14,8 @@ tomorrow. A bundle holds:
   stairs...), meshes in world coordinates, each part with its material.
 
 Builders: `bundle_from_generated` (a freshly generated scene), `bundle_from_scene` (a saved
-scene: rooms rebuilt with `floorplan.room.build_room`, assets from the generators) and
-`elements_from_architecture` (a solidified home from `floorplan.solidify`).
+scene: rooms rebuilt with `architecture.room.build_room`, assets from the generators) and
+`elements_from_architecture` (a solidified home from `architecture.solidify`).
 """
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 import trimesh
 
-from indoorgen.architecture import scene_architecture
+from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
@@ -225,7 +225,7 @@ def elements_from_rooms(scene: Scene, rooms: dict) -> list[ArchElement]:
 
 
 def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
-    """Every element of a solidified home (`floorplan.solidify.Architecture`): each room's
+    """Every element of a solidified home (`architecture.solidify.Architecture`): each room's
     floor, ceiling and walls under storey_<k>/<room>, and the doors, windows, stairs and rails
     under storey_<k>/{doors, windows} or stairs/."""
     out: list[ArchElement] = []

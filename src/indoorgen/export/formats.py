@@ -73,7 +73,7 @@ def write_formats(bundle: ExportBundle, out_dir: Path, formats: str | Iterable[s
     format go into `timings` when given."""
     # import time: USD (pxr) adds ~0.28 s to the ~0.73 s of `import indoorgen.export`; only
     # calls that write a USD format pay it (measured with python -X importtime)
-    from indoorgen.export.usd import write_usd_bundle
+    from indoorgen.export.usd.scene import write_usd_bundle
 
     fmts = parse_formats(formats)
     out_dir = Path(out_dir)

@@ -21,8 +21,9 @@ import numpy as np
 
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL
 from indoorgen.floorplan.grid import OUTSIDE, Grid, room_polygon, runs
-from indoorgen.floorplan.rooms import EXTERIOR_TYPES, MIN_AREA, STAIRCASE, room_type_of
+from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.view import polygon_exterior_runs
+from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
 
 
 def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
@@ -67,12 +68,12 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         return None
     area, in_stair, cells, ext, door = space_stats(grid, labels, stair)
     k_door = int(math.ceil(MIN_DOOR_WALL / grid.size - 1e-9))
-    door_ok = [set() for _ in range(n_spaces)]
+    door_ok: list[set[int]] = [set() for _ in range(n_spaces)]
     for (a, b), n in door.items():
         if n >= k_door:
             door_ok[a].add(b)
             door_ok[b].add(a)
-    order = [r for r in rooms if room_type_of(r) == STAIRCASE]
+    order = [r for r in rooms if room_type_of(r) == STAIRCASE_ROOM]
     order += [r for r in nx.bfs_tree(graph, entry) if r not in order]
     order += [r for r in rooms if r not in order]
     # the spaces each room could take at all (type, exterior, staircase, area), best first
@@ -81,19 +82,19 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
         t = room_type_of(r)
         out = []
         for s in range(n_spaces):
-            if t == STAIRCASE:
+            if t == STAIRCASE_ROOM:
                 if in_stair[s] == 0:
                     continue
-            elif in_stair[s] > 0.3 * cells[s] or area[s] < MIN_AREA[t]:
+            elif in_stair[s] > 0.3 * cells[s] or area[s] < ROOM_TYPES[t].min_area:
                 continue
-            if (t in EXTERIOR_TYPES or r in needs_exterior) and ext[s] < k_door:
+            if (ROOM_TYPES[t].exterior or r in needs_exterior) and ext[s] < k_door:
                 continue
             if len(door_ok[s]) < graph.degree(r):
                 continue  # too few door-wide neighbours for the room's graph neighbours
             out.append(s)
         noise = rng.normal(0.0, 0.25, len(out))
-        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise)]
-        fits[r] = [s for _, s in sorted(zip(cost, out))]
+        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise, strict=False)]
+        fits[r] = [s for _, s in sorted(zip(cost, out, strict=False))]
     nbrs = {r: list(graph.neighbors(r)) for r in rooms}
 
     def candidates(r: str, used: set[int], placed: dict[str, int]) -> list[int]:
@@ -113,7 +114,8 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
             expansions += 1
             if expansions > budget:
                 return False
-            placed[r], _ = s, used.add(s)
+            used.add(s)
+            placed[r] = s
             # forward check: every unplaced neighbour must keep some space next to this one
             if all(any(x not in used and x in door_ok[s] for x in fits[nb])
                    for nb in nbrs[r] if nb not in placed) and dfs(i + 1):

@@ -14,17 +14,10 @@ import shapely
 import shapely.geometry as sg
 
 from indoorgen.floorplan.graph import privacy_problems
-from indoorgen.floorplan.plan import Floorplan
-from indoorgen.floorplan.rooms import (
-    BATHROOM,
-    KITCHEN,
-    LIVING,
-    MIN_CLOSET_WIDTH,
-    MIN_WIDTH,
-    NARROW_OK_TYPES,
-    STAIRCASE,
-)
-from indoorgen.floorplan.solidify import stair_rooms
+from indoorgen.floorplan.rooms import min_width
+from indoorgen.model.floorplan import Floorplan
+from indoorgen.model.polygons import cross_2d
+from indoorgen.model.room_types import BATHROOM, KITCHEN, LIVING_ROOM, STAIRCASE_ROOM
 
 MIN_DOOR_WIDTH = 0.8
 
@@ -34,19 +27,6 @@ def narrow_area(poly: sg.Polygon, width: float) -> float:
     r = width / 2 - 1e-4
     opened = poly.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
     return max(0.0, poly.area - opened.intersection(poly).area)
-
-
-def connection_graph(fp: Floorplan) -> nx.Graph:
-    """Rooms joined by doors, open connections and stairs."""
-    g = nx.Graph()
-    for s in fp.storeys:
-        g.add_nodes_from(r.name for r in s.rooms)
-        g.add_edges_from(tuple(d.rooms) for d in s.doors + s.openings)
-    for st in fp.stairs:
-        a, b = stair_rooms(fp, st)
-        if a and b:
-            g.add_edge(a, b)
-    return g
 
 
 def _door_problems(fp: Floorplan) -> list[str]:
@@ -78,13 +58,13 @@ def _segment_through(lines, c: np.ndarray) -> float | None:
     from c to the nearer end of the straight piece containing it)."""
     for ln in getattr(lines, "geoms", [lines]):
         pts = np.asarray(getattr(ln, "coords", []))
-        for a, b in zip(pts[:-1], pts[1:]):
+        for a, b in zip(pts[:-1], pts[1:], strict=False):
             d = b - a
             L = float(np.hypot(*d))
             if L < 1e-9:
                 continue
             s = float(np.dot(c - a, d) / L)
-            if -1e-6 <= s <= L + 1e-6 and abs(float(_cross(d / L, c - a))) < 1e-3:
+            if -1e-6 <= s <= L + 1e-6 and abs(cross_2d(d / L, c - a)) < 1e-3:
                 return 2 * min(s, L - s)
     return None
 
@@ -96,7 +76,7 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
     out = []
     for s in fp.storeys:
         shapes = [r.shape() for r in s.rooms]
-        for r, p in zip(s.rooms, shapes):
+        for r, p in zip(s.rooms, shapes, strict=False):
             if not p.is_valid or p.area <= 0:
                 out.append(f"{r.name} is not a valid polygon")
         total = sum(p.area for p in shapes)
@@ -108,13 +88,13 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             gap = c.symmetric_difference(union).area
             if gap > 1e-4:
                 out.append(f"rooms on storey {s.level} differ from its outline by {gap:.4f} m^2")
-        for r, p in zip(s.rooms, shapes):
-            width = MIN_CLOSET_WIDTH if r.type in NARROW_OK_TYPES else MIN_WIDTH
+        for r, p in zip(s.rooms, shapes, strict=False):
+            width = min_width(r.type)
             if narrow_area(p, width) > 0.01:
                 out.append(f"{r.name} is narrower than {width} m somewhere "
                            f"({narrow_area(p, width):.2f} m^2)")
     out += _door_problems(fp)
-    g = connection_graph(fp)
+    g = fp.connection_graph()
     if fp.entrance is None:
         out.append("the plan has no entrance")
     else:
@@ -129,7 +109,7 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             if types.count(t) != n:
                 out.append(f"{types.count(t)} {t} rooms, required {n}")
     for s in fp.storeys:
-        if not any(r.type == LIVING for r in s.rooms):
+        if not any(r.type == LIVING_ROOM for r in s.rooms):
             out.append(f"storey {s.level} has no living room")
     for t in (BATHROOM, KITCHEN):
         if t not in types and (counts or {}).get(t, 1):
@@ -148,13 +128,9 @@ def _stair_problems(fp: Floorplan) -> list[str]:
         for lv in (st.from_level, st.to_level):
             s = fp.storeys[lv]
             holders = [r for r in s.rooms if r.shape().intersection(poly).area > 1e-6]
-            if len(holders) != 1 or holders[0].type != STAIRCASE or \
+            if len(holders) != 1 or holders[0].type != STAIRCASE_ROOM or \
                     poly.difference(holders[0].shape()).area > 1e-4:
                 out.append(f"flight {st.from_level}->{st.to_level} is not inside one staircase "
                            f"room on storey {lv}")
     return out
 
-
-def _cross(a, b) -> float:
-    """z of the cross product of two 2D vectors."""
-    return float(a[0] * b[1] - a[1] * b[0])

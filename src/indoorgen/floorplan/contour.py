@@ -16,7 +16,7 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.room import validate_polygon
+from indoorgen.model.polygons import validate_polygon
 
 #: The planning grid (m): every split, extrusion and rectangular bevel lies on it.
 GRID = 0.5
@@ -100,6 +100,7 @@ def make_contour(rng: np.random.Generator, area: float, max_aspect: float = 1.6)
         if err < 0.06:
             break
         target *= area / poly.area
+    assert best is not None  # the loop ran at least once
     return best[1]
 
 

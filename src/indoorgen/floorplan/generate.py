@@ -13,8 +13,8 @@ import dataclasses
 import logging
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 import shapely.geometry as sg
@@ -22,16 +22,18 @@ import shapely.geometry as sg
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
-from indoorgen.floorplan.contour import GRID, make_contour, upper_contour, user_contour
+from indoorgen.floorplan.contour import make_contour, upper_contour, user_contour
 from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
 from indoorgen.floorplan.grid import OUTSIDE, make_grid
 from indoorgen.floorplan.openings import place_doors, place_entrance, place_stairs, place_windows
-from indoorgen.floorplan.plan import Floorplan, RoomSpec, Storey
-from indoorgen.floorplan.rooms import MIN_AREA, TYPICAL_AREA, parse_room_counts, room_type_of
+from indoorgen.floorplan.rooms import parse_room_counts, room_type_of
 from indoorgen.floorplan.rules import room_problems
-from indoorgen.floorplan.solve import AnnealConfig, AnnealStats, anneal
-from indoorgen.floorplan.subdivide import grow_hub, merge, mondrian
+from indoorgen.floorplan.solve import FloorplanAnnealConfig, anneal
+from indoorgen.floorplan.subdivide import MIN_SIDE, grow_hub, merge, mondrian
 from indoorgen.floorplan.view import GridPlan
+from indoorgen.model.floorplan import Floorplan, RoomSpec, Storey
+from indoorgen.model.room_types import ROOM_TYPES
+from indoorgen.programs.floorplan import floorplan as default_program
 from indoorgen.rng import stream
 
 log = logging.getLogger(__name__)
@@ -65,9 +67,10 @@ class FloorplanConfig:
     exterior_wall: float = 0.24
     open_prob: float = 0.5
     program: Callable[[], Problem] | None = None
-    anneal: AnnealConfig = field(default_factory=AnnealConfig)
+    anneal: FloorplanAnnealConfig = field(default_factory=FloorplanAnnealConfig)
 
     def to_json(self) -> dict:
+        """The settings as plain JSON (room counts parsed), recorded with the plan."""
         return {"floors": self.floors, "rooms": parse_room_counts(self.rooms),
                 "area": self.area, "contour": self.contour, "height": self.height,
                 "slab": self.slab, "interior_wall": self.interior_wall,
@@ -82,18 +85,17 @@ def storey_pitch(cfg: FloorplanConfig) -> float:
 
 
 def _needed_area(names: list[str]) -> float:
-    return math.fsum(MIN_AREA[room_type_of(n)] for n in names)
+    return math.fsum(ROOM_TYPES[room_type_of(n)].min_area for n in names)
 
 
 def _typical(names: list[str]) -> float:
-    return math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
+    return math.fsum(ROOM_TYPES[room_type_of(n)].typical_area for n in names)
 
 
 def _place_stair(rng: np.random.Generator, grid) -> tuple[int, int, int, int] | None:
     """A random placeholder rectangle of full cells, each side either on the outline's bounding
     box or at least MIN_SIDE cells (a room's width) clear of it, with a cell of full cells
     around it inside the outline."""
-    from indoorgen.floorplan.subdivide import MIN_SIDE
     full = grid.full
     ny, nx = full.shape
     shapes = [STAIR_CELLS, STAIR_CELLS[::-1]]
@@ -236,7 +238,6 @@ def build_plan(seed: int, cfg: FloorplanConfig) -> GridPlan:
 
 def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floorplan:
     """Generate a home's floorplan from `seed`. Same seed + config + version => same plan."""
-    from indoorgen.programs.floorplan import floorplan as default_program
     cfg = config or FloorplanConfig()
     t0 = time.perf_counter()
     plan = build_plan(seed, cfg)
@@ -271,7 +272,9 @@ def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator)
     for k, names in enumerate(plan.names):
         rooms = []
         for n in names:
-            pts = np.asarray(plan.polygon(n).exterior.coords)[:-1]
+            poly = plan.polygon(n)
+            assert poly is not None  # annealing keeps every room one simple polygon
+            pts = np.asarray(poly.exterior.coords)[:-1]
             rooms.append(RoomSpec(n, room_type_of(n),
                                   [(round(float(x), 6), round(float(y), 6)) for x, y in pts]))
         storeys.append(Storey(k, round(k * pitch, 6), cfg.height, rooms, doors[k], windows[k],
@@ -279,5 +282,4 @@ def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator)
     return Floorplan(storeys, stairs, entrance)
 
 
-__all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan",
-           "room_problems", "storey_pitch", "GRID", "AnnealStats"]
+__all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan", "storey_pitch"]

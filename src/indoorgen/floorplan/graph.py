@@ -18,28 +18,28 @@ across the home, with attributes ``type`` and ``level``) plus the entrance and s
 from __future__ import annotations
 
 import logging
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import networkx as nx
 import numpy as np
 
 from indoorgen.errors import ConfigError
-from indoorgen.floorplan.rooms import (
+from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.model.room_types import (
     BALCONY,
     BATHROOM,
     BEDROOM,
     CLOSET,
-    DINING,
+    DINING_ROOM,
     GARAGE,
     HALLWAY,
     KITCHEN,
-    LIVING,
-    STAIRCASE,
-    TYPICAL_AREA,
+    LIVING_ROOM,
+    ROOM_TYPES,
+    STAIRCASE_ROOM,
     UTILITY,
-    check_room_type,
-    room_type_of,
+    room_type,
 )
 
 log = logging.getLogger(__name__)
@@ -48,16 +48,17 @@ log = logging.getLogger(__name__)
 #: one child; a tuple is a categorical over 0, 1, 2... children. The paper prints the bedroom row
 #: as Cat(0, .3, .3, .3, 1); we read the last weight as .1, which makes it sum to one.
 GROUND_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
-    LIVING: {LIVING: 0.1, BEDROOM: (0.0, 0.3, 0.3, 0.3, 0.1), CLOSET: 0.1, BATHROOM: 0.4,
-             GARAGE: 0.4, BALCONY: 0.2, DINING: 0.8, UTILITY: 0.2, HALLWAY: (0.5, 0.4, 0.1)},
+    LIVING_ROOM: {LIVING_ROOM: 0.1, BEDROOM: (0.0, 0.3, 0.3, 0.3, 0.1), CLOSET: 0.1,
+                  BATHROOM: 0.4, GARAGE: 0.4, BALCONY: 0.2, DINING_ROOM: 0.8, UTILITY: 0.2,
+                  HALLWAY: (0.5, 0.4, 0.1)},
     KITCHEN: {GARAGE: 0.1, UTILITY: 0.2},
     BEDROOM: {BATHROOM: 0.3, CLOSET: 0.5},
     BATHROOM: {CLOSET: 0.2},
-    DINING: {KITCHEN: 1.0, HALLWAY: 0.2},
+    DINING_ROOM: {KITCHEN: 1.0, HALLWAY: 0.2},
 }
 #: Children per parent type on upper floors (Table 7; categoricals are normalised).
 UPPER_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
-    LIVING: {BEDROOM: (0.0, 0.4, 0.5, 0.2), CLOSET: 0.2, BATHROOM: 0.4, BALCONY: 0.4,
+    LIVING_ROOM: {BEDROOM: (0.0, 0.4, 0.5, 0.2), CLOSET: 0.2, BATHROOM: 0.4, BALCONY: 0.4,
              UTILITY: 0.2, HALLWAY: (0.0, 0.5, 0.5)},
     BEDROOM: {BATHROOM: 0.3, CLOSET: 0.5},
     BATHROOM: {CLOSET: 0.2},
@@ -71,12 +72,14 @@ MAX_ROOMS_PER_STOREY = 12
 MAX_DEGREE = 6
 #: Where a room of each type may be attached when a count has to be raised, best first.
 PARENTS: dict[str, tuple[str, ...]] = {
-    LIVING: (LIVING,), DINING: (LIVING,), KITCHEN: (DINING, LIVING), BEDROOM: (HALLWAY, LIVING),
-    BATHROOM: (HALLWAY, LIVING), CLOSET: (BEDROOM, HALLWAY, LIVING), HALLWAY: (LIVING, DINING),
-    GARAGE: (KITCHEN, LIVING), BALCONY: (LIVING, BEDROOM), UTILITY: (KITCHEN, HALLWAY, LIVING),
+    LIVING_ROOM: (LIVING_ROOM,), DINING_ROOM: (LIVING_ROOM,), KITCHEN: (DINING_ROOM, LIVING_ROOM),
+    BEDROOM: (HALLWAY, LIVING_ROOM), BATHROOM: (HALLWAY, LIVING_ROOM),
+    CLOSET: (BEDROOM, HALLWAY, LIVING_ROOM), HALLWAY: (LIVING_ROOM, DINING_ROOM),
+    GARAGE: (KITCHEN, LIVING_ROOM), BALCONY: (LIVING_ROOM, BEDROOM),
+    UTILITY: (KITCHEN, HALLWAY, LIVING_ROOM),
 }
 #: Types that only live on the ground floor.
-GROUND_ONLY = frozenset({KITCHEN, DINING, GARAGE})
+GROUND_ONLY = frozenset({KITCHEN, DINING_ROOM, GARAGE})
 MAX_STOREYS = 3
 
 
@@ -92,6 +95,7 @@ class HomeGraph:
 
     @property
     def n_storeys(self) -> int:
+        """Number of storeys."""
         return len(self.storeys)
 
     def rooms(self, level: int | None = None) -> list[str]:
@@ -113,11 +117,12 @@ class HomeGraph:
     def home(self) -> nx.Graph:
         """All storeys in one graph, consecutive staircase rooms joined by 'stair' edges."""
         g = nx.union_all(self.storeys) if self.storeys else nx.Graph()
-        for a, b in zip(self.stairs, self.stairs[1:]):
+        for a, b in zip(self.stairs, self.stairs[1:], strict=False):
             g.add_edge(a, b, kind="stair")
         return g
 
     def to_json(self) -> dict:
+        """The graph as JSON (the form `graph_from_spec` reads back)."""
         return {"storeys": [{"rooms": list(g.nodes), "edges": [sorted(e) for e in g.edges]}
                             for g in self.storeys],
                 "entrance": self.entrance, "stairs": list(self.stairs)}
@@ -140,7 +145,7 @@ def grow_storey(rng: np.random.Generator, level: int) -> tuple[nx.Graph, dict[in
     Returns a graph on integer nodes (attribute ``type``) and the parent of each node."""
     table = GROUND_CHILDREN if level == 0 else UPPER_CHILDREN
     g = nx.Graph()
-    g.add_node(0, type=LIVING)
+    g.add_node(0, type=LIVING_ROOM)
     parent: dict[int, int] = {}
     queue = [0]
     while queue and g.number_of_nodes() < 3 * MAX_ROOMS_PER_STOREY:
@@ -264,7 +269,7 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
     for k, g in enumerate(hg.storeys):
         if not nx.check_planarity(g)[0]:
             out.append(f"storey {k} graph is not planar")
-        if not any(room_type_of(n) == LIVING for n in g.nodes):
+        if not any(room_type_of(n) == LIVING_ROOM for n in g.nodes):
             out.append(f"storey {k} has no living room")
         if counts is None and not any(room_type_of(n) == BATHROOM for n in g.nodes):
             out.append(f"storey {k} has no bathroom")
@@ -286,8 +291,8 @@ def _finish(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]]) -> Hom
     stair_nodes, entrance = [], 0
     for k, (g, par) in enumerate(trees):
         if n > 1:
-            hosts = _of_type(g, HALLWAY) or _of_type(g, LIVING)[:1]
-            stair_nodes.append(_hang(rng, g, par, STAIRCASE, hosts))
+            hosts = _of_type(g, HALLWAY) or _of_type(g, LIVING_ROOM)[:1]
+            stair_nodes.append(_hang(rng, g, par, STAIRCASE_ROOM, hosts))
         if k == 0:
             halls = [h for h in _of_type(g, HALLWAY) if h not in stair_nodes]
             entrance = halls[int(rng.integers(len(halls)))] if halls and rng.random() < 0.6 else 0
@@ -321,14 +326,14 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
     if not 1 <= n_storeys <= MAX_STOREYS:
         raise ConfigError(f"--floors {n_storeys} is out of range; a home has 1 to {MAX_STOREYS} "
                           "storeys")
-    counts = {check_room_type(t): int(c) for t, c in (counts or {}).items()}
-    if STAIRCASE in counts and counts[STAIRCASE] != (n_storeys if n_storeys > 1 else 0):
-        raise ConfigError(f"staircase_room={counts[STAIRCASE]} conflicts with {n_storeys} "
+    counts = {room_type(t, floorplan=True).name: int(c) for t, c in (counts or {}).items()}
+    if STAIRCASE_ROOM in counts and counts[STAIRCASE_ROOM] != (n_storeys if n_storeys > 1 else 0):
+        raise ConfigError(f"staircase_room={counts[STAIRCASE_ROOM]} conflicts with {n_storeys} "
                           f"storey(s); staircase rooms follow from the number of floors "
                           f"(one per storey when there are 2 or more)")
-    counts.pop(STAIRCASE, None)
-    if LIVING in counts and counts[LIVING] < n_storeys:
-        raise ConfigError(f"living_room={counts[LIVING]} is too few for {n_storeys} storeys; "
+    counts.pop(STAIRCASE_ROOM, None)
+    if LIVING_ROOM in counts and counts[LIVING_ROOM] < n_storeys:
+        raise ConfigError(f"living_room={counts[LIVING_ROOM]} is too few for {n_storeys} storeys; "
                           "every storey grows from a living room")
     last = []
     for attempt in range(max_attempts):
@@ -341,8 +346,8 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
                               or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
             continue
         if not counts and max_area is not None and attempt < max_attempts // 2 and any(
-                sum(TYPICAL_AREA[g.nodes[n]["type"]] for n in g.nodes)
-                + (TYPICAL_AREA[STAIRCASE] if n_storeys > 1 else 0.0) > 1.25 * max_area
+                sum(ROOM_TYPES[g.nodes[n]["type"]].typical_area for n in g.nodes)
+                + (ROOM_TYPES[STAIRCASE_ROOM].typical_area if n_storeys > 1 else 0.0) > 1.25 * max_area
                 for g, _ in trees):
             continue
         hg = _finish(rng, trees)
@@ -368,7 +373,7 @@ def graph_from_spec(spec: dict) -> HomeGraph:
     for k, s in enumerate(storeys_spec):
         g = nx.Graph()
         for name in s.get("rooms", []):
-            t = check_room_type(room_type_of(name))
+            t = room_type(room_type_of(name), floorplan=True).name
             if name in seen:
                 raise ConfigError(f"room name {name!r} is used twice in the graph")
             seen.add(name)
@@ -382,7 +387,7 @@ def graph_from_spec(spec: dict) -> HomeGraph:
         raise ConfigError(f"the graph has {len(storeys)} storeys; 1 to {MAX_STOREYS} are allowed")
     stairs = list(spec.get("stairs") or [])
     if len(storeys) > 1 and len(stairs) != len(storeys):
-        stairs = [next((n for n in g.nodes if room_type_of(n) == STAIRCASE), "") for g in storeys]
+        stairs = [next((n for n in g.nodes if room_type_of(n) == STAIRCASE_ROOM), "") for g in storeys]
         if not all(stairs):
             raise ConfigError("a graph with several storeys needs a staircase_room on each storey")
     if entrance is None:

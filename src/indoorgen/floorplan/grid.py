@@ -36,27 +36,32 @@ class Grid:
 
     @property
     def shape(self) -> tuple[int, int]:
+        """(rows, columns) of cells."""
         return self.frac.shape
 
     @property
     def inside(self) -> np.ndarray:
+        """Cells at least partly inside the outline."""
         return self.frac > 1e-9
 
     @property
     def full(self) -> np.ndarray:
+        """Cells wholly inside the outline."""
         return self.frac > 1.0 - 1e-9
 
     @property
     def partial(self) -> np.ndarray:
+        """Cells only partly inside the outline (cut by a bevel)."""
         return self.inside & ~self.full
 
     def cell_box(self, iy: int, ix: int) -> sg.Polygon:
+        """The square of cell (iy, ix) in world coordinates."""
         x, y = self.origin + np.array([ix, iy]) * self.size
         return sg.box(x, y, x + self.size, y + self.size)
 
     def to_world(self, cx, cy) -> np.ndarray:
         """Grid-corner coordinates (in cells) to world (x, y), shape (..., 2)."""
-        if np.isscalar(cx) and np.isscalar(cy):
+        if isinstance(cx, (int, float)) and isinstance(cy, (int, float)):
             return np.array([self.origin[0] + cx * self.size, self.origin[1] + cy * self.size])
         return np.stack([self.origin[0] + np.asarray(cx, float) * self.size,
                          self.origin[1] + np.asarray(cy, float) * self.size], axis=-1)
@@ -102,7 +107,7 @@ def make_grid(contour: sg.Polygon, frame: tuple[np.ndarray, tuple[int, int]] | N
     prev, nxt = np.roll(pts, 1, axis=0), np.roll(pts, -1, axis=0)
     d0, d1 = pts - prev, nxt - pts
     turn = np.abs(np.arctan2(d0[:, 0] * d1[:, 1] - d0[:, 1] * d1[:, 0], (d0 * d1).sum(axis=1)))
-    for p, a, b, t in zip(pts, d0, d1, turn):
+    for p, a, b, t in zip(pts, d0, d1, turn, strict=False):
         if t < math.radians(20):
             continue
         bis = -a / np.linalg.norm(a) + b / np.linalg.norm(b)
@@ -211,6 +216,7 @@ class Run:
 
     @property
     def length(self) -> int:
+        """Number of cell edges in the run."""
         return self.end - self.start
 
 
@@ -238,7 +244,7 @@ def runs(labels: np.ndarray, full: np.ndarray) -> list[Run]:
         cd = flat[starts]
         ln, s = np.divmod(starts, n_pos + 1)
         for li, si, ei, ci in zip(ln.tolist(), s.tolist(), (s + ends - starts).tolist(),
-                                  cd.tolist()):
+                                  cd.tolist(), strict=False):
             out.append(Run(axis, li, si, ei, ci // 100003 - 1, ci % 100003 - 1))
     return out
 

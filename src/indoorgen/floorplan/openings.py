@@ -16,25 +16,21 @@ from __future__ import annotations
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.floorplan.plan import DoorSpec, Entrance, StairSpec, WindowSpec
-from indoorgen.floorplan.rooms import (
-    DEFAULT_DOOR_WIDTH,
-    DOOR_HEIGHT,
-    DOOR_WIDTH,
-    ENTRANCE_DOOR_WIDTH,
-    OPEN_PAIRS,
-    STAIRCASE,
-    WINDOWS,
-    room_type_of,
-)
+from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.view import GridPlan, longest_run
+from indoorgen.model.floorplan import DoorSpec, Entrance, StairSpec, WindowSpec
+from indoorgen.model.polygons import cross_2d
+from indoorgen.model.room_types import DINING_ROOM, KITCHEN, LIVING_ROOM, ROOM_TYPES, STAIRCASE_ROOM
 
 #: Clear wall kept between a door or window and the end of its wall run (m).
 END_MARGIN = 0.15
 #: Landing left at each end of a flight inside the placeholder (m).
 LANDING = 0.5
-#: Number of windows a room may get, by type (default 1).
-MAX_WINDOWS = {"living_room": 3, "dining_room": 2, "bedroom": 2, "kitchen": 2}
+#: Pairs of types joined by an open connection (no wall) rather than a door, when chosen.
+OPEN_PAIRS = frozenset({frozenset({LIVING_ROOM, DINING_ROOM}), frozenset({DINING_ROOM, KITCHEN})})
+#: The front door's width, and every interior door's height (m).
+ENTRANCE_DOOR_WIDTH = 1.0
+DOOR_HEIGHT = 2.05
 
 
 def shared_runs(plan: GridPlan, a: str, b: str) -> list[tuple[float, np.ndarray, np.ndarray]]:
@@ -65,7 +61,8 @@ def shared_runs(plan: GridPlan, a: str, b: str) -> list[tuple[float, np.ndarray,
 
 
 def door_width(into: str) -> float:
-    return DOOR_WIDTH.get(room_type_of(into), DEFAULT_DOOR_WIDTH)
+    """The width of a door leading into room `into` (by its type)."""
+    return ROOM_TYPES[room_type_of(into)].door_width
 
 
 def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob: float,
@@ -73,7 +70,7 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
     """Doors and open connections (full storey `height`) per storey, one per graph edge;
     `wall` is the interior wall thickness."""
     doors, openings = [], []
-    for k, g in enumerate(plan.graph.storeys):
+    for g in plan.graph.storeys:
         dk, ok = [], []
         depth = {n: len(plan.entry_path(n)) for n in g.nodes}
         for a, b in sorted(tuple(sorted(e)) for e in g.edges):
@@ -93,10 +90,8 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
             lo = wall / 2 + END_MARGIN + w / 2
             if length < 2 * lo:
                 continue
-            if rng.random() < 0.5:
-                t = length / 2
-            else:
-                t = lo if rng.random() < 0.5 else length - lo
+            # centred, or near one end (leaving wall for furniture)
+            t = length / 2 if rng.random() < 0.5 else (lo if rng.random() < 0.5 else length - lo)
             dk.append(DoorSpec(f"door_{a}_{b}", (a, b), _pt(p + t * u), w, DOOR_HEIGHT))
         doors.append(dk)
         openings.append(ok)
@@ -118,13 +113,13 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
     """Windows per storey on the straight exterior walls of rooms whose type takes them."""
     out = []
     for k, names in enumerate(plan.names):
-        wk = []
+        wk: list[WindowSpec] = []
         for name in names:
-            spec = WINDOWS.get(room_type_of(name))
+            spec = ROOM_TYPES[room_type_of(name)].windows
             if spec is None:
                 continue
-            w_min, w_max, height, sill = spec
-            n_max = MAX_WINDOWS.get(room_type_of(name), 1)
+            w_min, w_max, height, sill = spec.min_width, spec.max_width, spec.height, spec.sill
+            n_max = spec.max_count
             for length, p, q in plan.exterior_runs(name):
                 if len(wk) and sum(1 for w in wk if w.room == name) >= n_max:
                     break
@@ -132,7 +127,7 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
                 segs = [(0.0, length)]
                 if entrance is not None and k == 0:
                     segs = _cut(segs, p, u, np.asarray(entrance.center), entrance.width / 2 + 0.3)
-                if keep_clear is not None and room_type_of(name) == STAIRCASE:
+                if keep_clear is not None and room_type_of(name) == STAIRCASE_ROOM:
                     segs = [s for s in segs if keep_clear.distance(
                         sg.LineString([p + s[0] * u, p + s[1] * u])) > 0.3]
                 for s0, s1 in segs:
@@ -151,7 +146,7 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
 
 def _cut(segs, p, u, c, half):
     """Remove the interval around point c (projected on the line p + t u) from segments."""
-    if abs(_cross(u, c - p)) > 1e-6:
+    if abs(cross_2d(u, c - p)) > 1e-6:
         return segs
     t = float(np.dot(c - p, u))
     out = []
@@ -199,7 +194,3 @@ def place_stairs(plan: GridPlan) -> list[StairSpec]:
 def _pt(p) -> tuple[float, float]:
     return (round(float(p[0]), 6), round(float(p[1]), 6))
 
-
-def _cross(a, b) -> float:
-    """z of the cross product of two 2D vectors."""
-    return float(a[0] * b[1] - a[1] * b[0])

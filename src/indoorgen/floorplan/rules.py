@@ -7,36 +7,29 @@ breaks them for a room it touched before the program is even evaluated.
 from __future__ import annotations
 
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL
-from indoorgen.floorplan.rooms import (
-    EXTERIOR_TYPES,
-    MIN_AREA,
-    MIN_CLOSET_WIDTH,
-    MIN_WIDTH,
-    NARROW_OK_TYPES,
-    STAIRCASE,
-    room_type_of,
-)
+from indoorgen.floorplan.rooms import min_width, room_type_of
 from indoorgen.floorplan.view import GridPlan
+from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
 
 
 def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
-    MIN_WIDTH wide (closets MIN_CLOSET_WIDTH), at least its type's minimum area, and the
-    staircase room
-    holding the whole staircase placeholder."""
+    `min_width` wide, at least its type's minimum area, and the staircase room holding the
+    whole staircase placeholder."""
     t = room_type_of(o)
     if plan.outline_points(o) is None:
         return [f"{o} is not a simple polygon"]
+    spec = ROOM_TYPES[t]
     out = []
-    if plan.area(o) < MIN_AREA[t] - 1e-9:
-        out.append(f"{o} is smaller than {MIN_AREA[t]} m^2")
-    if t == STAIRCASE and plan.stair_coverage(o) < 0.999:
+    if plan.area(o) < spec.min_area - 1e-9:
+        out.append(f"{o} is smaller than {spec.min_area} m^2")
+    if t == STAIRCASE_ROOM and plan.stair_coverage(o) < 0.999:
         out.append(f"{o} does not hold the stairs")
-    if (t in EXTERIOR_TYPES or o == plan.graph.entrance) and \
+    if (spec.exterior or o == plan.graph.entrance) and \
             plan.longest_exterior_wall(o) < MIN_DOOR_WALL - 1e-9:
         out.append(f"{o} has no outside wall")
-    width = MIN_CLOSET_WIDTH if t in NARROW_OK_TYPES else MIN_WIDTH
+    width = min_width(t)
     if plan.narrow_area(o, width) > 0.01:
         out.append(f"{o} is narrower than {width} m")
     if plan.missing_doors(o):

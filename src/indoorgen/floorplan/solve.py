@@ -22,6 +22,7 @@ import logging
 import math
 import time
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -39,7 +40,7 @@ _DIRS = ((1, 0), (-1, 0), (0, 1), (0, -1))  # (dy, dx)
 
 
 @dataclass
-class AnnealConfig:
+class FloorplanAnnealConfig:
     """Annealing schedule: `steps_per_storey` steps per storey; temperature from `t_start` to
     `t_end` (exponential); `p_stair` of steps move the staircase in multi-storey homes."""
 
@@ -69,6 +70,7 @@ class AnnealStats:
     history: list[float] = field(default_factory=list)  # loss after every step
 
     def to_json(self) -> dict:
+        """The statistics as JSON (rounded), for reports."""
         return {"steps": self.steps, "accepted": self.accepted,
                 "rejected_invalid": self.invalid, "rejected_hard": self.hard,
                 "rejected_uphill": self.uphill, "seconds": round(self.seconds, 4),
@@ -162,10 +164,10 @@ def propose_swap(plan: GridPlan, rng: np.random.Generator, k: int) -> list[Chang
         rr = np.clip(np.nonzero(m)[0] + dy, 0, lab.shape[0] - 1)
         cc = np.clip(np.nonzero(m)[1] + dx, 0, lab.shape[1] - 1)
         nb |= set(lab[rr, cc].tolist())
-    nb = sorted(x for x in nb if x not in (i, s, OUTSIDE))
-    if not nb:
+    choices = sorted(x for x in nb if x not in (i, s, OUTSIDE))
+    if not choices:
         return None
-    j = nb[int(rng.integers(len(nb)))]
+    j = choices[int(rng.integers(len(choices)))]
     ri, ci = np.nonzero(lab == i)
     rj, cj = np.nonzero(lab == j)
     return [(k, np.concatenate([ri, rj]), np.concatenate([ci, cj]),
@@ -176,6 +178,7 @@ def propose_stair(plan: GridPlan, rng: np.random.Generator
                   ) -> tuple[list[Change], tuple[int, int, int, int]] | None:
     """Shift the staircase placeholder one cell; each storey's staircase room takes the cells
     it newly covers."""
+    assert plan.stair_rect is not None  # only multi-storey homes move their staircase
     iy0, ix0, iy1, ix1 = plan.stair_rect
     dy, dx = _DIRS[int(rng.integers(4))]
     rect = (iy0 + dy, ix0 + dx, iy1 + dy, ix1 + dx)
@@ -194,10 +197,11 @@ def propose_stair(plan: GridPlan, rng: np.random.Generator
     return changes, rect
 
 
-def apply(plan: GridPlan, changes: list[Change]) -> tuple[list[Change], set[str]]:
+def apply(plan: GridPlan, changes: list[Change]) -> tuple[list[Any], set[str]]:
     """Write `changes` into the plan; returns the undo changes and the rooms touched. The undo
     list ends with a snapshot of the view's caches, so a revert needs no recomputation."""
-    undo, touched = [], set()
+    undo: list[Any] = []
+    touched: set[str] = set()
     snapshot = plan.snapshot()
     for k, rows, cols, new in changes:
         old = plan.labels[k][rows, cols].copy()
@@ -220,10 +224,10 @@ def valid(plan: GridPlan, rooms: set[str]) -> bool:
 
 
 def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
-           config: AnnealConfig | None = None) -> AnnealStats:
+           config: FloorplanAnnealConfig | None = None) -> AnnealStats:
     """Anneal `plan` in place under `problem`. A plan that starts violating some hard
     constraint is driven towards satisfying it; one that satisfies them keeps doing so."""
-    cfg = config or AnnealConfig()
+    cfg = config or FloorplanAnnealConfig()
     t_start = time.perf_counter()
     ev = Evaluator(problem, plan, check=cfg.check)
     cur = ev.evaluate()

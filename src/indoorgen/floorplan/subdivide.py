@@ -95,8 +95,8 @@ def mondrian(rng: np.random.Generator, grid: Grid, n_spaces: int, min_side: int 
     n = 0
     for y0, x0, y1, x1 in rects:
         comp, k = ndimage.label(inside[y0:y1, x0:x1])
-        for c in range(1, k + 1):
-            labels[y0:y1, x0:x1][comp == c] = n
+        for piece in range(1, k + 1):
+            labels[y0:y1, x0:x1][comp == piece] = n
             n += 1
     return labels
 
@@ -108,7 +108,7 @@ def adjacency(labels: np.ndarray) -> dict[tuple[int, int], int]:
         m = (a != b) & (a >= 0) & (b >= 0)
         lo, hi = np.minimum(a[m], b[m]), np.maximum(a[m], b[m])
         keys, counts = np.unique(lo * 100003 + hi, return_counts=True)
-        for k, c in zip(keys.tolist(), counts.tolist()):
+        for k, c in zip(keys.tolist(), counts.tolist(), strict=False):
             pair = (k // 100003, k % 100003)
             out[pair] = out.get(pair, 0) + c
     return out

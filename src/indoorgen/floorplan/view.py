@@ -18,7 +18,8 @@ from shapely.geometry.polygon import orient
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
 from indoorgen.floorplan.graph import HomeGraph
 from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
-from indoorgen.floorplan.rooms import MIN_AREA, TYPICAL_AREA, room_type_of
+from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.model.room_types import ROOM_TYPES
 
 _TURN = math.radians(20.0)
 
@@ -47,7 +48,7 @@ def value_runs(*codes: np.ndarray) -> list[tuple[int, int, int, int, int]]:
     local = starts - np.asarray(offsets)[which]
     rows, cols = np.divmod(local, np.asarray(widths)[which])
     return list(zip((ends - starts).tolist(), rows.tolist(), cols.tolist(), vals.tolist(),
-                    which.tolist()))
+                    which.tolist(), strict=False))
 
 
 def all_runs(x: np.ndarray) -> list[tuple[int, int, int]]:
@@ -62,7 +63,7 @@ def _hull_area(pts: list[tuple[float, float]]) -> float:
         return 0.0
 
     def half(seq):
-        h = []
+        h: list = []
         for q in seq:
             while len(h) >= 2 and ((h[-1][0] - h[-2][0]) * (q[1] - h[-2][1])
                                    - (h[-1][1] - h[-2][1]) * (q[0] - h[-2][0])) <= 0:
@@ -98,7 +99,7 @@ def polygon_exterior_runs(points, contour: sg.Polygon
     ring = contour.exterior
     pts = np.asarray(points, float)
     out = []
-    for a, b in zip(pts, np.roll(pts, -1, axis=0)):
+    for a, b in zip(pts, np.roll(pts, -1, axis=0), strict=False):
         if all(ring.distance(sg.Point(p)) < 1e-6 for p in (a, b, (a + b) / 2)):
             out.append((float(np.hypot(*(b - a))), a, b))
     out.sort(key=lambda r: (-r[0], r[1][0], r[1][1]))
@@ -118,22 +119,26 @@ class GridPlan(RoomView):
         self.index: dict[str, tuple[int, int]] = {
             n: (k, i) for k, names in enumerate(self.names) for i, n in enumerate(names)}
         self.stair_rect = stair_rect  # (iy0, ix0, iy1, ix1) in cells, end exclusive
-        self._stair_mask = None
+        self._stair_mask: tuple[tuple[int, int, int, int], np.ndarray] | None = None
         self._paths = {}
         for k, g in enumerate(graph.storeys):
             entry = graph.storey_entry(k)
             self._paths.update(nx.single_source_shortest_path(g, entry))
-        self._typical_total = [math.fsum(TYPICAL_AREA[room_type_of(n)] for n in names)
+        self._typical_total = [math.fsum(ROOM_TYPES[room_type_of(n)].typical_area
+                                         for n in names)
                                for names in self.names]
 
     # -- RoomView: the basics ----------------------------------------------------------------
     def room_ids(self) -> list[str]:
+        """Every room of the home, storey by storey."""
         return [n for names in self.names for n in names]
 
     def storey_ids(self) -> list[str]:
+        """The storeys' ids, ``storey_<k>``."""
         return [f"{STOREY}_{k}" for k in range(len(self.grids))]
 
     def room_type(self, o: str) -> str:
+        """The type of room o (from its name)."""
         return room_type_of(o)
 
     def tags(self, o: str) -> frozenset:
@@ -142,31 +147,40 @@ class GridPlan(RoomView):
         return t | {"entrance"} if o == self.graph.entrance else t
 
     def level(self, o: str) -> int:
+        """The storey room o is on."""
         return self.index[o][0]
 
     def neighbours(self, o: str) -> list[str]:
+        """o's room-graph neighbours on its storey, sorted."""
         return sorted(self.graph.storeys[self.index[o][0]].neighbors(o))
 
     def contour(self, level: int) -> sg.Polygon:
+        """Storey `level`'s outline."""
         return self.grids[level].contour
 
     def entry_room(self, level: int) -> str:
+        """The room storey `level` is entered by (entrance or staircase room)."""
         return self.graph.storey_entry(level)
 
     def entry_path(self, o: str) -> list[str]:
+        """The rooms from the storey's entry room to o along the room graph."""
         return self._paths[o]
 
     def typical_area(self, o: str) -> float:
-        return TYPICAL_AREA[room_type_of(o)]
+        """Typical area of o's type (m^2, from the room-type table)."""
+        return ROOM_TYPES[room_type_of(o)].typical_area
 
     def min_area(self, o: str) -> float:
-        return MIN_AREA[room_type_of(o)]
+        """Smallest area o's type may have (m^2, from the room-type table)."""
+        return ROOM_TYPES[room_type_of(o)].min_area
 
     def ideal_area(self, o: str) -> float:
+        """o's share of its storey's area, in proportion to the typical areas of its rooms (m^2)."""
         k = self.index[o][0]
         return self.typical_area(o) / self._typical_total[k] * self.grids[k].contour.area
 
     def stair_polygon(self) -> sg.Polygon | None:
+        """The staircase placeholder's rectangle (None in a one-storey home)."""
         if self.stair_rect is None:
             return None
         iy0, ix0, iy1, ix1 = self.stair_rect
@@ -190,6 +204,7 @@ class GridPlan(RoomView):
         return {r: dict(d) for r, d in self._cache.items()}
 
     def restore(self, snapshot: dict) -> None:
+        """Put back the measure caches of a `snapshot`."""
         self._cache = snapshot
 
     def entry_point(self, level: int) -> np.ndarray:
@@ -205,6 +220,7 @@ class GridPlan(RoomView):
 
     # -- cells ---------------------------------------------------------------------------------
     def mask(self, o: str) -> np.ndarray:
+        """The cells labelled o on its storey's grid."""
         k, i = self.index[o]
         return self.cached(o, "mask", lambda: self.labels[k] == i)
 
@@ -222,6 +238,7 @@ class GridPlan(RoomView):
                 slice(max(0, x0 - margin), min(nx, x1 + margin)))
 
     def has_partial(self, o: str) -> bool:
+        """Whether o has cells only partly inside the outline (bevelled edges)."""
         k, _ = self.index[o]
         return self.cached(o, "partial", lambda: bool(
             self.grids[k].partial[self.bbox(o)][self.mask(o)[self.bbox(o)]].any()))
@@ -247,6 +264,7 @@ class GridPlan(RoomView):
         return self.cached(o, "outline", f)
 
     def polygon(self, o: str) -> sg.Polygon | None:
+        """o's outline as a shapely Polygon (None if o is not one simple polygon)."""
         def f():
             pts = self.outline_points(o)
             return None if pts is None else sg.Polygon(pts)
@@ -263,13 +281,16 @@ class GridPlan(RoomView):
         return self.cached(o, what, f)
 
     def area(self, o: str) -> float:
+        """o's floor area (m^2), partial cells counted by their inside fraction."""
         g = self.grids[self.index[o][0]]
         return self._cell_sum(o, "frac") * g.size ** 2
 
     def exterior_length(self, o: str) -> float:
+        """Length of o's walls on the storey outline (m)."""
         return self._cell_sum(o, "ext_len")
 
     def exterior_corners(self, o: str) -> float:
+        """Number of the storey outline's corners on o's boundary."""
         return self._cell_sum(o, "ext_corners")
 
     def _shape(self, o: str) -> dict:
@@ -277,6 +298,7 @@ class GridPlan(RoomView):
         plain Python over its few corners."""
         def f():
             pts = self.outline_points(o)
+            assert pts is not None  # measured only on valid plans
             n = len(pts)
             a = cx = cy = 0.0
             for i in range(n):
@@ -307,25 +329,31 @@ class GridPlan(RoomView):
         return self.cached(o, "shape", f)
 
     def center(self, o: str) -> np.ndarray:
+        """o's outline centroid (z = 0)."""
         c = self._shape(o)["centroid"]
         return np.array([c[0], c[1], 0.0])
 
     def aspect_ratio(self, o: str) -> float:
+        """Long side over short side of o's bounding box (1: square)."""
         x0, y0, x1, y1 = self._shape(o)["bounds"]
         w, h = x1 - x0, y1 - y0
         return max(w / h, h / w)
 
     def convexity(self, o: str) -> float:
+        """Convex hull area over area of o (1: convex)."""
         sh = self._shape(o)
         return sh["hull"] / sh["area"]
 
     def wall_count(self, o: str) -> float:
+        """Number of corners (so of walls) of o's outline."""
         return float(self._shape(o)["corners"])
 
     def wall_lines(self, o: str) -> tuple[frozenset, frozenset]:
+        """The x and y positions of o's vertical and horizontal walls."""
         return self._shape(o)["lines"]
 
     def narrow_area(self, o: str, width: float) -> float:
+        """Area of the parts of o narrower than `width` (m^2)."""
         def f():
             if self.has_partial(o):
                 return RoomView.narrow_area(self, o, width)
@@ -337,6 +365,7 @@ class GridPlan(RoomView):
         return self.cached(o, ("narrow", width), f)
 
     def stair_coverage(self, o: str) -> float:
+        """Share of the staircase placeholder inside o (1 in a one-storey home)."""
         if self.stair_rect is None:
             return 1.0
         iy0, ix0, iy1, ix1 = self.stair_rect
@@ -344,6 +373,7 @@ class GridPlan(RoomView):
         return inside / ((iy1 - iy0) * (ix1 - ix0))
 
     def stair_iou(self, o: str) -> float:
+        """Intersection over union of o and the staircase placeholder (1 in a one-storey home)."""
         if self.stair_rect is None:
             return 1.0
         iy0, ix0, iy1, ix1 = self.stair_rect
@@ -370,7 +400,7 @@ class GridPlan(RoomView):
             sides = ((0, 0, out_[:-2, 1:-1]), (0, 1, out_[2:, 1:-1]),
                      (1, 0, out_[1:-1, :-2]), (1, 1, out_[1:-1, 2:]))
             codes = [np.where(mine & across, 0, OUTSIDE) for _, _, across in sides]
-            codes = [c if axis == 0 else c.T for (axis, _, _), c in zip(sides, codes)]
+            codes = [c if axis == 0 else c.T for (axis, _, _), c in zip(sides, codes, strict=False)]
             out = []
             for length, row, start, _, t in value_runs(*codes):
                 axis, side, _ = sides[t]
@@ -419,7 +449,7 @@ class GridPlan(RoomView):
             v = np.where(mine[:, :-1], other[:, 1:], np.where(mine[:, 1:], other[:, :-1], OUTSIDE))
             for length, row, start, lab_j, axis in value_runs(h, v.T):
                 L = length * g.size
-                if L > best.get(lab_j, (0.0,))[0]:
+                if best.get(lab_j, (0.0,))[0] < L:
                     mid = start + length / 2
                     p = g.xy(xs.start + mid, ys.start + row + 1) if axis == 0 else \
                         g.xy(xs.start + row + 1, ys.start + mid)
@@ -437,17 +467,20 @@ class GridPlan(RoomView):
         return (0.0, None) if hit is None else (hit[0], np.array(hit[1]))
 
     def missing_doors(self, o: str) -> float:
+        """Number of o's graph neighbours it shares no door-wide wall with."""
         walls = self.walls_with(o)
         need = MIN_DOOR_WALL - 1e-6
         return float(sum(1 for n in self.neighbours(o)
                          if walls.get(self.index[n][1], (0.0,))[0] < need))
 
     def path_directness(self, o: str) -> float:
+        """How direct the walk from the storey's entry point to o through the doors on its graph
+        path is: Manhattan distance over walked distance (1: direct)."""
         path = self.entry_path(o)
         ex, ey = self.entry_point(self.level(o))[:2]
         px, py = float(ex), float(ey)
         walk = 0.0
-        for a, b in zip(path, path[1:]):
+        for a, b in zip(path, path[1:], strict=False):
             hit = self.walls_with(a).get(self.index[b][1])
             qx, qy = hit[1] if hit is not None else self._shape(b)["centroid"]
             walk += abs(qx - px) + abs(qy - py)
@@ -463,7 +496,7 @@ class GridPlan(RoomView):
         if not rooms:
             return
         super().invalidate(rooms)
-        idx = {}
+        idx: dict[int, set[int]] = {}
         for r in rooms:
             k, i = self.index[r]
             idx.setdefault(k, set()).add(i)
@@ -474,4 +507,5 @@ class GridPlan(RoomView):
 
     # -- snapshots ------------------------------------------------------------------------------
     def room_polygons(self, level: int) -> dict[str, sg.Polygon]:
+        """The outline of every room on storey `level`."""
         return {n: self.polygon(n) for n in self.names[level]}

@@ -19,7 +19,7 @@ from indoorgen.model.frames import yaw_matrix
 SCENE_FORMAT_VERSION = 1
 
 
-def _r(x: float, nd: int = 6) -> float:
+def _r(x: float | np.floating[Any], nd: int = 6) -> float:
     """Round for serialisation so that JSON is stable and readable."""
     v = round(float(x), nd)
     return 0.0 if v == 0 else v
@@ -46,18 +46,22 @@ class Pose:
 
     def apply(self, points: np.ndarray) -> np.ndarray:
         """Transform local points (N,3) to world."""
-        return np.asarray(points, float) @ self.rotation().T + np.asarray(self.position)
+        world: np.ndarray = np.asarray(points, float) @ self.rotation().T + np.asarray(self.position)
+        return world
 
     def front(self) -> np.ndarray:
         """World direction of the local +X (the object's front)."""
         return np.array([math.cos(self.yaw), math.sin(self.yaw), 0.0])
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
+        """The pose's scene.json record (rounded)."""
         return {"position": [_r(v) for v in self.position], "yaw": _r(self.yaw)}
 
     @staticmethod
-    def from_json(d: dict) -> "Pose":
-        return Pose(tuple(float(v) for v in d["position"]), float(d["yaw"]))
+    def from_json(d: dict[str, Any]) -> Pose:
+        """A pose from its scene.json record."""
+        x, y, z = (float(v) for v in d["position"])
+        return Pose((x, y, z), float(d["yaw"]))
 
 
 @dataclass(frozen=True)
@@ -71,7 +75,8 @@ class RelationInstance:
     parent_surface: str
     margin: float = 0.0
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
+        """The relation's scene.json record."""
         return {
             "relation": self.relation,
             "parent": self.parent,
@@ -81,7 +86,8 @@ class RelationInstance:
         }
 
     @staticmethod
-    def from_json(d: dict) -> "RelationInstance":
+    def from_json(d: dict[str, Any]) -> RelationInstance:
+        """A relation from its scene.json record."""
         return RelationInstance(d["relation"], d["parent"], d["child_surface"],
                                 d["parent_surface"], float(d.get("margin", 0.0)))
 
@@ -105,7 +111,8 @@ class SceneObject:
         """The object or room this one rests on or hangs from (its first relation's parent)."""
         return self.relations[0].parent if self.relations else ""
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
+        """The object's scene.json record (params and pose rounded, tags sorted)."""
         return {
             "name": self.name,
             "generator": self.generator,
@@ -119,7 +126,8 @@ class SceneObject:
         }
 
     @staticmethod
-    def from_json(d: dict) -> "SceneObject":
+    def from_json(d: dict[str, Any]) -> SceneObject:
+        """An object from its scene.json record."""
         return SceneObject(
             name=d["name"], generator=d["generator"], params=dict(d["params"]),
             seed=int(d["seed"]), pose=Pose.from_json(d["pose"]), tags=list(d["tags"]),
@@ -129,7 +137,8 @@ class SceneObject:
 
 
 def _params_json(params: dict[str, Any]) -> dict[str, Any]:
-    out = {}
+    """Params as plain JSON values, in sorted order, floats rounded."""
+    out: dict[str, Any] = {}
     for k in sorted(params):
         v = params[k]
         if isinstance(v, (bool, np.bool_)):
@@ -156,13 +165,15 @@ class Door:
     height: float = 2.05
     clearance_depth: float = 1.0
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
+        """The door's scene.json record (rounded)."""
         return {"name": self.name, "wall": self.wall, "offset": _r(self.offset),
                 "width": _r(self.width), "height": _r(self.height),
                 "clearance_depth": _r(self.clearance_depth)}
 
     @staticmethod
-    def from_json(d: dict) -> "Door":
+    def from_json(d: dict[str, Any]) -> Door:
+        """A door from its scene.json record."""
         return Door(d["name"], int(d["wall"]), float(d["offset"]), float(d["width"]),
                     float(d["height"]), float(d["clearance_depth"]))
 
@@ -182,8 +193,9 @@ class Room:
     doors: list[Door] = field(default_factory=list)
     elevation: float = 0.0
 
-    def to_json(self) -> dict:
-        out = {"name": self.name, "type": self.room_type,
+    def to_json(self) -> dict[str, Any]:
+        """The room's scene.json record (rounded; `elevation` only when not 0)."""
+        out: dict[str, Any] = {"name": self.name, "type": self.room_type,
                "polygon": [[_r(x), _r(y)] for x, y in self.polygon],
                "height": _r(self.height), "wall_thickness": _r(self.wall_thickness),
                "storey": self.storey, "doors": [d.to_json() for d in self.doors]}
@@ -192,7 +204,8 @@ class Room:
         return out
 
     @staticmethod
-    def from_json(d: dict) -> "Room":
+    def from_json(d: dict[str, Any]) -> Room:
+        """A room from its scene.json record."""
         return Room(d["name"], d["type"], [tuple(p) for p in d["polygon"]], float(d["height"]),
                     float(d["wall_thickness"]), int(d["storey"]),
                     [Door.from_json(x) for x in d["doors"]], float(d.get("elevation", 0.0)))
@@ -211,12 +224,15 @@ class Scene:
     floorplan: dict[str, Any] | None = None
 
     def add_object(self, obj: SceneObject) -> None:
+        """Add (or replace) `obj`, keyed by its name."""
         self.objects[obj.name] = obj
 
     def objects_in(self, room: str) -> list[SceneObject]:
+        """The objects placed in `room`, in placement order."""
         return [o for o in self.objects.values() if o.room == room]
 
-    def to_json(self) -> dict:
+    def to_json(self) -> dict[str, Any]:
+        """The scene.json object (see `dumps` for its canonical text)."""
         return {
             "format_version": SCENE_FORMAT_VERSION,
             "seed": int(self.seed),
@@ -231,7 +247,8 @@ class Scene:
         return json.dumps(self.to_json(), indent=1, sort_keys=True) + "\n"
 
     @staticmethod
-    def from_json(d: dict) -> "Scene":
+    def from_json(d: dict[str, Any]) -> Scene:
+        """A scene from its scene.json object."""
         s = Scene(seed=int(d["seed"]), config=dict(d.get("config", {})))
         for r in d["rooms"]:
             room = Room.from_json(r)

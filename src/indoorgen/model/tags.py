@@ -1,4 +1,4 @@
-"""The semantic vocabulary: object classes, surface roles and room types.
+"""The semantic vocabulary: object classes and surface roles (room types: `room_types`).
 
 Tags are plain string enums so that they serialise to `scene.json` and USD as readable names.
 Classes are flat; a generator lists every class it belongs to (a dining chair is Furniture,
@@ -10,6 +10,8 @@ from enum import Enum
 
 
 class Semantics(str, Enum):
+    """Object classes (flat: an object carries every class it belongs to) and room tags."""
+
     # rooms and architecture
     Room = "room"
     # broad object groups
@@ -176,16 +178,3 @@ class Subpart(str, Enum):
     Wall = "wall"
     Ceiling = "ceiling"
 
-
-class RoomType(str, Enum):
-    LivingRoom = "living_room"
-    DiningRoom = "dining_room"
-    Kitchen = "kitchen"
-    Bedroom = "bedroom"
-    Bathroom = "bathroom"
-    Closet = "closet"
-    Hallway = "hallway"
-    Garage = "garage"
-    Balcony = "balcony"
-    Utility = "utility"
-    StaircaseRoom = "staircase_room"

@@ -1,1 +1,2 @@
-"""Pictures of scenes and assets: the top-down plan and shaded asset previews."""
+"""Pictures: plan drawings of scenes (`plan`) and floorplans (`floorplan`), sharing `drawing`,
+and shaded asset previews (`preview`)."""

@@ -19,10 +19,10 @@ import shapely.geometry as sg
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Arc, FancyArrow, Patch, PathPatch
-from matplotlib.path import Path
 
 from indoorgen.model.scene import Room, Scene, SceneObject
 from indoorgen.model.tags import Semantics
+from indoorgen.render.drawing import WALL_COLOUR, polygon_path
 
 log = logging.getLogger(__name__)
 
@@ -42,7 +42,6 @@ CLASS_COLOURS: tuple[tuple[str, str, str], ...] = (
 )
 OTHER_COLOUR = ("other", "#bab0ac")
 
-WALL_COLOUR = "#3b3b3b"
 FLOOR_COLOUR = "#faf8f3"
 DOOR_COLOUR = "#7a7a7a"
 ZONE_COLOUR = "#d62728"
@@ -159,24 +158,6 @@ def _draw_legend(ax, classes: dict[str, str], zones: bool) -> None:
 # architecture
 
 
-def _polygon_path(geom) -> Path:
-    """A matplotlib Path for a shapely Polygon or MultiPolygon, holes included."""
-    polys = list(geom.geoms) if hasattr(geom, "geoms") else [geom]
-    verts, codes = [], []
-    for p in polys:
-        if not isinstance(p, sg.Polygon) or p.is_empty:
-            continue
-        for ring in (p.exterior, *p.interiors):
-            xy = np.asarray(ring.coords)[:, :2]
-            verts.append(xy)
-            c = np.full(len(xy), Path.LINETO, dtype=Path.code_type)
-            c[0], c[-1] = Path.MOVETO, Path.CLOSEPOLY
-            codes.append(c)
-    if not verts:
-        return Path(np.zeros((1, 2)), [Path.MOVETO])
-    return Path(np.concatenate(verts), np.concatenate(codes))
-
-
 def _edge_frames(room: Room) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Per edge: start point, unit direction, inward normal (CCW polygon) and length."""
     p = np.asarray(room.polygon, float)
@@ -192,9 +173,9 @@ def _draw_room(ax, room: Room) -> None:
         return
     poly = sg.Polygon(room.polygon)
     band = poly.buffer(room.wall_thickness, join_style="mitre").difference(poly)
-    ax.add_patch(PathPatch(_polygon_path(poly), facecolor=FLOOR_COLOUR, edgecolor="none",
+    ax.add_patch(PathPatch(polygon_path(poly), facecolor=FLOOR_COLOUR, edgecolor="none",
                            zorder=1))
-    ax.add_patch(PathPatch(_polygon_path(band), facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR,
+    ax.add_patch(PathPatch(polygon_path(band), facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR,
                            linewidth=0.8, zorder=3))
     for door in room.doors:
         _draw_door(ax, room, door)
@@ -253,7 +234,7 @@ def _draw_openings(ax, scene: Scene, fp: dict[str, Any], level: int) -> None:
     for st in fp.get("stairs", []):
         if level in (st["from_level"], st["to_level"]):
             poly = sg.Polygon(st["polygon"])
-            ax.add_patch(PathPatch(_polygon_path(poly), facecolor="#cfcfcf", edgecolor="#555555",
+            ax.add_patch(PathPatch(polygon_path(poly), facecolor="#cfcfcf", edgecolor="#555555",
                                    hatch="---", linewidth=0.8, alpha=0.9, zorder=5))
             pt = poly.representative_point()
             ax.text(pt.x, pt.y, "stairs", fontsize=7, ha="center", va="center", zorder=7,
@@ -267,9 +248,9 @@ def _draw_zone(ax, zone: sg.Polygon) -> None:
     """A door clearance zone: light hatched area with a dashed outline."""
     if zone.is_empty:
         return
-    ax.add_patch(PathPatch(_polygon_path(zone), facecolor=ZONE_COLOUR, alpha=0.07,
+    ax.add_patch(PathPatch(polygon_path(zone), facecolor=ZONE_COLOUR, alpha=0.07,
                            edgecolor="none", zorder=2))
-    ax.add_patch(PathPatch(_polygon_path(zone), facecolor="none", edgecolor=ZONE_COLOUR,
+    ax.add_patch(PathPatch(polygon_path(zone), facecolor="none", edgecolor=ZONE_COLOUR,
                            hatch="///", linewidth=0.6, linestyle="--", alpha=0.45, zorder=2))
 
 
@@ -327,7 +308,7 @@ def _draw_object(ax, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
                  scale: float, label: bool = True) -> None:
     """One footprint: fill, outline, front arrow and label, stacked at z-order `z`."""
     floor_cover = colour == CLASS_COLOURS[0][2]
-    ax.add_patch(PathPatch(_polygon_path(fp), facecolor=colour, edgecolor=_darker(colour),
+    ax.add_patch(PathPatch(polygon_path(fp), facecolor=colour, edgecolor=_darker(colour),
                            linewidth=0.8, alpha=0.6 if floor_cover else 0.85, zorder=z))
     c = np.asarray(fp.centroid.coords[0])
     size = math.sqrt(max(fp.area, 1e-6))

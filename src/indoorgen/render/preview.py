@@ -20,9 +20,9 @@ from matplotlib.figure import Figure
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from mpl_toolkits.mplot3d.axes3d import Axes3D
 
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.materials import bake, choose_materials
 from indoorgen.assets.protocol import Asset
-from indoorgen.assets.registry import get_factory
 
 log = logging.getLogger(__name__)
 

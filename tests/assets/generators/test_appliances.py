@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make
 from support.generatorcheck import check_interior_shelves, check_wall_back, faces_of_slot, on_mesh

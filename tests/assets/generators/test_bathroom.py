@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make
 from support.generatorcheck import check_wall_back, on_mesh

@@ -3,7 +3,7 @@ leans on the row. These checks came with the kitchenware tests; the generators a
 family's."""
 from __future__ import annotations
 
-from indoorgen.assets.registry import factories_with
+from indoorgen.assets.catalogue import factories_with
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build, distances, sample_polygon
 from support.generatorcheck import check_material_choices, check_small_objects

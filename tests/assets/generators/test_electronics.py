@@ -7,7 +7,7 @@ import math
 import pytest
 import trimesh
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics
 from support.assetcheck import (
     TOL,

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from indoorgen.assets.catalogue import factories_with, get_factory
 from indoorgen.assets.generators import food
-from indoorgen.assets.registry import factories_with, get_factory
 from indoorgen.assets.shapes import vessels
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make

@@ -7,7 +7,7 @@ import pytest
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, make
 from support.generatorcheck import check_interior_shelves, check_wall_back, on_mesh

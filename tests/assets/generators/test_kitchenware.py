@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from indoorgen.assets.registry import factories_with
+from indoorgen.assets.catalogue import factories_with
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build, distances, make, sample_polygon
 from support.generatorcheck import (

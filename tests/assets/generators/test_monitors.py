@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build
 from support.generatorcheck import faces_of_slot

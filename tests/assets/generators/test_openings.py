@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.shapes.architectural import opening_size
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make

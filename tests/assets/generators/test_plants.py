@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics
 from support.assetcheck import (
     assert_clean_variant,

@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.generators.stairs import RISER_MAX, RISER_MIN, riser_count
-from indoorgen.assets.registry import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, make
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import TOL, as_manifold, build, distances, make, surface_gap
 

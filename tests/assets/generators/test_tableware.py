@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from indoorgen.assets.registry import factories_with
+from indoorgen.assets.catalogue import factories_with
 from indoorgen.model.tags import Semantics
 from support.assetcheck import build, make
 from support.generatorcheck import (

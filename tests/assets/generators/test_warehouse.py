@@ -7,7 +7,7 @@ import pytest
 import shapely.geometry as sg
 import trimesh
 
-from indoorgen.assets.registry import get_factory
+from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import TOL, as_manifold, build, distances, make, surface_gap
 

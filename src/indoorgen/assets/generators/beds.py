@@ -13,11 +13,11 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, DoorJoint, drawer, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.assets.shapes.sweeps import rod_between

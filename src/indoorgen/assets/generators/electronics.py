@@ -8,10 +8,10 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import (
     OVERLAP,
     SMALL_OVERLAP,

@@ -2,7 +2,7 @@
 
 The generators live in generators/openings/doors.py (interior_door, sliding_door,
 exterior_door), generators/openings/windows.py (window, bay_window) and generators/stairs.py
-(staircase, stair_railing); floorplan/fixtures.py sizes wall openings with `opening_size`.
+(staircase, stair_railing); architecture/fixtures.py sizes wall openings with `opening_size`.
 
 Door and window frame: the wall is the YZ plane, its thickness along X centred on x=0 (+X is the
 side a door swings into and the room side of a window; -X the other room or the outside), the

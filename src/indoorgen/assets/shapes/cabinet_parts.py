@@ -11,10 +11,9 @@ from collections.abc import Sequence
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.parts_factory import make_joint
 from indoorgen.assets.protocol import Joint, Surface
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, DoorJoint
+from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import Part, box_between, rod
 from indoorgen.model.tags import Subpart
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import manifold3d as m3d
 import numpy as np
 
+from indoorgen.assets.protocol import Joint
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.primitives import Part, Vec3, box_between, rod
 
@@ -185,3 +186,8 @@ def cabinet_fronts(front_x: float, cells: Sequence[Front], depth: float, *, thic
 
 #: how far cabinet fronts and their handles stand proud of the carcass (gap + leaf + bar handle)
 FRONT_PROUD = MOVING_GAP + FRONT_T + HANDLE_STANDOFF["bar"]
+
+
+def make_joint(name: str, moving: DoorJoint, lower: float, upper: float) -> Joint:
+    """A named `Joint` with range [lower, upper] from a moving part's description."""
+    return Joint(name, moving.kind, moving.axis, moving.origin, lower, upper, moving.link)

@@ -14,11 +14,11 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.generators.bathroom._parts import FIXTURE_MATERIALS, Prim, prim_bounds, prim_solid
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
-from indoorgen.assets.shapes.moving_parts import Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S

@@ -22,10 +22,10 @@ from indoorgen.assets.generators.bathroom._parts import (
     prim_solid,
     rounded_rect,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint
+from indoorgen.assets.shapes.moving_parts import MOVING_GAP, DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

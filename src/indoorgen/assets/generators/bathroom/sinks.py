@@ -26,12 +26,12 @@ from indoorgen.assets.generators.bathroom._parts import (
     polygon_pieces,
     rounded_rect,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, MOVING_GAP, Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, MOVING_GAP, Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, circle_polygon, cylinder, lathe
 from indoorgen.assets.shapes.surfaces import support_polygon
 from indoorgen.model.tags import Semantics as S

@@ -6,11 +6,11 @@ from typing import Any
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
-from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S

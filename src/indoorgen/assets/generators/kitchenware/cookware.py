@@ -11,10 +11,10 @@ import manifold3d as m3d
 import numpy as np
 
 from indoorgen.assets.generators.kitchenware._parts import LID_GAP, sweep
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.moving_parts import DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import Part, bevel_box, box_between, cylinder, lathe, torus
 from indoorgen.assets.shapes.vessels import (
     SECTIONS,

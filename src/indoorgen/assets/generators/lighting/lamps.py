@@ -18,10 +18,10 @@ from indoorgen.assets.generators.lighting._parts import (
     aabb_part,
     build_groups,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.moving_parts import DoorJoint
+from indoorgen.assets.shapes.moving_parts import DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import (
     OVERLAP,
     Part,

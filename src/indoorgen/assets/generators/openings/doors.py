@@ -15,7 +15,7 @@ from typing import Any
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.architectural import (
@@ -32,7 +32,7 @@ from indoorgen.assets.shapes.architectural import (
     slab,
 )
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle, hinge_motion
+from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle, hinge_motion, make_joint
 from indoorgen.assets.shapes.primitives import Part, box, box_between, rod, torus
 from indoorgen.model.tags import Semantics as S
 

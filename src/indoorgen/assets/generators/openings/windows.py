@@ -15,7 +15,7 @@ import manifold3d as m3d
 import numpy as np
 import shapely.geometry as sg
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.architectural import (
@@ -30,7 +30,7 @@ from indoorgen.assets.shapes.architectural import (
     ring,
 )
 from indoorgen.assets.shapes.mesh import solid_union
-from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle
+from indoorgen.assets.shapes.moving_parts import DoorJoint, bar_handle, make_joint
 from indoorgen.assets.shapes.primitives import Part, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_polygon, support_rect
 from indoorgen.model.tags import Semantics as S

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Surface
 from indoorgen.assets.shapes.frames import frame, legs
 from indoorgen.assets.shapes.moving_parts import (
@@ -25,6 +25,7 @@ from indoorgen.assets.shapes.moving_parts import (
     DoorJoint,
     drawer,
     hinged_door,
+    make_joint,
 )
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect

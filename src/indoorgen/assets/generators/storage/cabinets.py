@@ -18,11 +18,11 @@ from indoorgen.assets.generators.storage._cases import (
     shelf_heights,
     top_surface,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
-from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S

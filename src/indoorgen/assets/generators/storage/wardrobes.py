@@ -23,10 +23,9 @@ from indoorgen.assets.generators.storage._cases import (
     shelf_board,
     shelf_heights,
 )
-from indoorgen.assets.parts_factory import make_joint
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_T, MOVING_GAP, REVEAL, DoorJoint
+from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_T, MOVING_GAP, REVEAL, DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S

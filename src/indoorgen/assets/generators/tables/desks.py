@@ -5,11 +5,11 @@ from __future__ import annotations
 from typing import Any
 
 from indoorgen.assets.generators.tables._parts import translate_parts
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
-from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S

@@ -10,11 +10,11 @@ from indoorgen.assets.generators.tables._parts import (
     table_params,
     translate_parts,
 )
-from indoorgen.assets.parts_factory import PartsFactory, make_joint
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass
-from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts
+from indoorgen.assets.shapes.moving_parts import FRONT_PROUD, Front, cabinet_fronts, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, board, box
 from indoorgen.assets.shapes.surfaces import support_rect
 from indoorgen.model.tags import Semantics as S

@@ -3,17 +3,15 @@ its floorplan (solidified again), a single room's from its polygon. Validation a
 this, so neither has to store meshes."""
 from __future__ import annotations
 
-from typing import Any
-
-from indoorgen.floorplan.room import RoomGeometry, build_room
+from indoorgen.architecture.room import RoomGeometry, build_room
+from indoorgen.architecture.solidify import Architecture, room_geometries, solidify
+from indoorgen.model.floorplan_io import from_json
 from indoorgen.model.scene import Scene
 
 
-def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Any]:
+def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Architecture | None]:
     """(room geometry by room name, the solidified home or None for a single room)."""
     if scene.floorplan is not None:
-        from indoorgen.floorplan.io import from_json
-        from indoorgen.floorplan.solidify import room_geometries, solidify
         arch = solidify(from_json(scene.floorplan), seed=scene.seed)
         return room_geometries(arch), arch
     return {n: build_room(r) for n, r in scene.rooms.items()}, None

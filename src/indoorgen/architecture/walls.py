@@ -16,11 +16,14 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.plan import DoorSpec, Entrance, Storey, WindowSpec
+from indoorgen.model.floorplan import DoorSpec, Entrance, Storey, WindowSpec
 
 
 @dataclass(frozen=True)
 class WallThickness:
+    """Thickness of interior walls (centred on edges two rooms share) and exterior walls
+    (centred on the storey outline), m."""
+
     interior: float = 0.12
     exterior: float = 0.24
 
@@ -91,7 +94,7 @@ def _nearest_segment(lines, p: np.ndarray) -> tuple[np.ndarray, float] | None:
         if not hasattr(ln, "coords") or ln.is_empty:
             continue
         pts = np.asarray(ln.coords)
-        for a, b in zip(pts[:-1], pts[1:]):
+        for a, b in zip(pts[:-1], pts[1:], strict=False):
             d = b - a
             L = float(np.hypot(*d))
             if L < 1e-9:
@@ -139,8 +142,10 @@ def exterior_frame(storey: Storey, room: str, center, t: WallThickness, what: st
 
 
 def window_frame(storey: Storey, w: WindowSpec, t: WallThickness) -> WallFrame:
+    """The frame of window `w` in its room's exterior wall; `n` points out."""
     return exterior_frame(storey, w.room, w.center, t, f"window {w.name!r}")
 
 
 def entrance_frame(storey: Storey, e: Entrance, t: WallThickness) -> WallFrame:
+    """The frame of the front door in its room's exterior wall; `n` points out."""
     return exterior_frame(storey, e.room, e.center, t, "the entrance")

@@ -16,41 +16,35 @@ One Xform per element with its meshes (world coordinates) below; every element c
 from __future__ import annotations
 
 from os import PathLike
-from pathlib import Path
 
-from pxr import Tf, Usd, UsdGeom
+from pxr import Usd, UsdGeom
 
-from indoorgen.errors import OutputError
-from indoorgen.export.usd import _define_mesh, _tag_prim, sanitize_name
-from indoorgen.floorplan.solidify import Architecture
+from indoorgen.architecture.solidify import Architecture
+from indoorgen.export.usd.prims import define_mesh, export_stage, new_stage, sanitize_name, tag_prim
 
 
 def build_architecture_stage(arch: Architecture) -> Usd.Stage:
     """The in-memory stage of `arch`."""
-    stage = Usd.Stage.CreateInMemory()
-    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
-    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
-    world = UsdGeom.Xform.Define(stage, "/World")
-    stage.SetDefaultPrim(world.GetPrim())
+    stage = new_stage()
     root = UsdGeom.Xform.Define(stage, "/World/Architecture").GetPrim().GetPath()
     for storey in arch.floorplan.storeys:
         sp = root.AppendChild(f"storey_{storey.level}")
         prim = UsdGeom.Xform.Define(stage, sp).GetPrim()
-        _tag_prim(prim, name=f"storey_{storey.level}", generator="floorplan", room="",
-                  parent="", semantics=["storey"])
+        tag_prim(prim, name=f"storey_{storey.level}", generator="floorplan", room="",
+                 parent="", semantics=["storey"])
         for r in storey.rooms:
             g = arch.rooms[r.name]
             rp = sp.AppendChild(sanitize_name(r.name))
-            _tag_prim(UsdGeom.Xform.Define(stage, rp).GetPrim(), name=r.name,
-                      generator="floorplan", room=r.name, parent="",
-                      semantics=["room", r.type])
+            tag_prim(UsdGeom.Xform.Define(stage, rp).GetPrim(), name=r.name,
+                     generator="floorplan", room=r.name, parent="",
+                     semantics=["room", r.type])
             parts = [("floor", g.floor, "floor"), ("ceiling", g.ceiling, "ceiling")]
             parts += [(f"walls_{i}" if i else "walls", w, "wall") for i, w in enumerate(g.walls)]
             for name, mesh, kind in parts:
                 ep = rp.AppendChild(name)
-                _tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=name,
-                          generator=kind, room=r.name, parent="", semantics=[kind, "architecture"])
-                _define_mesh(stage, ep.AppendChild("mesh"), mesh)
+                tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=name,
+                         generator=kind, room=r.name, parent="", semantics=[kind, "architecture"])
+                define_mesh(stage, ep.AppendChild("mesh"), mesh)
     groups = {"door": "doors", "window": "windows", "stair": "stairs", "railing": "stairs"}
     for el in arch.elements:
         group = groups.get(el.kind, "elements")
@@ -59,21 +53,14 @@ def build_architecture_stage(arch: Architecture) -> Usd.Stage:
         if not stage.GetPrimAtPath(gp):
             UsdGeom.Xform.Define(stage, gp)
         ep = gp.AppendChild(sanitize_name(el.name))
-        _tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=el.name,
-                  generator=el.generator or f"{el.kind}_simple", room=el.room,
-                  parent=el.room, semantics=el.semantics)
+        tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=el.name,
+                 generator=el.generator or f"{el.kind}_simple", room=el.room,
+                 parent=el.room, semantics=el.semantics)
         for part, mesh in el.meshes.items():
-            _define_mesh(stage, ep.AppendChild(sanitize_name(part)), mesh)
+            define_mesh(stage, ep.AppendChild(sanitize_name(part)), mesh)
     return stage
 
 
 def write_architecture_usd(arch: Architecture, path: str | PathLike) -> None:
     """Write `arch` to `path` (.usda or .usdc); OutputError if it cannot be written."""
-    path = Path(path)
-    stage = build_architecture_stage(arch)
-    try:
-        ok = stage.GetRootLayer().Export(str(path))
-    except Tf.ErrorException as e:
-        raise OutputError(f"cannot write USD to {str(path)!r}: {e}") from None
-    if not ok:
-        raise OutputError(f"cannot write USD to {str(path)!r}")
+    export_stage(build_architecture_stage(arch), path)

@@ -1,41 +1,47 @@
-"""`plan.png` of a home: one panel per storey with rooms coloured by type and labelled, walls,
-doors with their swing, open connections, windows, stairs and the front door."""
+"""`plan.png` of a bare floorplan (what `indoorgen floorplan` writes): one panel per storey
+with rooms coloured by type and labelled, walls, doors with their swing, open connections,
+windows, stairs and the front door. Like `plan.py`, it draws on an Agg canvas without pyplot.
+"""
 from __future__ import annotations
 
 import math
 from os import PathLike
+from typing import Any
 
 import numpy as np
-import shapely.geometry as sg
+from matplotlib.axes import Axes
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from matplotlib.patches import Arc, FancyArrow, PathPatch
 
-from indoorgen.floorplan.plan import Floorplan, StairSpec, Storey
-from indoorgen.floorplan.rooms import COLORS
-from indoorgen.floorplan.solidify import room_depths
-from indoorgen.floorplan.walls import WallThickness, door_frame, entrance_frame, wall_footprint, window_frame
+from indoorgen.architecture.walls import (
+    WallFrame,
+    WallThickness,
+    door_frame,
+    entrance_frame,
+    wall_footprint,
+    window_frame,
+)
+from indoorgen.model.floorplan import Floorplan, StairSpec, Storey
+from indoorgen.render.drawing import WALL_COLOUR, polygon_path, room_colour
 
-WALL_COLOR = "#3a3a3a"
-WINDOW_COLOR = "#4aa3df"
+WINDOW_COLOUR = "#4aa3df"
 
 
 def draw_floorplan(fp: Floorplan, path: str | PathLike, walls: WallThickness | None = None,
                    title: str = "", dpi: int = 110) -> None:
     """Render `fp` to a PNG at `path`."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.patches import Arc, FancyArrow
-    from matplotlib.patches import Polygon as MplPolygon
-
     t = walls or WallThickness()
     n = len(fp.storeys)
     x0, y0, x1, y1 = _bounds(fp)
     w, h = x1 - x0, y1 - y0
     size = 6.0
-    fig, axes = plt.subplots(1, n, figsize=(size * n * max(0.6, w / h) + 0.5, size + 0.6),
-                             squeeze=False)
-    depth = room_depths(fp)
-    for ax, storey in zip(axes[0], fp.storeys):
-        _draw_storey(ax, fp, storey, t, depth, MplPolygon, Arc, FancyArrow)
+    fig = Figure(figsize=(size * n * max(0.6, w / h) + 0.5, size + 0.6))
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(1, n, squeeze=False)
+    depth = fp.room_depths()
+    for ax, storey in zip(axes[0], fp.storeys, strict=True):
+        _draw_storey(ax, fp, storey, t, depth)
         ax.set_xlim(x0 - 1.0, x1 + 1.0)
         ax.set_ylim(y0 - 1.0, y1 + 1.0)
         ax.set_aspect("equal")
@@ -45,7 +51,6 @@ def draw_floorplan(fp: Floorplan, path: str | PathLike, walls: WallThickness | N
         fig.suptitle(title, fontsize=11)
     fig.tight_layout()
     fig.savefig(path, dpi=dpi)
-    plt.close(fig)
 
 
 def _bounds(fp: Floorplan) -> tuple[float, float, float, float]:
@@ -53,20 +58,18 @@ def _bounds(fp: Floorplan) -> tuple[float, float, float, float]:
     return b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
 
 
-def _patch(ax, poly, MplPolygon, **kw):
+def _patch(ax: Axes, poly: Any, **kw: Any) -> None:
+    """Fill the shapely (multi)polygon `poly`, holes left open, one patch per polygon (so that
+    matplotlib snaps each axis-aligned piece to the pixel grid on its own)."""
     for p in getattr(poly, "geoms", [poly]):
-        if isinstance(p, sg.Polygon) and not p.is_empty:
-            ax.add_patch(MplPolygon(np.asarray(p.exterior.coords), closed=True, **kw))
-            for hole in p.interiors:
-                ax.add_patch(MplPolygon(np.asarray(hole.coords), closed=True, facecolor="white",
-                                        edgecolor="none", zorder=kw.get("zorder", 1)))
+        ax.add_patch(PathPatch(polygon_path(p), **kw))
 
 
-def _draw_storey(ax, fp: Floorplan, storey: Storey, t: WallThickness, depth, MplPolygon, Arc,
-                 FancyArrow) -> None:
+def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
+                 depth: dict[str, int]) -> None:
+    """One storey's panel: rooms, walls with their openings, doors, windows, stairs, labels."""
     for r in storey.rooms:
-        _patch(ax, r.shape(), MplPolygon, facecolor=COLORS.get(r.type, "#dddddd"),
-               edgecolor="none", zorder=1)
+        _patch(ax, r.shape(), facecolor=room_colour(r.type), edgecolor="none", zorder=1)
     walls = wall_footprint(storey, t)
     gaps = []
     for d in storey.doors + storey.openings:
@@ -80,36 +83,37 @@ def _draw_storey(ax, fp: Floorplan, storey: Storey, t: WallThickness, depth, Mpl
         gaps.append(f.rect(fp.entrance.width, -f.thickness, f.thickness))
     for g in gaps:
         walls = walls.difference(g)
-    _patch(ax, walls, MplPolygon, facecolor=WALL_COLOR, edgecolor="none", zorder=3)
+    _patch(ax, walls, facecolor=WALL_COLOUR, edgecolor="none", zorder=3)
     for wdw in storey.windows:
         f = window_frame(storey, wdw, t)
-        _patch(ax, f.rect(wdw.width, -f.thickness / 2, f.thickness / 2), MplPolygon,
-               facecolor="white", edgecolor=WINDOW_COLOR, linewidth=1.0, zorder=4)
-        a, b = f.center - wdw.width / 2 * f.u, f.center + wdw.width / 2 * f.u
-        ax.plot([a[0], b[0]], [a[1], b[1]], color=WINDOW_COLOR, linewidth=1.2, zorder=5)
+        _patch(ax, f.rect(wdw.width, -f.thickness / 2, f.thickness / 2),
+               facecolor="white", edgecolor=WINDOW_COLOUR, linewidth=1.0, zorder=4)
+        p, q = f.center - wdw.width / 2 * f.u, f.center + wdw.width / 2 * f.u
+        ax.plot([p[0], q[0]], [p[1], q[1]], color=WINDOW_COLOUR, linewidth=1.2, zorder=5)
     for d in storey.doors:
         f = door_frame(storey, d, t)
         a, b = d.rooms
         into = b if depth.get(b, 0) >= depth.get(a, 0) else a
-        _door_symbol(ax, f, d.width, f.n if into == b else -f.n, Arc)
+        _door_symbol(ax, f, d.width, f.n if into == b else -f.n)
     for o in storey.openings:
         f = door_frame(storey, o, t)
         p, q = f.center - o.width / 2 * f.u, f.center + o.width / 2 * f.u
-        ax.plot([p[0], q[0]], [p[1], q[1]], color=WALL_COLOR, linewidth=0.8, linestyle=":",
+        ax.plot([p[0], q[0]], [p[1], q[1]], color=WALL_COLOUR, linewidth=0.8, linestyle=":",
                 zorder=4)
     if fp.entrance is not None and storey.level == 0:
         f = entrance_frame(storey, fp.entrance, t)
-        _door_symbol(ax, f, fp.entrance.width, -f.n, Arc)
+        _door_symbol(ax, f, fp.entrance.width, -f.n)
         tail = f.center + f.n * 1.2
         ax.add_patch(FancyArrow(tail[0], tail[1], *(-f.n * 0.8), width=0.12, head_width=0.4,
                                 head_length=0.3, color="#c0392b", zorder=6))
-        ax.text(*(f.center + f.n * 1.45), "entrance", fontsize=7, color="#c0392b",
-                ha="center", va="center", zorder=6)
+        x, y = f.center + f.n * 1.45
+        ax.text(x, y, "entrance", fontsize=7, color="#c0392b", ha="center", va="center",
+                zorder=6)
     for st in fp.stairs:
         if st.from_level == storey.level:
-            _stair_symbol(ax, st, MplPolygon, FancyArrow, going_up=True)
+            _stair_symbol(ax, st)
         if st.to_level == storey.level:
-            _patch(ax, st.shape(), MplPolygon, facecolor="none", edgecolor="#555555",
+            _patch(ax, st.shape(), facecolor="none", edgecolor="#555555",
                    linestyle="--", linewidth=0.8, hatch="//", zorder=2)
             c = st.shape().centroid
             ax.text(c.x, c.y, "open to\nbelow", fontsize=6, ha="center", va="center", zorder=6)
@@ -122,7 +126,7 @@ def _draw_storey(ax, fp: Floorplan, storey: Storey, t: WallThickness, depth, Mpl
                                     edgecolor="none"))
 
 
-def _door_symbol(ax, f, width: float, into: np.ndarray, Arc) -> None:
+def _door_symbol(ax: Axes, f: WallFrame, width: float, into: np.ndarray) -> None:
     """The open leaf (hinged at one jamb, perpendicular to the wall) and its swing arc."""
     hinge = f.center - width / 2 * f.u + into * f.thickness / 2
     tip = hinge + into * width
@@ -130,13 +134,14 @@ def _door_symbol(ax, f, width: float, into: np.ndarray, Arc) -> None:
     a0 = math.degrees(math.atan2(f.u[1], f.u[0]))
     a1 = math.degrees(math.atan2(into[1], into[0]))
     lo, hi = (a0, a1) if (a1 - a0) % 360 <= 180 else (a1, a0)
-    ax.add_patch(Arc(hinge, 2 * width, 2 * width, theta1=lo, theta2=hi, color="#7a4b1e",
+    ax.add_patch(Arc((hinge[0], hinge[1]), 2 * width, 2 * width, theta1=lo, theta2=hi, color="#7a4b1e",
                      linewidth=0.6, linestyle="-", zorder=5))
 
 
-def _stair_symbol(ax, st: StairSpec, MplPolygon, FancyArrow, going_up: bool) -> None:
+def _stair_symbol(ax: Axes, st: StairSpec) -> None:
+    """A flight seen from its lower storey: treads and an arrow pointing up it."""
     p0, up, right, run, width = st.frame()
-    _patch(ax, st.shape(), MplPolygon, facecolor="#f5f5f5", edgecolor="#333333",
+    _patch(ax, st.shape(), facecolor="#f5f5f5", edgecolor="#333333",
            linewidth=0.8, zorder=2)
     n = max(2, int(round(run / 0.27)))
     for i in range(1, n):
@@ -146,4 +151,5 @@ def _stair_symbol(ax, st: StairSpec, MplPolygon, FancyArrow, going_up: bool) -> 
     mid = p0 + right * width / 2
     ax.add_patch(FancyArrow(*(mid + up * 0.2), *(up * (run - 0.6)), width=0.03,
                             head_width=0.25, head_length=0.25, color="#333333", zorder=4))
-    ax.text(*(mid + up * 0.1 - 0.0), "up", fontsize=6, ha="center", va="top", zorder=6)
+    x, y = mid + up * 0.1
+    ax.text(x, y, "up", fontsize=6, ha="center", va="top", zorder=6)

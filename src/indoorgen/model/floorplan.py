@@ -1,8 +1,9 @@
 """A home's floorplan as plain data: storeys of room polygons with doors, open connections and
 windows, the stairs between storeys and the front entrance.
 
-This is what `floorplan.json` holds (see `io.py` for the exact schema) and what `solidify`
-turns into walls, floors, ceilings, doors, windows and stairs. Room polygons are the rooms'
+This is what `floorplan.json` holds (see `floorplan_io` for the exact schema), what the
+floorplan solver (`indoorgen.floorplan`) produces and what `architecture.solidify` turns into
+walls, floors, ceilings, doors, windows and stairs. Room polygons are the rooms'
 *partition* polygons: walls are centred on their shared edges, and the rooms of a storey
 partition its outline. Storey k's floor is at `elevation`, its ceiling `height` above it.
 
@@ -15,22 +16,26 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+import networkx as nx
 import numpy as np
+import numpy.typing as npt
 import shapely
 import shapely.geometry as sg
 
 Point = tuple[float, float]
+Vector = npt.NDArray[np.float64]
 
 
 @dataclass
 class RoomSpec:
-    """A room: unique `name`, `type` (a RoomType value) and CCW partition polygon."""
+    """A room: unique `name`, `type` (a `room_types` name) and CCW partition polygon."""
 
     name: str
     type: str
     polygon: list[Point]
 
     def shape(self) -> sg.Polygon:
+        """The polygon as a shapely Polygon."""
         return sg.Polygon(self.polygon)
 
 
@@ -67,7 +72,7 @@ class StairSpec:
     to_level: int
     polygon: list[Point]
 
-    def frame(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float]:
+    def frame(self) -> tuple[Vector, Vector, Vector, float, float]:
         """(bottom-left corner, unit direction up the flight, unit direction to the right,
         run length, width)."""
         p = np.asarray(self.polygon, float)
@@ -77,6 +82,7 @@ class StairSpec:
         return p[0], up / run, right / width, run, width
 
     def shape(self) -> sg.Polygon:
+        """The footprint as a counter-clockwise shapely Polygon."""
         return shapely.geometry.polygon.orient(sg.Polygon(self.polygon), 1.0)
 
 
@@ -92,6 +98,9 @@ class Entrance:
 
 @dataclass
 class Storey:
+    """Storey `level` (0: the ground floor): its floor's `elevation` and ceiling `height` above
+    it (m), its rooms and the doors, windows and open connections between them."""
+
     level: int
     elevation: float
     height: float
@@ -101,6 +110,7 @@ class Storey:
     openings: list[DoorSpec] = field(default_factory=list)
 
     def room(self, name: str) -> RoomSpec:
+        """The room called `name` (KeyError if not on this storey)."""
         for r in self.rooms:
             if r.name == name:
                 return r
@@ -122,10 +132,46 @@ class Floorplan:
     info: dict[str, Any] = field(default_factory=dict)
 
     def rooms(self) -> list[tuple[Storey, RoomSpec]]:
+        """Every room with its storey, storey by storey."""
         return [(s, r) for s in self.storeys for r in s.rooms]
 
     def storey_of(self, room: str) -> Storey:
+        """The storey holding `room` (KeyError if none)."""
         for s in self.storeys:
             if any(r.name == room for r in s.rooms):
                 return s
         raise KeyError(room)
+
+    def stair_rooms(self, st: StairSpec) -> tuple[str | None, str | None]:
+        """The rooms holding a flight's foot (lower storey) and its head (upper storey)."""
+        poly = st.shape()
+        out = []
+        for lv in (st.from_level, st.to_level):
+            storey = next((s for s in self.storeys if s.level == lv), None)
+            best = None
+            if storey is not None:
+                areas = [(r.shape().intersection(poly).area, r.name) for r in storey.rooms]
+                best = max(areas)[1] if areas and max(areas)[0] > 0 else None
+            out.append(best)
+        return out[0], out[1]
+
+    def connection_graph(self) -> nx.Graph:
+        """Rooms (nodes, storey by storey) joined by doors, open connections and stairs."""
+        g = nx.Graph()
+        for s in self.storeys:
+            g.add_nodes_from(r.name for r in s.rooms)
+            g.add_edges_from(tuple(d.rooms) for d in s.doors + s.openings)
+        for st in self.stairs:
+            a, b = self.stair_rooms(st)
+            if a and b:
+                g.add_edge(a, b)
+        return g
+
+    def room_depths(self) -> dict[str, int]:
+        """Rooms' distance (in doors) from the front door, going up stairs (rooms out of reach
+        one more than the farthest): doors swing into the deeper room."""
+        g = self.connection_graph()
+        start = self.entrance.room if self.entrance else self.storeys[0].rooms[0].name
+        depth = dict(nx.single_source_shortest_path_length(g, start))
+        far = max(depth.values(), default=0) + 1
+        return {n: depth.get(n, far) for n in g.nodes}

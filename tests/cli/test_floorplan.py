@@ -4,11 +4,12 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 import matplotlib.image as mpimg
 import pytest
 from pxr import Usd, UsdGeom
+
+from support.plans import APARTMENT_PATH
 
 CLI = [sys.executable, "-m", "indoorgen.cli", "floorplan"]
 
@@ -47,7 +48,7 @@ def test_same_seed_same_floorplan_json(tmp_path):
 
 
 def test_predefined_plan_and_contour(tmp_path):
-    src = Path(__file__).parent / "data" / "apartment.json"
+    src = APARTMENT_PATH
     r = run("--plan", str(src), "--out", str(tmp_path / "apt"))
     assert r.returncode == 0, r.stderr
     assert json.loads((tmp_path / "apt" / "floorplan.json").read_text())["storeys"][0]["rooms"]

@@ -1,5 +1,5 @@
-"""One room's solid architecture: polygon validation, door placement, and the meshes, surfaces
-and keep-out zones of its floor, ceiling and walls.
+"""One room's solid architecture: door placement, and the meshes, surfaces and keep-out zones of
+its floor, ceiling and walls (the polygon is checked by `model.polygons.validate_polygon`).
 
 Conventions (DESIGN.md): metres, Z up, the room polygon counter-clockwise in the XY plane with the
 floor's walking surface at z=0. Walls stand OUTSIDE the polygon, so the polygon is exactly the
@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Iterable
 
 import manifold3d
 import numpy as np
@@ -20,16 +20,15 @@ import shapely
 import shapely.geometry as sg
 import trimesh
 
+from indoorgen.architecture.solids import extrude_outline, subtract, to_trimesh
 from indoorgen.assets.protocol import Surface
 from indoorgen.errors import InvalidGeometryError
+from indoorgen.model.polygons import largest_polygon, signed_area, validate_polygon
 from indoorgen.model.scene import Door, Room
 from indoorgen.model.tags import Subpart
 
 log = logging.getLogger(__name__)
 
-#: Smallest floor area (m^2) and wall length (m) accepted for a room polygon.
-MIN_AREA = 0.5
-MIN_SIDE = 0.5
 #: Thickness of floor and ceiling slabs (m).
 SLAB_THICKNESS = 0.1
 #: Distance a door opening keeps from either end of its wall (m).
@@ -40,83 +39,6 @@ DOOR_ZONE_EXTRA_WIDTH = 0.2
 
 # --------------------------------------------------------------------------------------------
 # polygons
-
-
-def validate_polygon(polygon) -> sg.Polygon:
-    """Check that `polygon` (a sequence of (x, y) points or a shapely Polygon) can make a room and
-    return it as a counter-clockwise shapely Polygon.
-
-    Raises InvalidGeometryError naming the problem: fewer than 3 points, non-finite coordinates,
-    collinear (zero-area) points, a self-intersecting outline, an area under 0.5 m^2, or a side
-    shorter than 0.5 m.
-    """
-    pts = _polygon_points(polygon)
-    if len(pts) < 3:
-        raise InvalidGeometryError(
-            f"room polygon has {len(pts)} distinct points; a room needs at least 3")
-    if not np.all(np.isfinite(pts)):
-        raise InvalidGeometryError("room polygon has non-finite (NaN or infinite) coordinates")
-    if _collinear(pts):
-        raise InvalidGeometryError("room polygon has zero area (its points are collinear)")
-    area = abs(_signed_area(pts))
-    if not sg.LinearRing(pts).is_simple:
-        raise InvalidGeometryError(
-            "room polygon is self-intersecting; list its corners in order around the outline")
-    if area < MIN_AREA:
-        raise InvalidGeometryError(
-            f"room polygon area {area:.3f} m^2 is too small; it must be at least {MIN_AREA} m^2")
-    sides = np.linalg.norm(np.roll(pts, -1, axis=0) - pts, axis=1)
-    if sides.min() < MIN_SIDE:
-        i = int(np.argmin(sides))
-        raise InvalidGeometryError(
-            f"room polygon side {i} is {sides[i]:.3f} m long; every side must be at least "
-            f"{MIN_SIDE} m")
-    poly = sg.Polygon(pts)
-    if not poly.is_valid:
-        raise InvalidGeometryError(f"room polygon is invalid: {shapely.is_valid_reason(poly)}")
-    return shapely.geometry.polygon.orient(poly, sign=1.0)
-
-
-def _polygon_points(polygon) -> np.ndarray:
-    """The distinct outline points of `polygon` as an (N, 2) float array (closing point and
-    consecutive duplicates removed)."""
-    if isinstance(polygon, sg.Polygon):
-        if polygon.is_empty:
-            return np.zeros((0, 2))
-        if len(polygon.interiors):
-            raise InvalidGeometryError("room polygon has holes; a room must be a simple polygon")
-        coords = np.asarray(polygon.exterior.coords, float)[:, :2]
-    else:
-        try:
-            coords = np.asarray(list(polygon), float)
-        except (TypeError, ValueError) as e:
-            raise InvalidGeometryError(f"room polygon is not a list of (x, y) points: {e}") from None
-        if coords.size == 0:
-            return np.zeros((0, 2))
-        if coords.ndim != 2 or coords.shape[1] != 2:
-            raise InvalidGeometryError(
-                f"room polygon must be a list of (x, y) points, got shape {coords.shape}")
-    if len(coords) == 0:
-        return coords.reshape(0, 2)
-    keep = np.ones(len(coords), bool)
-    keep[1:] = np.any(np.abs(np.diff(coords, axis=0)) > 1e-12, axis=1)
-    coords = coords[keep]
-    if len(coords) > 1 and np.allclose(coords[0], coords[-1], atol=1e-12):
-        coords = coords[:-1]
-    return coords
-
-
-def _collinear(pts: np.ndarray, tol: float = 1e-9) -> bool:
-    """Whether all points lie on one line (the smallest singular value of the centred points
-    vanishes)."""
-    centred = pts - pts.mean(axis=0)
-    return bool(np.linalg.svd(centred, compute_uv=False)[-1] <= tol * max(1.0, np.abs(pts).max()))
-
-
-def _signed_area(pts: np.ndarray) -> float:
-    """Shoelace area; positive for counter-clockwise outlines."""
-    x, y = pts[:, 0], pts[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
 
 
 def rectangle(width: float, depth: float) -> list[tuple[float, float]]:
@@ -205,23 +127,6 @@ def _check_door(room: Room, door: Door, length: np.ndarray) -> None:
 # solids
 
 
-def _to_trimesh(m: manifold3d.Manifold) -> trimesh.Trimesh:
-    """Convert a manifold3d solid to a trimesh (float64 vertices, so faces built on the room
-    polygon stay exactly on it)."""
-    mesh = m.to_mesh64() if hasattr(m, "to_mesh64") else m.to_mesh()
-    return trimesh.Trimesh(np.asarray(mesh.vert_properties[:, :3], float),
-                           np.asarray(mesh.tri_verts, np.int64), process=True)
-
-
-def _extrude(outline: np.ndarray, z0: float, z1: float) -> manifold3d.Manifold:
-    """A prism over the 2D `outline` (N, 2, any orientation) from z0 to z1."""
-    pts = np.asarray(outline, float)
-    if _signed_area(pts) < 0:
-        pts = pts[::-1]
-    cs = manifold3d.CrossSection([np.ascontiguousarray(pts)])
-    return manifold3d.Manifold.extrude(cs, z1 - z0).translate([0.0, 0.0, z0])
-
-
 def _outer_corners(room: Room) -> np.ndarray:
     """Mitred outer corners: vertex i of the polygon offset outward by the wall thickness, i.e.
     the intersection of the offset lines of edges i-1 and i (N, 2)."""
@@ -246,7 +151,7 @@ def _wall_footprint(room: Room, i: int, outer: np.ndarray) -> np.ndarray:
     p, q, d, _ = _edges(room)
     j = (i + 1) % len(p)
     quad = np.array([p[i], q[i], outer[j], outer[i]])
-    if sg.Polygon(quad).is_valid and abs(_signed_area(quad)) > 1e-9:
+    if sg.Polygon(quad).is_valid and abs(signed_area(quad)) > 1e-9:
         return quad
     n_out = -_inward(d[i])
     t = room.wall_thickness
@@ -277,24 +182,20 @@ def _door_zone(room: Room, poly: sg.Polygon, door: Door) -> sg.Polygon:
     depth = door.clearance_depth
     rect = sg.Polygon([centre - half * dw, centre + half * dw,
                        centre + half * dw + depth * nw, centre - half * dw + depth * nw])
-    zone = rect.intersection(poly)
-    if isinstance(zone, sg.Polygon):
-        return zone
-    parts = [g for g in getattr(zone, "geoms", []) if isinstance(g, sg.Polygon)]
-    return max(parts, key=lambda g: g.area) if parts else sg.Polygon()
+    return largest_polygon(rect.intersection(poly))
 
 
 # --------------------------------------------------------------------------------------------
 # surfaces
 
 
-def _floor_surface(poly: sg.Polygon) -> Surface:
+def floor_surface(poly: sg.Polygon) -> Surface:
     """Floor: plane z=0, normal +Z, u=+X so (u, v) coordinates are world (x, y)."""
     return Surface("floor", Subpart.Floor, np.zeros(3), np.array([0.0, 0.0, 1.0]),
                    np.array([1.0, 0.0, 0.0]), poly)
 
 
-def _ceiling_surface(poly: sg.Polygon, height: float) -> Surface:
+def ceiling_surface(poly: sg.Polygon, height: float) -> Surface:
     """Ceiling: plane z=height facing down (-Z), u=+X, hence v = -Y and (u, v) = (x, -y)."""
     pts = np.asarray(poly.exterior.coords, float)[:-1] * [1.0, -1.0]
     uv = shapely.geometry.polygon.orient(sg.Polygon(pts), sign=1.0)
@@ -302,7 +203,7 @@ def _ceiling_surface(poly: sg.Polygon, height: float) -> Surface:
                    np.array([0.0, 0.0, -1.0]), np.array([1.0, 0.0, 0.0]), uv)
 
 
-def _wall_surfaces(room: Room) -> list[Surface]:
+def wall_surfaces(room: Room) -> list[Surface]:
     """Inner face of each wall i: inward normal, u = -edge direction (so v = normal x u = +Z),
     origin at the edge's end vertex, polygon [0, L] x [0, height]."""
     _, q, d, length = _edges(room)
@@ -337,7 +238,7 @@ class RoomGeometry:
 
     def door_zone_meshes(self, height: float = 2.0) -> list[trimesh.Trimesh]:
         """Door clearance zones extruded from z=0 to `height`: keep-out volumes for the solver."""
-        return [_to_trimesh(_extrude(np.asarray(z.exterior.coords)[:-1], 0.0, height))
+        return [to_trimesh(extrude_outline(np.asarray(z.exterior.coords)[:-1], 0.0, height))
                 for z in self.door_zones if not z.is_empty]
 
     def wall_surface(self, i: int) -> Surface:
@@ -360,7 +261,7 @@ def build_room(room: Room) -> RoomGeometry:
     The polygon is validated (and reoriented counter-clockwise in a copy if necessary, so that
     wall indices refer to the CCW outline)."""
     poly = validate_polygon(room.polygon)
-    if _signed_area(np.asarray(room.polygon, float)) < 0:
+    if signed_area(np.asarray(room.polygon, float)) < 0:
         raise InvalidGeometryError(
             f"room {room.name!r} polygon is clockwise; wall indices assume counter-clockwise "
             "order (reverse its points)")
@@ -368,24 +269,22 @@ def build_room(room: Room) -> RoomGeometry:
     for door in room.doors:
         _check_door(room, door, length)
     outer = _outer_corners(room)
-    grown = _extrude(outer, -SLAB_THICKNESS, 0.0)
-    floor = _to_trimesh(grown)
-    ceiling = _to_trimesh(_extrude(outer, room.height, room.height + SLAB_THICKNESS))
+    grown = extrude_outline(outer, -SLAB_THICKNESS, 0.0)
+    floor = to_trimesh(grown)
+    ceiling = to_trimesh(extrude_outline(outer, room.height, room.height + SLAB_THICKNESS))
     walls = [_build_wall(room, i, outer) for i in range(len(length))]
-    surfaces = [_floor_surface(poly), _ceiling_surface(poly, room.height), *_wall_surfaces(room)]
+    surfaces = [floor_surface(poly), ceiling_surface(poly, room.height), *wall_surfaces(room)]
     zones = [_door_zone(room, poly, d) for d in room.doors]
     return RoomGeometry(room, floor, ceiling, walls, surfaces, zones)
 
 
 def _build_wall(room: Room, i: int, outer: np.ndarray) -> trimesh.Trimesh:
     """Wall i as a watertight mesh with the openings of its doors subtracted."""
-    solid = _extrude(_wall_footprint(room, i, outer), 0.0, room.height)
-    cutters = [_door_cutter(room, d) for d in room.doors if d.wall == i]
-    if cutters:
-        solid = manifold3d.Manifold.batch_boolean([solid, *cutters], manifold3d.OpType.Subtract)
+    solid = extrude_outline(_wall_footprint(room, i, outer), 0.0, room.height)
+    solid = subtract(solid, [_door_cutter(room, d) for d in room.doors if d.wall == i])
     if solid.status() != manifold3d.Error.NoError:
         raise InvalidGeometryError(f"room {room.name!r} wall {i}: boolean failed ({solid.status()})")
-    return _to_trimesh(solid)
+    return to_trimesh(solid)
 
 
 def build_rooms(rooms: Iterable[Room]) -> dict[str, RoomGeometry]:

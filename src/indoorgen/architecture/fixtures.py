@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import trimesh
 
+from indoorgen.assets import get_factory
 from indoorgen.errors import IndoorGenError
 from indoorgen.rng import stream
 
@@ -40,7 +41,6 @@ def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
     """Sample `generator`'s params from (seed, path), pin `fixed`, check and build; None if the
     generator does not exist or rejects the values."""
     try:
-        from indoorgen.assets import get_factory
         f = get_factory(generator)
         params = f.sample_params(stream(seed, "architecture", *path))
         params.update(fixed)
@@ -73,7 +73,7 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
          height: float, wall: float, elevation: float) -> Fixture | None:
     """A door leaf with frame and casings in the wall at `center`, swinging towards `into`."""
     gen = "exterior_door" if exterior else "interior_door"
-    fixed = {"width": width, "height": height, "wall_thickness": wall}
+    fixed: dict[str, Any] = {"width": width, "height": height, "wall_thickness": wall}
     if exterior:
         fixed["sidelites"] = "none"
     got = _build(gen, seed, ("door", name), fixed)

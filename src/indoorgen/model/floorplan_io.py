@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Iterable
 from os import PathLike
 from pathlib import Path
 from typing import Any
@@ -32,8 +33,8 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import ConfigError, InvalidGeometryError
-from indoorgen.floorplan.plan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
-from indoorgen.floorplan.rooms import check_room_type
+from indoorgen.model.floorplan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
+from indoorgen.model.room_types import room_type
 
 
 def _r(x: float) -> float:
@@ -41,11 +42,11 @@ def _r(x: float) -> float:
     return 0.0 if v == 0 else v
 
 
-def _pts(points) -> list[list[float]]:
+def _pts(points: Iterable[tuple[float, float]]) -> list[list[float]]:
     return [[_r(x), _r(y)] for x, y in points]
 
 
-def to_json(fp: Floorplan) -> dict:
+def to_json(fp: Floorplan) -> dict[str, Any]:
     """The floorplan.json object of `fp`."""
     return {
         "storeys": [{
@@ -66,7 +67,7 @@ def to_json(fp: Floorplan) -> dict:
     }
 
 
-def _door(d: DoorSpec) -> dict:
+def _door(d: DoorSpec) -> dict[str, Any]:
     return {"name": d.name, "rooms": list(d.rooms), "center": [_r(c) for c in d.center],
             "width": _r(d.width), "height": _r(d.height)}
 
@@ -76,7 +77,8 @@ def dumps(fp: Floorplan) -> str:
     return json.dumps(to_json(fp), indent=1, sort_keys=True) + "\n"
 
 
-def write_floorplan(fp: Floorplan, path: str | PathLike) -> None:
+def write_floorplan(fp: Floorplan, path: str | PathLike[str]) -> None:
+    """Write `fp` as floorplan.json at `path`."""
     Path(path).write_text(dumps(fp))
 
 
@@ -87,10 +89,10 @@ def write_floorplan(fp: Floorplan, path: str | PathLike) -> None:
 class _Reader:
     """Field access with error messages naming the offending entry."""
 
-    def __init__(self, where: str):
+    def __init__(self, where: str) -> None:
         self.where = where
 
-    def get(self, d: Any, key: str, kind=None, default=...):
+    def get(self, d: Any, key: str, kind: type | None = None, default: Any = ...) -> Any:
         if not isinstance(d, dict):
             raise ConfigError(f"floorplan.json: {self.where} must be an object, got "
                               f"{type(d).__name__}")
@@ -117,7 +119,7 @@ class _Reader:
             raise ConfigError(f"floorplan.json: {self.where}.{key} must be a string")
         return v
 
-    def point(self, v, key: str) -> tuple[float, float]:
+    def point(self, v: Any, key: str) -> tuple[float, float]:
         try:
             x, y = (float(c) for c in v)
         except (TypeError, ValueError):
@@ -125,7 +127,7 @@ class _Reader:
                               f"{v!r}") from None
         return (x, y)
 
-    def polygon(self, v, key: str) -> list[tuple[float, float]]:
+    def polygon(self, v: Any, key: str) -> list[tuple[float, float]]:
         if not isinstance(v, list) or len(v) < 3:
             raise ConfigError(f"floorplan.json: {self.where}.{key} must be a list of at least "
                               "3 [x, y] points")
@@ -135,10 +137,10 @@ class _Reader:
             raise InvalidGeometryError(
                 f"floorplan.json: {self.where}.{key} is not a simple polygon "
                 f"({shapely.is_valid_reason(poly)})")
-        return [tuple(p) for p in np.asarray(orient(poly, 1.0).exterior.coords)[:-1].tolist()]
+        return [(p[0], p[1]) for p in np.asarray(orient(poly, 1.0).exterior.coords)[:-1].tolist()]
 
 
-def from_json(d: dict) -> Floorplan:
+def from_json(d: dict[str, Any]) -> Floorplan:
     """Parse a floorplan.json object; raises ConfigError / InvalidGeometryError naming the
     entry at fault (missing keys, bad numbers, overlapping rooms, unknown room types or room
     names, doors off their walls are found by `check_predefined`)."""
@@ -155,7 +157,7 @@ def from_json(d: dict) -> Floorplan:
             if name in names:
                 raise ConfigError(f"floorplan.json: room name {name!r} is used twice")
             names.add(name)
-            st.rooms.append(RoomSpec(name, check_room_type(rr.get(room, "type", str)),
+            st.rooms.append(RoomSpec(name, room_type(rr.get(room, "type", str), floorplan=True).name,
                                      rr.polygon(rr.get(room, "polygon", list), "polygon")))
         for key, target in (("doors", st.doors), ("openings", st.openings)):
             for i, door in enumerate(r.get(s, key, list, [])):
@@ -192,7 +194,7 @@ def from_json(d: dict) -> Floorplan:
     return fp
 
 
-def read_floorplan(path: str | PathLike) -> Floorplan:
+def read_floorplan(path: str | PathLike[str]) -> Floorplan:
     """Read floorplan.json at `path` (ConfigError if missing or not JSON)."""
     p = Path(path)
     try:

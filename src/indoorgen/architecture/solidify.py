@@ -1,6 +1,6 @@
 """Solid architecture of a whole home, room by room, in world coordinates (Z up).
 
-For each room this builds a `HomeRoomGeometry`, which is a `floorplan.room.RoomGeometry` (same
+For each room this builds a `HomeRoomGeometry`, which is a `architecture.room.RoomGeometry` (same
 attributes and methods), so the object solver and the validator furnish a room of a home exactly
 as they furnish a single room:
 
@@ -26,25 +26,20 @@ import math
 from dataclasses import dataclass, field
 
 import manifold3d
-import networkx as nx
 import numpy as np
 import shapely.geometry as sg
 import trimesh
-from shapely.geometry.polygon import orient
 
-from indoorgen.assets.protocol import Surface
-from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan import fixtures
-from indoorgen.floorplan.plan import DoorSpec, Floorplan, StairSpec, Storey
-from indoorgen.floorplan.room import (
+from indoorgen.architecture import fixtures
+from indoorgen.architecture.room import (
     SLAB_THICKNESS,
     RoomGeometry,
-    _ceiling_surface,
-    _floor_surface,
-    _to_trimesh,
-    _wall_surfaces,
+    ceiling_surface,
+    floor_surface,
+    wall_surfaces,
 )
-from indoorgen.floorplan.walls import (
+from indoorgen.architecture.solids import checked_mesh, extrude_region, subtract, to_trimesh
+from indoorgen.architecture.walls import (
     WallFrame,
     WallThickness,
     door_frame,
@@ -55,6 +50,9 @@ from indoorgen.floorplan.walls import (
     wall_footprint,
     window_frame,
 )
+from indoorgen.assets.protocol import Surface
+from indoorgen.model.floorplan import DoorSpec, Floorplan, StairSpec, Storey
+from indoorgen.model.polygons import cross_2d, largest_polygon
 from indoorgen.model.scene import Door, Room
 
 #: Depth of the keep-out zone on the side a door swings into, and on the other side (m).
@@ -88,7 +86,7 @@ class Element:
 
     @classmethod
     def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str]
-           ) -> "Element":
+           ) -> Element:
         """An element holding a catalogue fixture's mesh."""
         return cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
                    dict(fx.params), list(fx.collision))
@@ -105,7 +103,7 @@ class HomeRoomGeometry(RoomGeometry):
 
     def door_zone_meshes(self, height: float = 2.0) -> list[trimesh.Trimesh]:
         """Keep-out zones extruded from the room's floor to `height` above it."""
-        return [_to_trimesh(_extrude_poly(z, self.elevation, self.elevation + height))
+        return [to_trimesh(extrude_region(z, self.elevation, self.elevation + height))
                 for z in self.door_zones if not z.is_empty]
 
 
@@ -120,85 +118,13 @@ class Architecture:
 
 
 # --------------------------------------------------------------------------------------------
-# manifold helpers
-
-
-def _rings(poly) -> list[np.ndarray]:
-    out = []
-    for p in getattr(poly, "geoms", [poly]):
-        if not isinstance(p, sg.Polygon) or p.is_empty:
-            continue
-        p = orient(p, 1.0)
-        out.append(np.ascontiguousarray(np.asarray(p.exterior.coords)[:-1, :2]))
-        out += [np.ascontiguousarray(np.asarray(h.coords)[:-1, :2]) for h in p.interiors]
-    return out
-
-
-def _extrude_poly(poly, z0: float, z1: float) -> manifold3d.Manifold:
-    """A prism over a shapely (multi)polygon, holes included, from z0 to z1."""
-    rings = _rings(poly)
-    if not rings:
-        return manifold3d.Manifold()
-    cs = manifold3d.CrossSection(rings, manifold3d.FillRule.Positive)
-    return manifold3d.Manifold.extrude(cs, z1 - z0).translate([0.0, 0.0, z0])
+# elements
 
 
 def _box(frame: WallFrame, width: float, depth: float, z0: float, z1: float) -> manifold3d.Manifold:
     """A box `width` along the wall and `depth` across it, centred on the frame, z0..z1."""
     rect = frame.rect(width, -depth / 2, depth / 2)
-    return _extrude_poly(rect, z0, z1)
-
-
-def _subtract(solid: manifold3d.Manifold, cutters: list[manifold3d.Manifold]
-              ) -> manifold3d.Manifold:
-    if not cutters:
-        return solid
-    return manifold3d.Manifold.batch_boolean([solid, *cutters], manifold3d.OpType.Subtract)
-
-
-def _mesh(m: manifold3d.Manifold, what: str) -> trimesh.Trimesh:
-    if m.status() != manifold3d.Error.NoError:
-        raise InvalidGeometryError(f"{what}: solid boolean failed ({m.status()})")
-    return _to_trimesh(m)
-
-
-# --------------------------------------------------------------------------------------------
-# connectivity
-
-
-def room_depths(fp: Floorplan) -> dict[str, int]:
-    """Rooms' distance (in doors) from the front door, going up stairs: doors swing into the
-    deeper room."""
-    g = nx.Graph()
-    for s in fp.storeys:
-        g.add_nodes_from(r.name for r in s.rooms)
-        g.add_edges_from(d.rooms for d in s.doors + s.openings)
-    for st in fp.stairs:
-        a, b = stair_rooms(fp, st)
-        if a and b:
-            g.add_edge(a, b)
-    start = fp.entrance.room if fp.entrance else fp.storeys[0].rooms[0].name
-    depth = dict(nx.single_source_shortest_path_length(g, start))
-    far = max(depth.values(), default=0) + 1
-    return {n: depth.get(n, far) for n in g.nodes}
-
-
-def stair_rooms(fp: Floorplan, st: StairSpec) -> tuple[str | None, str | None]:
-    """The rooms holding a flight's foot (lower storey) and its head (upper storey)."""
-    poly = st.shape()
-    out = []
-    for lv in (st.from_level, st.to_level):
-        storey = next((s for s in fp.storeys if s.level == lv), None)
-        best = None
-        if storey is not None:
-            areas = [(r.shape().intersection(poly).area, r.name) for r in storey.rooms]
-            best = max(areas)[1] if areas and max(areas)[0] > 0 else None
-        out.append(best)
-    return out[0], out[1]
-
-
-# --------------------------------------------------------------------------------------------
-# elements
+    return extrude_region(rect, z0, z1)
 
 
 def _door_element(d: DoorSpec, frame: WallFrame, storey: Storey) -> Element:
@@ -207,9 +133,9 @@ def _door_element(d: DoorSpec, frame: WallFrame, storey: Storey) -> Element:
     leaf = _box(frame, d.width - 0.02, LEAF, e + 0.01, e + d.height - 0.005)
     outer = _box(frame, d.width + 2 * CASING, frame.thickness + 0.02, e, e + d.height + CASING)
     inner = _box(frame, d.width, frame.thickness + 0.2, e - 0.01, e + d.height)
-    casing = _subtract(outer, [inner])
+    casing = subtract(outer, [inner])
     return Element(d.name, "door", d.rooms[0], storey.level,
-                   {"leaf": _mesh(leaf, d.name), "casing": _mesh(casing, d.name)},
+                   {"leaf": checked_mesh(leaf, d.name), "casing": checked_mesh(casing, d.name)},
                    ["door", "architecture"])
 
 
@@ -221,8 +147,8 @@ def _window_element(name: str, room: str, frame: WallFrame, storey: Storey, widt
                  e + sill + height - 0.05)
     glass = _box(frame, width - 0.1, 0.01, e + sill + 0.05, e + sill + height - 0.05)
     return Element(name, "window", room, storey.level,
-                   {"frame": _mesh(_subtract(outer, [inner]), name),
-                    "glass": _mesh(glass, name)}, ["window", "architecture"])
+                   {"frame": checked_mesh(subtract(outer, [inner]), name),
+                    "glass": checked_mesh(glass, name)}, ["window", "architecture"])
 
 
 def stair_profile(rise: float, run: float, max_riser: float = 0.19,
@@ -245,7 +171,7 @@ def _stair_element(st: StairSpec, fp: Floorplan, pitch: float) -> Element:
     prof, _ = stair_profile(pitch, run)
     cs = manifold3d.CrossSection([np.ascontiguousarray(prof)], manifold3d.FillRule.Positive)
     solid = manifold3d.Manifold.extrude(cs, width)      # (s, z, w)
-    mesh = _mesh(solid, f"stair {st.from_level}->{st.to_level}")
+    mesh = checked_mesh(solid, f"stair {st.from_level}->{st.to_level}")
     m = np.eye(4)
     m[:3, 0] = [up[0], up[1], 0.0]
     m[:3, 1] = [0.0, 0.0, 1.0]
@@ -254,7 +180,7 @@ def _stair_element(st: StairSpec, fp: Floorplan, pitch: float) -> Element:
     mesh.apply_transform(m)
     if np.linalg.det(m[:3, :3]) < 0:
         mesh.invert()
-    a, _ = stair_rooms(fp, st)
+    a, _ = fp.stair_rooms(st)
     return Element(f"stair_{st.from_level}_{st.to_level}", "stair", a or "", st.from_level,
                    {"flight": mesh}, ["stairs", "architecture"])
 
@@ -269,12 +195,12 @@ def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
     rails = []
     for a, b in ((p[0], p[1]), (p[1], p[2]), (p[3], p[0])):
         line = sg.LineString([a, b])
-        rails.append(_extrude_poly(line.buffer(RAIL_THICKNESS / 2, cap_style="flat"),
+        rails.append(extrude_region(line.buffer(RAIL_THICKNESS / 2, cap_style="flat"),
                                    e, e + RAIL_HEIGHT))
     solid = manifold3d.Manifold.batch_boolean(rails, manifold3d.OpType.Add)
-    _, b = stair_rooms(fp, st)
+    _, b = fp.stair_rooms(st)
     return Element(f"rail_{st.from_level}_{st.to_level}", "railing", b or "", st.to_level,
-                   {"rail": _mesh(solid, "stair rail")}, ["railing", "architecture"])
+                   {"rail": checked_mesh(solid, "stair rail")}, ["railing", "architecture"])
 
 
 # --------------------------------------------------------------------------------------------
@@ -292,15 +218,15 @@ def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, wid
     length = np.linalg.norm(d, axis=1)
     best = None
     for i in range(len(pts)):
-        if length[i] < 1e-9 or abs(_cross(d[i] / length[i], frame.u)) > 1e-3:
+        if length[i] < 1e-9 or abs(cross_2d(d[i] / length[i], frame.u)) > 1e-3:
             continue
         s = float(np.dot(face - pts[i], d[i]) / length[i])
-        dist = abs(float(_cross(d[i] / length[i], face - pts[i])))
-        if -width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05:
-            if best is None or dist < best[2]:
-                off = float(np.clip(s, min(width / 2, length[i] / 2),
-                                    max(length[i] - width / 2, length[i] / 2)))
-                best = (i, off, dist)
+        dist = abs(cross_2d(d[i] / length[i], face - pts[i]))
+        if (-width / 2 <= s <= length[i] + width / 2 and dist < frame.thickness / 2 + 0.05
+                and (best is None or dist < best[2])):
+            off = float(np.clip(s, min(width / 2, length[i] / 2),
+                                max(length[i] - width / 2, length[i] / 2)))
+            best = (i, off, dist)
     return None if best is None else best[:2]
 
 
@@ -317,7 +243,7 @@ def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | N
     if pitch is None:
         pitch = (fp.storeys[1].elevation - fp.storeys[0].elevation) if len(fp.storeys) > 1 \
             else fp.storeys[0].height + 2 * SLAB_THICKNESS
-    depth = room_depths(fp)
+    depth = fp.room_depths()
     rooms: dict[str, HomeRoomGeometry] = {}
     elements: list[Element] = []
     for st in fp.stairs:
@@ -332,7 +258,7 @@ def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
     """The flight (catalogue staircase or a simple solid) and the rails round its opening."""
     lower = next(s for s in fp.storeys if s.level == st.from_level)
     upper = next((s for s in fp.storeys if s.level == st.to_level), None)
-    a, b = stair_rooms(fp, st)
+    a, b = fp.stair_rooms(st)
     name = f"stair_{st.from_level}_{st.to_level}"
     fx = None if seed is None else fixtures.stair(seed, name, st.polygon, pitch, lower.elevation)
     out = [Element.of(fx, name, "stair", a or "", st.from_level, ["stairs", "architecture"])
@@ -378,7 +304,7 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
             zone_width, 0.0, frame.thickness / 2 + zone_depth)
         z = rect.intersection(free)
         if not z.is_empty:
-            zones[room].append(_largest(z))
+            zones[room].append(largest_polygon(z))
 
     for d in storey.doors:
         f = door_frame(storey, d, t)
@@ -387,27 +313,27 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         fx = None if seed is None else fixtures.door(
             seed, d.name, False, f.center, f.n if swing_into == b else -f.n, d.width,
             d.height, f.thickness, e)
-        w, hh = fx.opening if fx is not None else (d.width, d.height)
-        cutter = _box(f, w, 3 * t.exterior, e - 0.01, e + hh)
-        for r in d.rooms:
-            cut[r].append(cutter)
-        for r, side in ((a, -f.n), (b, f.n)):
-            dep = SWING_DEPTH if r == swing_into else PASS_DEPTH
-            add_door(r, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
+        ow, oh = _opening(fx, d.width, d.height)
+        cutter = _box(f, ow, 3 * t.exterior, e - 0.01, e + oh)
+        for rn in d.rooms:
+            cut[rn].append(cutter)
+        for rn, side in ((a, -f.n), (b, f.n)):
+            dep = SWING_DEPTH if rn == swing_into else PASS_DEPTH
+            add_door(rn, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
         elements.append(Element.of(fx, d.name, "door", swing_into, storey.level,
                                    ["door", "architecture"]) if fx is not None
                         else _door_element(d, f, storey))
     for o in storey.openings:
         f = door_frame(storey, o, t)
         cutter = _box(f, o.width, 3 * t.exterior, e - 0.01, e + h + 0.01)
-        for r, side in ((o.rooms[0], -f.n), (o.rooms[1], f.n)):
-            cut[r].append(cutter)
-            add_door(r, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
+        for rn, side in ((o.rooms[0], -f.n), (o.rooms[1], f.n)):
+            cut[rn].append(cutter)
+            add_door(rn, o.name, f, side, o.width, min(o.height, h), PASS_DEPTH, o.width)
     for w in storey.windows:
         f = window_frame(storey, w, t)
         fx = None if seed is None else fixtures.window(
             seed, w.name, f.center, -f.n, w.width, w.height, w.sill, f.thickness, e)
-        ww, wh = fx.opening if fx is not None else (w.width, w.height)
+        ww, wh = _opening(fx, w.width, w.height)
         cut[w.room].append(_box(f, ww, 3 * t.exterior, e + w.sill, e + w.sill + wh))
         elements.append(Element.of(fx, w.name, "window", w.room, storey.level,
                                    ["window", "architecture"]) if fx is not None
@@ -418,8 +344,8 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         f = entrance_frame(storey, en, t)
         fx = None if seed is None else fixtures.door(
             seed, "entrance", True, f.center, -f.n, en.width, en.height, f.thickness, e)
-        w, hh = fx.opening if fx is not None else (en.width, en.height)
-        cut[en.room].append(_box(f, w, 3 * t.exterior, e - 0.01, e + hh))
+        ow, oh = _opening(fx, en.width, en.height)
+        cut[en.room].append(_box(f, ow, 3 * t.exterior, e - 0.01, e + oh))
         add_door(en.room, "entrance", f, -f.n, en.width, en.height, SWING_DEPTH, en.width + 0.2)
         elements.append(Element.of(fx, "entrance", "door", en.room, 0, ["door", "entrance",
                                                                        "architecture"])
@@ -438,53 +364,55 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
             for r in storey.rooms:
                 z = foot.intersection(frees[r.name])
                 if z.area > 1e-6:
-                    zones[r.name].append(_largest(z))
+                    zones[r.name].append(largest_polygon(z))
         if st.to_level == storey.level:
             floor_holes.append(poly)
             head = sg.Polygon([p[0], p[1], p[2] + STAIR_LANDING * up, p[3] + STAIR_LANDING * up])
             for r in storey.rooms:
                 z = head.intersection(frees[r.name])
                 if z.area > 1e-6:
-                    zones[r.name].append(_largest(z))
+                    zones[r.name].append(largest_polygon(z))
     out = {}
     for r in storey.rooms:
         poly = r.shape()
         region = room_region(poly, outline, t)
         region = region.intersection(outer)
         piece = wall_fp.intersection(region)
-        wall = _subtract(_extrude_poly(piece, e, e + h), cut[r.name])
+        wall = subtract(extrude_region(piece, e, e + h), cut[r.name])
         floor_region = region
         for hole in floor_holes:
             floor_region = floor_region.difference(hole)
         ceil_region = region
         for hole in ceil_holes:
             ceil_region = ceil_region.difference(hole)
-        floor = _extrude_poly(floor_region, e - SLAB_THICKNESS, e)
-        ceiling = _extrude_poly(ceil_region, e + h, e + h + SLAB_THICKNESS)
+        floor = extrude_region(floor_region, e - SLAB_THICKNESS, e)
+        ceiling = extrude_region(ceil_region, e + h, e + h + SLAB_THICKNESS)
         free = frees[r.name]
         room = Room(r.name, r.type, [(float(x), float(y)) for x, y in
                                      np.asarray(free.exterior.coords)[:-1]],
                     height=h, wall_thickness=t.interior / 2, storey=storey.level,
                     doors=doors[r.name], elevation=e)
         lift = np.array([0.0, 0.0, e])
-        surfaces = [_shift(_floor_surface(free), lift), _ceiling_surface(free, e + h),
-                    *[_shift(s, lift) for s in _wall_surfaces(room)]]
+        surfaces = [_shift(floor_surface(free), lift), ceiling_surface(free, e + h),
+                    *[_shift(s, lift) for s in wall_surfaces(room)]]
         out[r.name] = HomeRoomGeometry(
-            room, _mesh(floor, f"{r.name} floor"), _mesh(ceiling, f"{r.name} ceiling"),
-            [_mesh(wall, f"{r.name} walls")], surfaces, zones[r.name],
+            room, checked_mesh(floor, f"{r.name} floor"), checked_mesh(ceiling, f"{r.name} ceiling"),
+            [checked_mesh(wall, f"{r.name} walls")], surfaces, zones[r.name],
             storey=storey.level, elevation=e, plan_polygon=poly)
     return out
 
 
+def _opening(fx: fixtures.Fixture | None, width: float, height: float) -> tuple[float, float]:
+    """The rough opening (width, height) a catalogue door or window needs, or the plan's own
+    for the simple solids."""
+    if fx is None:
+        return width, height
+    assert fx.opening is not None  # doors and windows always state theirs
+    return fx.opening
+
+
 def _shift(s: Surface, lift: np.ndarray) -> Surface:
     return Surface(s.name, s.subpart, s.origin + lift, s.normal, s.u, s.polygon)
-
-
-def _largest(g) -> sg.Polygon:
-    if isinstance(g, sg.Polygon):
-        return g
-    parts = [p for p in getattr(g, "geoms", []) if isinstance(p, sg.Polygon)]
-    return max(parts, key=lambda p: p.area) if parts else sg.Polygon()
 
 
 def room_geometries(arch: Architecture) -> dict[str, RoomGeometry]:
@@ -492,7 +420,3 @@ def room_geometries(arch: Architecture) -> dict[str, RoomGeometry]:
     the validator take)."""
     return dict(arch.rooms)
 
-
-def _cross(a, b) -> float:
-    """z of the cross product of two 2D vectors."""
-    return float(a[0] * b[1] - a[1] * b[0])

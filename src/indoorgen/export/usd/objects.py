@@ -1,0 +1,222 @@
+"""USD objects of a stage: /World/Objects/<object>, each a posed Xform with its render mesh
+(or an instance of a shared prototype), convex collision pieces, rigid-body physics, one body
+per link and physics joints for articulated objects, and sphere lights at emissive faces."""
+from __future__ import annotations
+
+import logging
+import math
+from collections import Counter
+
+import numpy as np
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdPhysics
+
+from indoorgen.assets.protocol import Asset
+from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
+from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names
+from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
+from indoorgen.export.usd.materials import Looks, bind_slots
+from indoorgen.export.usd.prims import define_mesh, sanitize_name, tag_prim, unique_names
+from indoorgen.model.scene import SceneObject
+
+log = logging.getLogger(__name__)
+
+#: SphereLight intensity (nits) of a bulb
+LIGHT_INTENSITY = 8000.0
+
+
+class _ObjectMeshes:
+    """Per-asset arrays computed once per distinct asset (normals, UVs, link faces)."""
+
+    def __init__(self) -> None:
+        self._cache: dict[int, tuple] = {}
+
+    def get(self, asset: Asset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(corner UVs, corner normals, face slot indices) of `asset`."""
+        key = id(asset)
+        if key not in self._cache:
+            self._cache[key] = (corner_uv(asset), corner_normals(asset.mesh),
+                                face_slot_names(asset), asset)
+        return self._cache[key][:3]
+
+
+def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instancing: bool,
+                   physics: bool) -> None:
+    """/World/Objects/<name>: posed Xform per object with its meshes, collision, physics."""
+    root = UsdGeom.Xform.Define(stage, "/World/Objects").GetPrim().GetPath()
+    idents = unique_names(bundle.scene.objects)
+    cache = _ObjectMeshes()
+    counts = Counter(bundle.proto_key(o.name) for o in bundle.objects
+                     if not bundle.assets[o.name].joints)
+    protos: dict[tuple, Sdf.Path] = {}
+    for name, obj in bundle.scene.objects.items():
+        xf = UsdGeom.Xform.Define(stage, root.AppendChild(idents[name]))
+        _set_pose(xf, obj)
+        prim = xf.GetPrim()
+        tag_prim(prim, name=name, generator=obj.generator, room=obj.room,
+                 parent=obj.parent, semantics=obj.tags)
+        asset = bundle.assets.get(name)
+        if asset is None:
+            log.warning("USD export: object %r has no asset; writing an Xform without mesh", name)
+            continue
+        mats = bundle.materials[name]
+        pkey = bundle.proto_key(name)
+        inertial = bundle.inertials(name) if physics else None
+        fixed = bundle.is_fixed(obj)
+        if asset.joints:
+            _write_articulated(stage, prim.GetPath(), obj, asset, mats, looks, cache,
+                               inertial, physics, fixed)
+        else:
+            if instancing and counts[pkey] > 1:
+                if pkey not in protos:
+                    protos[pkey] = _define_prototype(stage, len(protos), asset, mats, looks,
+                                                     cache, physics)
+                    _write_lights(stage, protos[pkey], asset)
+                prim.GetReferences().AddInternalReference(protos[pkey])
+                prim.SetInstanceable(True)
+            else:
+                _write_link(stage, prim.GetPath(), asset, "base", mats, looks, cache, physics,
+                            whole=True)
+                _write_lights(stage, prim.GetPath(), asset)
+            if physics and not fixed:
+                assert inertial is not None  # computed whenever physics is on
+                _rigid_body(prim, inertial["base"])
+        if asset.joints:
+            _write_lights(stage, prim.GetPath(), asset)
+
+
+def _define_prototype(stage: Usd.Stage, k: int, asset: Asset, mats: dict[str, MatRef],
+                      looks: Looks, cache: _ObjectMeshes, physics: bool) -> Sdf.Path:
+    """A class prim /World/Prototypes/proto_<k> holding the meshes of one distinct object."""
+    root = Sdf.Path("/World/Prototypes")
+    if not stage.GetPrimAtPath(root):
+        stage.CreateClassPrim(root)
+    path = root.AppendChild(f"proto_{k}")
+    stage.CreateClassPrim(path)
+    _write_link(stage, path, asset, "base", mats, looks, cache, physics, whole=True)
+    return path
+
+
+def _write_link(stage: Usd.Stage, path: Sdf.Path, asset: Asset, link: str,
+                mats: dict[str, MatRef], looks: Looks, cache: _ObjectMeshes, physics: bool,
+                whole: bool = False) -> None:
+    """`mesh` (render) and `collision/piece_<i>` below `path` for one link (or, with `whole`,
+    the whole asset as one mesh, for objects without joints)."""
+    uv, nrm, fslots = cache.get(asset)
+    if whole:
+        faces = np.arange(len(asset.mesh.faces))
+        sub = asset.mesh
+    else:
+        faces = asset.link_faces(link)
+        sub = asset.link_mesh(link)
+    if len(faces):
+        m = define_mesh(stage, path.AppendChild("mesh"), sub, uv[faces], nrm[faces])
+        bind_slots(m, fslots[faces], list(asset.slots), mats, looks)
+    if physics:
+        pieces = [p for ln, p in asset.collision if whole or ln == link]
+        if pieces:
+            scope = UsdGeom.Scope.Define(stage, path.AppendChild("collision"))
+            scope.CreatePurposeAttr(UsdGeom.Tokens.guide)
+            for i, piece in enumerate(pieces):
+                cm = define_mesh(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
+                cm.CreatePurposeAttr(UsdGeom.Tokens.guide)
+                UsdPhysics.CollisionAPI.Apply(cm.GetPrim())
+                UsdPhysics.MeshCollisionAPI.Apply(cm.GetPrim()).CreateApproximationAttr(
+                    UsdPhysics.Tokens.convexHull)
+
+
+def _rigid_body(prim: Usd.Prim, inertial: Inertial) -> None:
+    """RigidBodyAPI + MassAPI (mass, centre of mass, principal inertia and axes)."""
+    UsdPhysics.RigidBodyAPI.Apply(prim)
+    mass = UsdPhysics.MassAPI.Apply(prim)
+    mass.CreateMassAttr(float(inertial.mass))
+    mass.CreateCenterOfMassAttr(Gf.Vec3f(*map(float, inertial.com)))
+    moments, axes = inertial.diagonalised()
+    mass.CreateDiagonalInertiaAttr(Gf.Vec3f(*map(float, moments)))
+    q = matrix_to_quat(axes)
+    mass.CreatePrincipalAxesAttr(Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:]))))
+
+
+def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset: Asset,
+                       mats: dict[str, MatRef], looks: Looks, cache: _ObjectMeshes,
+                       inertials: dict[str, Inertial] | None, physics: bool, fixed: bool
+                       ) -> None:
+    """One Xform (rigid body) per link, in the object frame, and one physics joint per
+    articulation; the object prim is the articulation root. A fixed object's base is welded
+    to the world by a fixed joint."""
+    link_paths = {}
+    for link in asset.links:
+        lp = path.AppendChild(sanitize_name(link))
+        UsdGeom.Xform.Define(stage, lp)
+        _write_link(stage, lp, asset, link, mats, looks, cache, physics)
+        link_paths[link] = lp
+        if physics and inertials is not None:
+            _rigid_body(stage.GetPrimAtPath(lp), inertials[link])
+    if not physics:
+        return
+    UsdPhysics.ArticulationRootAPI.Apply(stage.GetPrimAtPath(path))
+    jscope = UsdGeom.Scope.Define(stage, path.AppendChild("joints")).GetPath()
+    if fixed:
+        fj = UsdPhysics.FixedJoint.Define(stage, jscope.AppendChild("world_anchor"))
+        fj.CreateBody1Rel().SetTargets([link_paths["base"]])
+        m = obj.pose.matrix()
+        fj.CreateLocalPos0Attr(Gf.Vec3f(*map(float, m[:3, 3])))
+        q = matrix_to_quat(m[:3, :3])
+        fj.CreateLocalRot0Attr(Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:]))))
+        fj.CreateLocalPos1Attr(Gf.Vec3f(0.0, 0.0, 0.0))
+        fj.CreateLocalRot1Attr(Gf.Quatf(1.0, Gf.Vec3f(0.0, 0.0, 0.0)))
+    for j in asset.joints:
+        if j.child not in link_paths or j.parent not in link_paths:
+            continue
+        jp = jscope.AppendChild(sanitize_name(j.name))
+        if j.kind == "prismatic":
+            joint = UsdPhysics.PrismaticJoint.Define(stage, jp)
+            lo, hi = float(j.lower), float(j.upper)
+        else:
+            joint = UsdPhysics.RevoluteJoint.Define(stage, jp)
+            lo, hi = math.degrees(j.lower), math.degrees(j.upper)
+        joint.CreateAxisAttr(UsdPhysics.Tokens.x)
+        joint.CreateLowerLimitAttr(lo)
+        joint.CreateUpperLimitAttr(hi)
+        joint.CreateBody0Rel().SetTargets([link_paths[j.parent]])
+        joint.CreateBody1Rel().SetTargets([link_paths[j.child]])
+        origin = Gf.Vec3f(*map(float, j.origin))
+        q = quat_between(np.array([1.0, 0.0, 0.0]), j.axis)
+        rot = Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:])))
+        joint.CreateLocalPos0Attr(origin)
+        joint.CreateLocalRot0Attr(rot)
+        joint.CreateLocalPos1Attr(origin)
+        joint.CreateLocalRot1Attr(rot)
+        joint.GetPrim().CreateAttribute("indoorgen:joint", Sdf.ValueTypeNames.String).Set(j.name)
+
+
+def _write_lights(stage: Usd.Stage, path: Sdf.Path, asset: Asset) -> None:
+    """A SphereLight at the emissive faces of each link (bulbs, diffusers, flames)."""
+    fs = face_slot_names(asset)
+    emissive = [i for i, s in enumerate(asset.slots) if s in EMISSIVE_SLOTS]
+    if not emissive:
+        return
+    mask = np.isin(fs, emissive)
+    if not mask.any():
+        return
+    areas = np.asarray(asset.mesh.area_faces)
+    centres = np.asarray(asset.mesh.triangles_center)
+    for k, link in enumerate(asset.links):
+        sel = np.intersect1d(np.nonzero(mask)[0], asset.link_faces(link))
+        if len(sel) == 0:
+            continue
+        a = areas[sel]
+        c = (centres[sel] * a[:, None]).sum(axis=0) / max(a.sum(), 1e-12)
+        radius = float(np.clip(math.sqrt(a.sum() / (4 * math.pi)), 0.005, 0.25))
+        parent = path if not asset.joints else path.AppendChild(sanitize_name(link))
+        light = UsdLux.SphereLight.Define(stage, parent.AppendChild(f"light_{k}"))
+        light.CreateRadiusAttr(radius)
+        light.CreateIntensityAttr(LIGHT_INTENSITY)
+        light.CreateColorAttr(Gf.Vec3f(1.0, 0.88, 0.72))
+        light.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, c)))
+
+
+def _set_pose(xf: UsdGeom.Xform, obj: SceneObject) -> None:
+    """translate then rotateZ (degrees), so local-to-world = T(position) * Rz(yaw)."""
+    xf.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(
+        tuple(float(v) for v in obj.pose.position))
+    xf.AddRotateZOp(UsdGeom.XformOp.PrecisionDouble).Set(math.degrees(obj.pose.yaw))

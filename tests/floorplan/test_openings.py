@@ -1,0 +1,33 @@
+"""Doors, windows, the front door and stairs of a solved plan (indoorgen.floorplan.openings)
+follow the room-type table."""
+from __future__ import annotations
+
+from indoorgen.floorplan.openings import DOOR_HEIGHT, door_width
+from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.model.room_types import ROOM_TYPES
+from support.plans import two_storey_home
+
+
+def test_door_widths_come_from_the_table():
+    assert door_width("bathroom_2") == 0.8 and door_width("bedroom_0") == 0.9
+    assert door_width("garage_0") == ROOM_TYPES["garage"].door_width
+
+
+def test_generated_openings_follow_the_table():
+    fp, _ = two_storey_home()
+    counts: dict[str, int] = {}
+    for s in fp.storeys:
+        for d in s.doors:
+            assert d.height == DOOR_HEIGHT
+            assert d.width in {door_width(r) for r in d.rooms}
+        for w in s.windows:
+            spec = ROOM_TYPES[room_type_of(w.room)].windows
+            assert spec is not None, w.room
+            assert spec.min_width - 1e-9 <= w.width <= spec.max_width + 1e-9
+            assert (w.height, w.sill) == (spec.height, spec.sill)
+            counts[w.room] = counts.get(w.room, 0) + 1
+    for room, n in counts.items():
+        assert n <= ROOM_TYPES[room_type_of(room)].windows.max_count, room
+    assert fp.entrance is not None and fp.entrance.width == 1.0
+    (st,) = fp.stairs
+    assert (st.from_level, st.to_level) == (0, 1)
