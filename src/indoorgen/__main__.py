@@ -1,3 +1,4 @@
+"""`python -m indoorgen`: the same as the `indoorgen` command."""
 import sys
 
 from indoorgen.cli import main

@@ -8,28 +8,37 @@ from __future__ import annotations
 import json
 import logging
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
 from indoorgen.architecture.room import RoomGeometry, build_room, place_door, rectangle
+from indoorgen.architecture.solidify import room_geometries, solidify
 from indoorgen.assets import Asset
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError, InvalidGeometryError
+from indoorgen.export import write_formats
+from indoorgen.export.bundle import bundle_from_generated
+from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.model.floorplan_io import check_predefined, from_json
+from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.model.polygons import validate_polygon
 from indoorgen.model.room_types import ROOM_TYPES, RoomTypeSpec
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.model.tags import Semantics
 from indoorgen.outputs import atomic_dir
-from indoorgen.programs import get_program
+from indoorgen.programs import ROOM_PROGRAMS, get_program
+from indoorgen.render.plan import draw_plan
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
 from indoorgen.solver.full_mesh import full_mesh_check
+from indoorgen.solver.placement import planar
 from indoorgen.solver.stages import solve
 from indoorgen.solver.state import State
 
@@ -49,6 +58,7 @@ class GenerateConfig:
     program: Callable[..., Problem] | None = None
 
     def to_json(self) -> dict:
+        """The settings as recorded in scene.json (the program by name)."""
         return {"room_type": self.room_type,
                 "size": list(self.size) if self.size else None,
                 "polygon": [list(p) for p in self.polygon] if self.polygon else None,
@@ -71,14 +81,15 @@ class Generated:
     architecture: Any = None
 
     def full_assets(self) -> dict[str, Asset]:
+        """Every object's full (detailed) asset, built once per (generator, params)."""
         return {n: self.cache.full(o.generator, o.params) for n, o in self.scene.objects.items()}
 
     def footprints(self) -> dict:
+        """Every object's footprint polygon on the floor plane, for plan drawings."""
         return {n: self.state.footprint(n) for n in self.scene.objects}
 
 
 def _make_room(seed: int, cfg: GenerateConfig) -> Room:
-    from indoorgen.programs import ROOM_PROGRAMS
     if cfg.program is None and cfg.room_type not in ROOM_PROGRAMS:
         get_program(cfg.room_type)  # raises UnknownRoomTypeError
     rng = stream(seed, "room", "architecture")
@@ -102,7 +113,7 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
     if not (1.8 <= height <= 12.0):
         raise InvalidGeometryError(f"wall height {height} m is out of range [1.8, 12.0]")
     shape = validate_polygon(poly)
-    coords = [tuple(map(float, c)) for c in list(shape.exterior.coords)[:-1]]
+    coords = [(float(x), float(y)) for x, y in list(shape.exterior.coords)[:-1]]
     room = Room(cfg.room_type + "_0", cfg.room_type, coords, height, cfg.wall_thickness)
     room.doors.append(place_door(room, rng))
     return room
@@ -143,6 +154,7 @@ class HomeConfig:
     check: bool = False
 
     def to_json(self) -> dict:
+        """The settings as recorded in scene.json (a predefined floorplan as a flag)."""
         return {"home": True, "floors": self.floors,
                 "rooms": self.rooms if isinstance(self.rooms, (str, type(None))) else dict(self.rooms),
                 "area": self.area, "contour": self.contour,
@@ -153,11 +165,6 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
                   ) -> Generated:
     """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
     furnished by its program. Same seed + config + version => same scene."""
-    from indoorgen.architecture.solidify import room_geometries, solidify
-    from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-    from indoorgen.model.floorplan_io import check_predefined, from_json
-    from indoorgen.model.floorplan_io import to_json as floorplan_json
-    from indoorgen.programs import ROOM_PROGRAMS
     cfg = config or HomeConfig()
     t0 = time.perf_counter()
     if cfg.floorplan is not None:
@@ -214,10 +221,11 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
     for name, ob in state.objects.items():
         sc.add_object(SceneObject(
             name=name, generator=ob.generator, params=ob.params, seed=ob.seed,
-            pose=Pose(tuple(float(v) for v in ob.position), float(ob.yaw)),
+            pose=Pose((float(ob.position[0]), float(ob.position[1]), float(ob.position[2])),
+                      float(ob.yaw)),
             tags=sorted(getattr(t, "value", str(t)) for t in ob.tags), room=ob.room,
             relations=[RelationInstance(repr(p.relation), p.parent, p.child_surface,
-                                        p.parent_surface, p.relation.margin)
+                                        p.parent_surface, planar(p.relation).margin)
                        for p in ob.placements],
             stage=ob.stage))
     report = {
@@ -239,9 +247,6 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
     """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
     mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
     directory that is renamed into place when complete."""
-    from indoorgen.export import write_formats
-    from indoorgen.export.bundle import bundle_from_generated
-    from indoorgen.render.plan import draw_plan
 
     out = Path(out)
     with atomic_dir(out) as tmp:

@@ -28,7 +28,8 @@ def factory_names() -> list[str]:
     return sorted(REGISTRY)
 
 
-def factories_with(tags: Iterable[Semantics], without: Iterable[Semantics] = ()) -> list[str]:
+def factories_with(tags: Iterable[Semantics | str], without: Iterable[Semantics | str] = ()
+                   ) -> list[str]:
     """Names of generators whose tags include all of `tags` and none of `without`."""
     need, avoid = set(tags), set(without)
     return sorted(n for n, c in REGISTRY.items() if need <= c.tags and not (avoid & c.tags))

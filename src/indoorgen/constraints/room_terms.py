@@ -146,6 +146,14 @@ class RoomView:
         """Rooms relate to nothing: []."""
         return []
 
+    def children(self, o: str) -> set[str]:
+        """Rooms relate to nothing: no room is another's parent."""
+        return set()
+
+    def floor_z(self, o: str) -> float:
+        """Room plans are measured in plan coordinates: every floor is at 0."""
+        return 0.0
+
     def center(self, o: str) -> np.ndarray:
         """The centroid of the room's outline (z = 0)."""
         c = self.polygon(o).centroid
