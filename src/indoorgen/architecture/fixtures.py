@@ -19,6 +19,7 @@ import numpy as np
 import trimesh
 
 from indoorgen.assets import get_factory
+from indoorgen.assets.shapes.architectural import opening_size
 from indoorgen.errors import IndoorGenError
 from indoorgen.rng import stream
 
@@ -80,7 +81,6 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
     if got is None:
         return None
     f, params, asset = got
-    from indoorgen.assets.shapes.architectural import opening_size
     c = np.asarray(center, float)
     return _fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
                     opening_size(params))
@@ -94,7 +94,6 @@ def window(seed: int, name: str, center, inward: np.ndarray, width: float, heigh
     if got is None:
         return None
     f, params, asset = got
-    from indoorgen.assets.shapes.architectural import opening_size
     c = np.asarray(center, float)
     return _fixture("window", params, asset, inward,
                     np.array([c[0], c[1], elevation + sill]), opening_size(params))
