@@ -14,6 +14,7 @@ from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.model.tags import Semantics as S
 from indoorgen.quality.context import (
+    BAND_MARGIN,
     Check,
     Context,
     Placed,
@@ -62,8 +63,9 @@ def _side_clearance(ctx: Context, t: Placed) -> float:
     """Plan distance from a toilet's centreline (over its depth) to the nearest wall or obstacle
     beside it."""
     cy = (t.lo[1] + t.hi[1]) / 2
-    line = sg.LineString([(t.lo[0], cy), (t.hi[0], cy)])
-    band = sg.box(t.lo[0], cy - 2.0, t.hi[0], cy + 2.0)
+    x0, x1 = t.lo[0] + BAND_MARGIN, t.hi[0] - BAND_MARGIN  # the wall behind is not beside
+    line = sg.LineString([(x0, cy), (x1, cy)])
+    band = sg.box(x0, cy - 2.0, x1, cy + 2.0)
     skip = {t.name} | ctx.descendants(t.name) | {
         q.name for q in ctx.in_room(t.obj.room, *ACCESSORIES)}
     blockers = [ctx.walls_outside(t.obj.room)] + [

@@ -1,0 +1,70 @@
+"""Presence and height rules on hand-built rooms: lights, the kitchen sink, accessory heights,
+wall cabinets and reach."""
+from __future__ import annotations
+
+from indoorgen.quality.rules import (
+    accessory_heights,
+    kitchen_has_sink,
+    reach,
+    room_has_light,
+    wall_cabinet_height,
+)
+from support.qualityscene import FACE_UP, context, new_scene, put, report, size
+
+
+def test_room_without_light_fails_and_with_one_passes():
+    sc = new_scene("dining_room")
+    assert [c.ok for c in room_has_light(context(sc))] == [False]
+    put(sc, "ceiling_light", 3.0, 2.5, z=2.5)
+    assert [c.ok for c in room_has_light(context(sc))] == [True]
+
+
+def test_balcony_needs_no_light():
+    assert room_has_light(context(new_scene("balcony"))) == []
+
+
+def test_kitchen_without_sink_fails_the_scene_with_a_named_reason():
+    sc = new_scene("kitchen")
+    put(sc, "ceiling_light", 3.0, 2.5, z=2.5)
+    put(sc, "fridge", 1.0, 0.5, FACE_UP)
+    rep = report(sc)
+    assert rep["passed"] is False
+    assert rep["rules"]["kitchen_has_sink"]["passed"] == 0
+    assert any(f.startswith("kitchen_has_sink: room_0") for f in rep["failures"])
+
+
+def test_kitchen_sink_passes():
+    sc = new_scene("kitchen")
+    put(sc, "kitchen_sink", 2.0, 0.3, FACE_UP)
+    (c,) = kitchen_has_sink(context(sc))
+    assert c.ok and c.objects == ("kitchen_sink_0",)
+
+
+def test_toilet_roll_height_is_measured_at_its_centre():
+    h = size("toilet_roll_holder")[2]
+    sc = new_scene("bathroom")
+    put(sc, "toilet_roll_holder", 1.0, 0.05, FACE_UP, z=2.3 - h / 2, parent="wall_0")
+    put(sc, "toilet_roll_holder", 2.0, 0.05, FACE_UP, z=0.675 - h / 2, parent="wall_0")
+    checks = {c.objects[0]: c for c in accessory_heights(context(sc))}
+    high, ok = checks["toilet_roll_holder_0"], checks["toilet_roll_holder_1"]
+    assert not high.ok and abs(high.value - 2.3) < 1e-6 and high.limit == [0.6, 0.75]
+    assert ok.ok and abs(ok.value - 0.675) < 1e-6
+
+
+def test_wall_cabinet_bottom_height():
+    sc = new_scene("kitchen")
+    put(sc, "kitchen_wall_cabinet", 1.0, 0.2, FACE_UP, z=1.4, parent="wall_0")
+    put(sc, "kitchen_wall_cabinet", 3.0, 0.2, FACE_UP, z=0.9, parent="wall_0")
+    assert [c.ok for c in wall_cabinet_height(context(sc))] == [True, False]
+
+
+def test_laptop_on_a_wardrobe_is_out_of_reach():
+    sc = new_scene("bedroom")
+    w = put(sc, "wardrobe", 1.0, 0.4, FACE_UP)
+    top = size("wardrobe")[2]
+    put(sc, "laptop", 1.0, 0.4, z=top, parent=w)
+    t = put(sc, "desk", 4.0, 0.5, FACE_UP)
+    put(sc, "laptop", 4.0, 0.5, z=size("desk")[2], parent=t)
+    checks = reach(context(sc))
+    assert [(c.objects[1], c.ok) for c in checks] == [(w, False), (t, True)]
+    assert abs(checks[0].value - top) < 1e-6
