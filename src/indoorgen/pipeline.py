@@ -34,6 +34,7 @@ from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObje
 from indoorgen.model.tags import Semantics
 from indoorgen.outputs import atomic_dir
 from indoorgen.programs import ROOM_PROGRAMS, get_program
+from indoorgen.quality.layout import quality_report
 from indoorgen.render.plan import draw_plan
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
@@ -135,6 +136,7 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     timings = {"architecture": time.perf_counter() - t0}
     gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
                    check=cfg.check, progress=progress)
+    _assess(gen)
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
     return gen
 
@@ -183,9 +185,18 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
                    check=cfg.check, progress=progress)
     gen.scene.floorplan = floorplan_json(plan)
     gen.architecture = arch
+    _assess(gen)
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
     gen.report["floorplan"] = {k: v for k, v in plan.info.items() if k in ("anneal", "timings_s")}
     return gen
+
+
+def _assess(gen: Generated) -> None:
+    """Measure the finished scene (it changes nothing): the layout-quality rules and community
+    measures go into report.json's `quality` section."""
+    t = time.perf_counter()
+    gen.report["quality"] = quality_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
+    gen.report["timings_s"]["quality"] = round(time.perf_counter() - t, 4)
 
 
 def _problem(program: Callable[..., Problem], room: str) -> Problem:

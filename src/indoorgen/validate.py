@@ -8,6 +8,10 @@ then checks with manifold3d booleans and plain geometry:
 - every door's clearance zone is free of objects;
 - dining chairs face the table they are pulled up to;
 - the room's constraint program, evaluated from scratch, has no hard violation.
+
+`ok` is that physical and program validity. The layout-quality rules (`quality.layout`) are
+reported beside it as `quality` and `quality_passed`: a scene can be physically valid and still
+fail a design rule (a kitchen with no sink), and the report says so.
 """
 from __future__ import annotations
 
@@ -31,6 +35,7 @@ from indoorgen.errors import ConfigError
 from indoorgen.model.scene import Scene
 from indoorgen.model.tags import Semantics
 from indoorgen.programs import ROOM_PROGRAMS
+from indoorgen.quality.layout import quality_report
 from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
@@ -64,7 +69,7 @@ def _world(scene_obj, mesh: trimesh.Trimesh) -> trimesh.Trimesh:
 
 def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any]:
     """Check `scene`; return a report with `ok` and the list of problems found per check."""
-    rooms, _ = scene_architecture(scene)
+    rooms, architecture = scene_architecture(scene)
     meshes, assets = {}, {}
     for n, o in scene.objects.items():
         asset = get_factory(o.generator).create(o.params)
@@ -150,10 +155,12 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
         violations = program_violations(scene, rooms)
     n_violated = sum(1 for v in violations.values() for x in v.values() if x > 1e-9)
     ok = not (penetrating or unsupported or blocked or misfacing or n_violated)
+    quality = quality_report(scene, rooms, AssetCache(), architecture)
     return {"ok": ok, "objects": len(scene.objects), "interpenetrating": penetrating,
             "unsupported": unsupported, "door_zone_blocked": blocked,
             "chairs_not_facing_table": misfacing, "hard_violations": violations,
-            "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP}
+            "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP,
+            "quality_passed": quality["passed"], "quality": quality}
 
 
 def _footprint_below(obj, asset, floor_z: float, top: float):

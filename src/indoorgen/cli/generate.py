@@ -7,6 +7,7 @@ import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
@@ -86,7 +87,20 @@ def run_generate(args: argparse.Namespace) -> int:
         viol = sum(r["n_violated"] for r in rep["rooms"].values())
         print(f"{out}: {len(gen.scene.rooms)} room(s), {rep['objects']} objects, {viol} hard "
               f"constraints violated, {rep['timings_s']['total']:.2f} s")
+        print(f"{out}: layout quality {_quality_line(rep['quality'])}")
     return 0
+
+
+def _quality_line(quality: dict[str, Any]) -> str:
+    """One line for the layout-quality report: passed, or which hard rules failed, and the share
+    of all rule instances that hold."""
+    checked = sum(r["checked"] for r in quality["rules"].values())
+    held = sum(r["passed"] for r in quality["rules"].values())
+    share = f"{held}/{checked} rule checks hold"
+    if quality["passed"]:
+        return f"passed ({share})"
+    failed = sorted({line.split(":", 1)[0] for line in quality["failures"]})
+    return f"FAILED: {', '.join(failed)} ({share}; see report.json)"
 
 
 def _room_config(args: argparse.Namespace) -> GenerateConfig:
