@@ -26,6 +26,11 @@ def test_generate_writes_every_output(tmp_path):
     scene = json.loads((out / "scene.json").read_text())
     report = json.loads((out / "report.json").read_text())
     assert len(scene["objects"]) == report["objects"] > 10
+    # the layout-quality report: every rule with its counts, hard failures named
+    quality = report["quality"]
+    assert quality["passed"] == (not quality["failures"])
+    assert {"room_has_light", "dining_chairs_face_table"} <= set(quality["rules"])
+    assert "layout quality" in r.stdout
     assert {"large", "medium", "small"} == {s["stage"] for s in report["stages"]}
     for s in report["stages"]:
         assert s["steps"] > 0 and s["seconds"] > 0
