@@ -269,10 +269,15 @@ def navigation_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: As
 def navigability(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
                  architecture: Architecture | None = None, *, robot_radius: float = ROBOT_RADIUS
                  ) -> float:
-    """The community's navigability: the area of the largest connected free region over the
-    whole free area, for a robot of `robot_radius` (the free floor eroded by it), as in
-    PhyScene (Yang et al., CVPR 2024, "walkable area ratio" R_walkable) and SceneEval
-    (Tam et al., 2025, navigability); per storey without stairs, area-weighted over storeys."""
+    """The community's navigability: the area of the largest connected region of the free floor
+    eroded by `robot_radius` over the area of the whole eroded free floor.
+
+    This is PhyScene's walkable rate (Yang et al., CVPR 2024; `cal_walkable_metric` in its
+    scripts/eval/walkable_metric.py, when no door is given: floor eroded and objects grown by
+    the robot's size, then largest component / all walkable pixels), which SceneEval (Tam et
+    al., 2025) reuses as its navigability metric. Here obstacles are everything in the band
+    (not only boxes below 1.5 m), doors are open, and a home's storeys are measured apart
+    (stairs do not join them) and area-weighted."""
     occ = occupancies(scene, rooms, cache, architecture)
     largest = total = 0
     for o in occ.values():
