@@ -1,0 +1,104 @@
+"""Home benchmark: seconds per furnished home and how walkable it is.
+
+    python benchmarks/home.py [--homes1 30] [--homes2 10] [--seed0 0]
+
+Generates 1-storey homes for seeds seed0..seed0+homes1-1 and 2-storey homes for
+seed0..seed0+homes2-1 (`pipeline.generate_home`, default settings) and prints, per storey count:
+seconds per home (median, p90), rooms and objects per home, the navigation figures of
+`quality.navigation` for a 0.25 m agent from the entrance (reachable share of free floor:
+median and minimum; homes with every room reachable; unreachable rooms and doors per home;
+large objects whose front cannot be reached per home), the community navigability (0.2 m robot)
+and the seconds `navigation_report` takes per storey (median, max).
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+
+import numpy as np
+
+from indoorgen.pipeline import HomeConfig, generate_home
+from indoorgen.quality.navigation import navigability, navigation_report
+
+
+def one(seed: int, floors: int) -> dict:
+    t0 = time.perf_counter()
+    try:
+        gen = generate_home(seed, HomeConfig(floors=floors))
+    except Exception as e:  # reported, not fatal: the benchmark counts failures
+        return {"seed": seed, "error": f"{type(e).__name__}: {e}"}
+    t1 = time.perf_counter()
+    rep = navigation_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
+    t2 = time.perf_counter()
+    nav = navigability(gen.scene, gen.rooms, gen.cache, gen.architecture)
+    return {"seed": seed, "seconds": t1 - t0, "rooms": len(gen.scene.rooms),
+            "objects": len(gen.scene.objects), "report": rep, "navigability": nav,
+            "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
+
+
+def _p90(xs: list[float]) -> float:
+    return float(np.percentile(xs, 90))
+
+
+def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
+    ok = [r for r in runs if "error" not in r]
+    rows = [("homes (failed)", f"{len(runs)} ({len(runs) - len(ok)})")]
+    if not ok:
+        return rows
+    secs = [r["seconds"] for r in ok]
+    share = [r["report"]["reachable_share"] for r in ok]
+    nav_s = [r["nav_s_per_storey"] for r in ok]
+    rows += [
+        ("seconds per home: median / p90", f"{statistics.median(secs):.1f} / {_p90(secs):.1f}"),
+        ("rooms per home: median", f"{statistics.median(r['rooms'] for r in ok):g}"),
+        ("objects per home: median", f"{statistics.median(r['objects'] for r in ok):g}"),
+        ("reachable share: median / min", f"{statistics.median(share):.3f} / {min(share):.3f}"),
+        ("homes with every room reachable",
+         f"{sum(r['report']['passed'] for r in ok)} / {len(ok)}"),
+        ("unreachable rooms per home: mean",
+         f"{statistics.mean(len(r['report']['unreachable_rooms']) for r in ok):.2f}"),
+        ("unreachable doors per home: mean",
+         f"{statistics.mean(len(r['report']['unreachable_doors']) for r in ok):.2f}"),
+        ("large objects unreachable per home: mean",
+         f"{statistics.mean(len(r['report']['large_objects_unreachable']) for r in ok):.2f}"),
+        ("navigability (0.2 m robot): median / min",
+         f"{statistics.median(r['navigability'] for r in ok):.3f} / "
+         f"{min(r['navigability'] for r in ok):.3f}"),
+        ("navigation_report s per storey: median / max",
+         f"{statistics.median(nav_s):.3f} / {max(nav_s):.3f}"),
+    ]
+    if floors > 1:
+        up = [r["report"]["storeys"].get("1", {}).get("reachable_share", 0.0) for r in ok]
+        rows.append(("storey 1 reachable share: median / min",
+                     f"{statistics.median(up):.3f} / {min(up):.3f}"))
+    return rows
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--homes1", type=int, default=30, help="1-storey homes")
+    ap.add_argument("--homes2", type=int, default=10, help="2-storey homes")
+    ap.add_argument("--seed0", type=int, default=0, help="first seed")
+    args = ap.parse_args()
+    columns = {}
+    for floors, n in ((1, args.homes1), (2, args.homes2)):
+        if n > 0:
+            runs = [one(s, floors) for s in range(args.seed0, args.seed0 + n)]
+            columns[floors] = summary(floors, runs)
+            for r in runs:
+                if "error" in r:
+                    print(f"  {floors}-storey seed {r['seed']} failed: {r['error']}")
+    labels = list(dict.fromkeys(k for rows in columns.values() for k, _ in rows))
+    table = [["", *(f"{f}-storey" for f in columns)]]
+    table += [[label, *(dict(rows).get(label, "") for rows in columns.values())]
+              for label in labels]
+    widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
+    for k, row in enumerate(table):
+        print("| " + " | ".join(c.ljust(w) if i == 0 else c.rjust(w)
+                                for i, (c, w) in enumerate(zip(row, widths, strict=True))) + " |")
+        if k == 0:
+            print("|" + "|".join("-" * (w + 2) for w in widths) + "|")
+
+if __name__ == "__main__":
+    main()
