@@ -35,6 +35,7 @@ from indoorgen.model.tags import Semantics
 from indoorgen.outputs import atomic_dir
 from indoorgen.programs import ROOM_PROGRAMS, get_program
 from indoorgen.quality.layout import quality_report
+from indoorgen.quality.navigation import navigation_report, write_nav_images
 from indoorgen.render.plan import draw_plan
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
@@ -193,9 +194,11 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
 
 def _assess(gen: Generated) -> None:
     """Measure the finished scene (it changes nothing): the layout-quality rules and community
-    measures go into report.json's `quality` section."""
+    measures go into report.json's `quality` section, walkability for a robot into `navigation`."""
     t = time.perf_counter()
     gen.report["quality"] = quality_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
+    gen.report["navigation"] = navigation_report(gen.scene, gen.rooms, gen.cache,
+                                                 gen.architecture)
     gen.report["timings_s"]["quality"] = round(time.perf_counter() - t, 4)
 
 
@@ -254,11 +257,11 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
 
 
 def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
-                    formats=None) -> Path:
+                    formats=None, nav_images: bool = False) -> Path:
     """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
     mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
-    directory that is renamed into place when complete."""
-
+    directory that is renamed into place when complete. `nav_images` adds a `nav_<storey>.png`
+    per storey: the free floor a robot reaches from the entrance, and what it cannot."""
     out = Path(out)
     with atomic_dir(out) as tmp:
         t0 = time.perf_counter()
@@ -267,6 +270,8 @@ def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
         zones = {r: g.door_zones for r, g in gen.rooms.items()}
         draw_plan(gen.scene, gen.footprints(), tmp / "plan.png", door_zones=zones,
                   title=_plan_title(gen.scene))
+        if nav_images:
+            write_nav_images(gen.scene, gen.rooms, gen.cache, gen.architecture, tmp)
         gen.report.setdefault("timings_s", {})["export"] = round(time.perf_counter() - t0, 4)
         (tmp / "report.json").write_text(json.dumps(gen.report, indent=1, sort_keys=True,
                                                     default=_json_default) + "\n")

@@ -36,6 +36,7 @@ from indoorgen.model.scene import Scene
 from indoorgen.model.tags import Semantics
 from indoorgen.programs import ROOM_PROGRAMS
 from indoorgen.quality.layout import quality_report
+from indoorgen.quality.navigation import navigation_report
 from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
@@ -155,12 +156,14 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
         violations = program_violations(scene, rooms)
     n_violated = sum(1 for v in violations.values() for x in v.values() if x > 1e-9)
     ok = not (penetrating or unsupported or blocked or misfacing or n_violated)
-    quality = quality_report(scene, rooms, AssetCache(), architecture)
+    cache = AssetCache()
+    quality = quality_report(scene, rooms, cache, architecture)
+    navigation = navigation_report(scene, rooms, cache, architecture)
     return {"ok": ok, "objects": len(scene.objects), "interpenetrating": penetrating,
             "unsupported": unsupported, "door_zone_blocked": blocked,
             "chairs_not_facing_table": misfacing, "hard_violations": violations,
             "n_hard_violated": n_violated, "contact_gap_m": CONTACT_GAP,
-            "quality_passed": quality["passed"], "quality": quality}
+            "quality_passed": quality["passed"], "quality": quality, "navigation": navigation}
 
 
 def _footprint_below(obj, asset, floor_z: float, top: float):

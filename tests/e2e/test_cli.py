@@ -117,3 +117,16 @@ def test_bad_input_one_line_exit_2_no_output(tmp_path, args, words):
     assert words in lines[0]
     assert not (tmp_path / "out").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
+
+
+def test_nav_image_and_navigation_report(tmp_path):
+    """--nav-image adds a picture per storey; report.json says what a robot can reach."""
+    out = tmp_path / "scene"
+    r = run("generate", "--seed", "2", "--room", "bedroom", "--nav-image", "--formats", "mjcf",
+            "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    assert (out / "nav_0.png").is_file()
+    nav = json.loads((out / "report.json").read_text())["navigation"]
+    assert 0.0 < nav["reachable_share"] <= 1.0
+    assert nav["passed"] == (not nav["unreachable_rooms"])
+    assert "navigation" in r.stdout

@@ -38,6 +38,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
     g.add_argument("--check", action="store_true",
                    help="verify incremental constraint evaluation against full (slow)")
+    g.add_argument("--nav-image", action="store_true",
+                   help="also write nav_<storey>.png: the floor a robot reaches from the entrance")
     g.add_argument("-q", "--quiet", action="store_true")
     g.set_defaults(func=run_generate)
 
@@ -81,13 +83,14 @@ def run_generate(args: argparse.Namespace) -> int:
         gen = generate(args.seed, _room_config(args), progress=progress)
     else:
         gen = generate_home(args.seed, _home_config(args), progress=progress)
-    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats)
+    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats, nav_images=args.nav_image)
     if not args.quiet:
         rep = gen.report
         viol = sum(r["n_violated"] for r in rep["rooms"].values())
         print(f"{out}: {len(gen.scene.rooms)} room(s), {rep['objects']} objects, {viol} hard "
               f"constraints violated, {rep['timings_s']['total']:.2f} s")
         print(f"{out}: layout quality {_quality_line(rep['quality'])}")
+        print(f"{out}: navigation {_navigation_line(rep['navigation'])}")
     return 0
 
 
@@ -101,6 +104,15 @@ def _quality_line(quality: dict[str, Any]) -> str:
         return f"passed ({share})"
     failed = sorted({line.split(":", 1)[0] for line in quality["failures"]})
     return f"FAILED: {', '.join(failed)} ({share}; see report.json)"
+
+
+def _navigation_line(nav: dict[str, Any]) -> str:
+    """One line for the navigation report: the reachable share, and what cannot be reached."""
+    line = (f"{nav['reachable_share']:.0%} of the free floor reachable by a "
+            f"{nav['agent_radius']:g} m-radius robot")
+    if nav["unreachable_rooms"]:
+        line += f"; unreachable rooms: {', '.join(nav['unreachable_rooms'])}"
+    return line
 
 
 def _room_config(args: argparse.Namespace) -> GenerateConfig:

@@ -16,6 +16,7 @@ from indoorgen.model.scene import Scene
 from indoorgen.quality import arrangement, clearance, rules
 from indoorgen.quality.context import RULES, Check, build_context
 from indoorgen.quality.measures import community_measures
+from indoorgen.quality.navigation import navigability
 
 #: the modules whose rules the report runs (importing them registers their rules)
 RULE_MODULES = (rules, arrangement, clearance)
@@ -49,5 +50,7 @@ def quality_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: Asset
         out_rules[name] = rule_summary(checks, hard)
         if hard:
             failures += [_failure_line(name, c) for c in checks if not c.ok]
+    measures = community_measures(ctx)
+    measures["navigability"] = round(navigability(scene, rooms, cache, architecture), 4)
     return {"passed": not failures, "failures": failures, "rules": out_rules,
-            "measures": community_measures(ctx)}
+            "measures": measures}
