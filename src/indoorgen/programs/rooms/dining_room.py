@@ -1,4 +1,5 @@
-"""A dining room: one table with chairs evenly around it and places laid, art on the walls."""
+"""A dining room: one table with chairs evenly around it and places laid, a light over the table,
+art on the walls."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -10,11 +11,12 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, at_table, on_floor, on_top, on_wall
+from indoorgen.programs.relations import against_wall, at_table, ceiling_lights, on_floor, on_top, on_wall
 
 
 def dining_room(room: ObjSet) -> Problem:
-    """One table with four to eight chairs evenly around it, places laid, art in view."""
+    """One table with four to eight chairs evenly around it, places laid, a light over it, art
+    in view."""
     floor = scene().related_to(room, on_floor)
     tables = floor[S.DiningTable]
     chairs = floor[S.DiningChair]
@@ -25,6 +27,7 @@ def dining_room(room: ObjSet) -> Problem:
     art = scene()[S.WallArt].related_to(room, on_wall)
     plates, cups = scene()[S.Plate], scene()[S.Cup]
     vases = scene()[S.Vase].related_to(tables | storage, on_top)
+    lights = ceiling_lights(room)
     return Problem(
         constraints={
             "one table": tables.count() == 1,
@@ -35,6 +38,7 @@ def dining_room(room: ObjSet) -> Problem:
             "a sideboard or shelf at most": (sideboards.count() + shelves.count()).in_range(0, 1),
             "pictures": art.count().in_range(1, 2),
             "a vase": vases.count().in_range(0, 1),
+            "a light": lights.count().in_range(1, 2),
         },
         score_terms={
             "chairs evenly around": tables.mean(
@@ -47,5 +51,6 @@ def dining_room(room: ObjSet) -> Problem:
             "vase in the middle": center_of_support_distance(vases).minimize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, floor).minimize(2),
+            "a light over the table": lights.mean(lambda li: li.distance(tables).hinge(0.0, 0.0)).minimize(3),
         },
     )
