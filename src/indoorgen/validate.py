@@ -32,6 +32,7 @@ from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst, parse_relation
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
+from indoorgen.model.boxes import overlapping_pairs
 from indoorgen.model.scene import Scene
 from indoorgen.model.tags import Semantics
 from indoorgen.programs import ROOM_PROGRAMS
@@ -88,19 +89,15 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     bounds = np.array([solids[n].bounds for n in names])
     man: dict[str, manifold3d.Manifold] = {}
     penetrating = []
-    for i, a in enumerate(names):
-        lo, hi = bounds[i]
-        overlap = np.all(bounds[i + 1:, 0] < hi - PENETRATION_TOL, axis=1) & \
-            np.all(bounds[i + 1:, 1] > lo + PENETRATION_TOL, axis=1)
-        for j in np.nonzero(overlap)[0] + i + 1:
-            b = names[j]
-            if a not in meshes and b not in meshes:
-                continue  # architecture against architecture
-            ma = man.setdefault(a, _manifold(solids[a]))
-            mb = man.setdefault(b, _manifold(solids[b]))
-            d = _penetration(ma, mb)
-            if d > PENETRATION_TOL:
-                penetrating.append({"a": a, "b": b, "depth_m": round(d, 4)})
+    for i, j in overlapping_pairs(bounds, PENETRATION_TOL):
+        a, b = names[i], names[j]
+        if a not in meshes and b not in meshes:
+            continue  # architecture against architecture
+        ma = man.setdefault(a, _manifold(solids[a]))
+        mb = man.setdefault(b, _manifold(solids[b]))
+        d = _penetration(ma, mb)
+        if d > PENETRATION_TOL:
+            penetrating.append({"a": a, "b": b, "depth_m": round(d, 4)})
 
     # 2. support: each declared relation's surfaces are parallel, facing, at the margin
     unsupported = []

@@ -18,6 +18,7 @@ import fcl
 import numpy as np
 import shapely.geometry as sg
 
+from indoorgen.model.boxes import overlapping_pairs
 from indoorgen.model.tags import Semantics as S
 from indoorgen.quality.context import Context, Placed
 
@@ -50,24 +51,20 @@ def colliding_objects(ctx: Context) -> dict[str, tuple[str, float]]:
                       for n in names]).reshape(-1, 2, 3)
     request = fcl.CollisionRequest(num_max_contacts=1, enable_contact=True)
     hits: dict[str, tuple[str, float]] = {}
-    for i, a in enumerate(names):
-        lo, hi = boxes[i]
-        near = np.all(boxes[i + 1:, 0] < hi - PENETRATION_TOL, axis=1) & \
-            np.all(boxes[i + 1:, 1] > lo + PENETRATION_TOL, axis=1)
-        for j in np.nonzero(near)[0] + i + 1:
-            b = names[j]
-            depth = 0.0
-            for oa, ba in pieces[a]:
-                for ob, bb in pieces[b]:
-                    if np.any(ba[0] >= bb[1] - PENETRATION_TOL) or np.any(bb[0] >= ba[1] - PENETRATION_TOL):
-                        continue
-                    res = fcl.CollisionResult()
-                    if fcl.collide(oa, ob, request, res):
-                        depth = max([depth, *(float(c.penetration_depth) for c in res.contacts)])
-            if depth > PENETRATION_TOL:
-                for x, y in ((a, b), (b, a)):
-                    if depth > hits.get(x, ("", 0.0))[1]:
-                        hits[x] = (y, depth)
+    for i, j in overlapping_pairs(boxes, PENETRATION_TOL):
+        a, b = names[i], names[j]
+        depth = 0.0
+        for oa, ba in pieces[a]:
+            for ob, bb in pieces[b]:
+                if np.any(ba[0] >= bb[1] - PENETRATION_TOL) or np.any(bb[0] >= ba[1] - PENETRATION_TOL):
+                    continue
+                res = fcl.CollisionResult()
+                if fcl.collide(oa, ob, request, res):
+                    depth = max([depth, *(float(c.penetration_depth) for c in res.contacts)])
+        if depth > PENETRATION_TOL:
+            for x, y in ((a, b), (b, a)):
+                if depth > hits.get(x, ("", 0.0))[1]:
+                    hits[x] = (y, depth)
     return hits
 
 
