@@ -12,13 +12,14 @@ import numpy as np
 
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
+from indoorgen.programs.rooms.kitchen import TRIANGLE_LEG
 from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, rule
 
 #: room types that need no light of their own: a balcony is open to the sky and lit through the
 #: home's windows and doors (closets, hallways and garages are dark without one, so they do)
 UNLIT_ROOM_TYPES = frozenset({"balcony"})
-#: NKBA Kitchen Planning Guideline 4 (work triangle): each leg 4-9 ft (1.2-2.7 m), sum <= 26 ft
-TRIANGLE_LEG = (1.2, 2.7)
+#: NKBA Kitchen Planning Guideline 4 (work triangle): legs TRIANGLE_LEG (the kitchen program's),
+#: sum <= 26 ft
 TRIANGLE_SUM = 7.9
 #: NKBA: wall cabinets 15-18 in above a 36 in counter, i.e. bottoms at 1.35-1.5 m
 WALL_CABINET_BOTTOM = (1.35, 1.5)

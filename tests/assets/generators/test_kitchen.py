@@ -10,7 +10,13 @@ import trimesh
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
 from support.assetcheck import build, distances, make
-from support.generatorcheck import check_interior_shelves, check_wall_back, on_mesh
+from support.generatorcheck import (
+    check_interior_shelves,
+    check_wall_back,
+    design_offset,
+    first_hit_down,
+    on_mesh,
+)
 
 SEEDS = range(6)
 TOL = 1e-3
@@ -22,7 +28,7 @@ def test_registered_with_tags(name):
     f = get_factory(name)
     assert Semantics.Object in f.tags
     expected = {
-        "kitchen_sink": {Semantics.KitchenSink},
+        "kitchen_sink": {Semantics.KitchenSink, Semantics.Countertop},
         "kitchen_base_cabinet": {Semantics.Cabinet, Semantics.KitchenCabinet, Semantics.Countertop},
         "kitchen_wall_cabinet": {Semantics.KitchenCabinet, Semantics.WallCabinet, Semantics.WallMounted},
         "countertop_run": {Semantics.KitchenCabinet, Semantics.Countertop},
@@ -32,7 +38,7 @@ def test_registered_with_tags(name):
 
 
 @pytest.mark.parametrize("name,seed", [(n, s) for n in ("kitchen_base_cabinet", "kitchen_wall_cabinet",
-                                                        "countertop_run")
+                                                        "countertop_run", "kitchen_sink")
                                        for s in SEEDS])
 def test_interior_surfaces_are_shelves_inside(name, seed):
     """Shelves behind doors (a drawer stack has none) face up, lie inside the carcass and on a
@@ -45,7 +51,8 @@ def test_wall_cabinet_back_lies_on_mesh(seed):
     check_wall_back(build("kitchen_wall_cabinet", seed)[3], min_area=0.05)
 
 
-@pytest.mark.parametrize("name,seed", [(n, s) for n in ("kitchen_base_cabinet", "countertop_run")
+@pytest.mark.parametrize("name,seed", [(n, s) for n in ("kitchen_base_cabinet", "countertop_run",
+                                                        "kitchen_sink")
                                        for s in SEEDS])
 def test_against_the_wall_back_is_flat(name, seed):
     """Floor units that stand against a wall have a flat back on the bounding box's back."""
@@ -141,20 +148,53 @@ def test_wall_cabinet_flap_lifts_up():
 @pytest.mark.parametrize("bowls,mount", [("single", "undermount"), ("double", "drop_in"),
                                          ("double", "undermount"), ("single", "drop_in")])
 def test_sink_bowls_are_hollow(bowls, mount):
+    """Each basin is open from above: its floor is a wall thickness above its bottom, its mouth
+    open air and not part of the countertop surface, which lies at countertop height."""
     f, p, a = make("kitchen_sink", 0, bowls=bowls, mount=mount)
     q = f.resolve(p)
-    offset = f._layout(q)[1]  # design frame -> asset frame
+    offset = design_offset(f, q)
     L = f._sink_layout(q)
     assert len(L["cav"]) == (2 if bowls == "double" else 1)
     top = a.surface("top")
-    assert abs(top.origin[2] - (p["bowl_depth"] + p["countertop_thickness"])) < TOL
+    assert abs(top.origin[2] - p["height"]) < TOL
     assert on_mesh(a, top) < TOL
     for ya, yb in L["cav"]:
         c = np.array([(L["bx0"] + L["bx1"]) / 2 + 0.08, (ya + yb) / 2, 0.0]) + offset
-        # the bowl's floor is its wall thickness above the bottom; its mouth is open air,
-        # and not part of the countertop surface
-        assert distances(a.mesh, np.array([[c[0], c[1], f.WALL]])).min() < TOL
+        assert distances(a.mesh, np.array([[c[0], c[1], L["z0"] + f.WALL]])).min() < TOL
+        assert abs(first_hit_down(a.mesh, c[0], c[1]) - (L["z0"] + f.WALL)) < TOL
         assert distances(a.mesh, np.array([[c[0], c[1], top.origin[2]]])).min() > 0.03
         assert not top.polygon.contains(sg.Point(c[0] - top.origin[0], c[1] - top.origin[1]))
-    solid = np.prod(a.extents[:2]) * (p["bowl_depth"] + p["countertop_thickness"])
-    assert a.mesh.volume < 0.5 * solid
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_sink_base_stands_on_the_floor_at_base_cabinet_height(seed):
+    """The sink is a floor unit: its plinth rests on the floor (solid bottom on the mesh), and its
+    countertop has the height, depth and overhang of a base cabinet with the same params."""
+    _, p, _, a = build("kitchen_sink", seed)
+    assert abs(a.mesh.bounds[0][2]) < TOL
+    assert on_mesh(a, a.surface("bottom")) < TOL
+    shared = {k: p[k] for k in ("depth", "height", "countertop_thickness", "overhang",
+                                "toe_kick_height", "handle", "front_style")}
+    _, _, cab = make("kitchen_base_cabinet", seed, width=p["width"], layout="doors",
+                     toe_kick_depth=0.06, **shared)
+    top, ctop = a.surface("top"), cab.surface("top")
+    assert abs(top.origin[2] - ctop.origin[2]) < TOL and abs(top.origin[2] - p["height"]) < TOL
+    # the fronts line up: the countertop's front edge and the doors' faces match the cabinet's
+    assert abs(top.corners()[:, 0].max() - ctop.corners()[:, 0].max()) < TOL
+    assert abs(a.mesh.bounds[1][0] - cab.mesh.bounds[1][0]) < TOL
+    # the carcass bottom is an interior surface under the basin, with no shelf above it
+    (inner,) = a.surfaces_of(Subpart.Interior)
+    assert inner.origin[2] < p["toe_kick_height"] + 0.03
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_sink_doors_open(seed):
+    """A pair of side-hinged doors; opened, each leaf swings out in front of the carcass."""
+    _, p, _, a = build("kitchen_sink", seed)
+    assert sorted(j.kind for j in a.joints) == ["revolute", "revolute"]
+    front = a.mesh.bounds[1][0]
+    for j in a.joints:
+        leaf = a.link_mesh(j.child)
+        moved = trimesh.transform_points(leaf.vertices, j.transform(j.upper))
+        assert moved[:, 0].max() > front + 0.2
+        assert abs(np.ptp(moved[:, 2]) - np.ptp(leaf.vertices[:, 2])) < TOL

@@ -1,5 +1,5 @@
-"""A kitchen: cabinet runs along the walls with a fridge and a cooker, wall cabinets above,
-maybe an island with stools, and kitchenware on the counters."""
+"""A kitchen: cabinet runs along the walls with a sink, a fridge and a cooker, wall cabinets
+above, maybe an island with stools, and kitchenware on the counters."""
 from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, height, scene
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
@@ -12,12 +12,18 @@ from indoorgen.programs.relations import (
     on_wall,
 )
 
+#: the work triangle's legs (m): NKBA Kitchen Planning Guideline 4, each leg 4-9 ft (the
+#: quality report's `kitchen_work_triangle` measures the same)
+TRIANGLE_LEG = (1.2, 2.7)
+
 
 def kitchen(room: ObjSet) -> Problem:
-    """Cabinet runs with a fridge and a cooker in a working triangle, a hood over the cooker."""
+    """Cabinet runs with a sink, a fridge and a cooker in a working triangle, a hood over the
+    cooker."""
     floor = scene().related_to(room, on_floor)
     along_walls = floor.related_to(room, against_wall)
     cabinets = along_walls[S.KitchenCabinet].excluding(S.KitchenIsland, S.WallMounted)
+    sinks = along_walls[S.KitchenSink]
     fridges = along_walls[S.Fridge]
     cookers = along_walls[S.Range]
     dishwashers = along_walls[S.Dishwasher]
@@ -34,6 +40,7 @@ def kitchen(room: ObjSet) -> Problem:
     return Problem(
         constraints={
             "cabinet runs": cabinets.count().in_range(1, 4),
+            "a sink": sinks.count() == 1,
             "a fridge": fridges.count() == 1,
             "a cooker": cookers.count() == 1,
             "a dishwasher at most": dishwashers.count().in_range(0, 1),
@@ -49,7 +56,10 @@ def kitchen(room: ObjSet) -> Problem:
             "food out": food.count().in_range(0, 4),
         },
         score_terms={
-            "a working triangle": fridges.mean(lambda f: f.distance(cookers).hinge(0.6, 2.7)).minimize(2),
+            # the work triangle: each leg between sink, cooker and fridge 1.2-2.7 m (NKBA)
+            "sink to cooker": sinks.mean(lambda s: s.distance(cookers).hinge(*TRIANGLE_LEG)).minimize(2),
+            "sink to fridge": sinks.mean(lambda s: s.distance(fridges).hinge(*TRIANGLE_LEG)).minimize(2),
+            "cooker to fridge": fridges.mean(lambda f: f.distance(cookers).hinge(*TRIANGLE_LEG)).minimize(2),
             "counter space": cabinets.count().maximize(1),
             "fronts free": accessibility_cost(along_walls, floor).minimize(2),
             "island clear of the runs": islands.mean(

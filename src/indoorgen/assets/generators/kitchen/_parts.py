@@ -1,15 +1,17 @@
-"""What the kitchen cabinets share: cabinet units of a run - a carcass with overlay doors,
-drawers and flaps (each its own link with a joint), their handles and shaker frames - and the
-interior surfaces behind the doors. Fronts face +X.
+"""What the kitchen cabinets and the sink base share: cabinet units of a run - a carcass with
+overlay doors, drawers and flaps (each its own link with a joint), their handles and shaker
+frames - the interior surfaces behind the doors, and the units under a countertop (their shared
+parameters, the plinth, the countertop slab). Fronts face +X.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import manifold3d as m3d
 import numpy as np
 
-from indoorgen.assets.protocol import Joint, Surface
+from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.shapes.cabinet_parts import (
     HANDLE_PROUD,
     interior_rect,
@@ -29,12 +31,16 @@ from indoorgen.assets.shapes.moving_parts import (
     knob,
     slide_motion,
 )
-from indoorgen.assets.shapes.primitives import Part, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 
 #: how far the raised frame of a shaker front stands proud of the leaf (m)
 SHAKER_DEPTH = 0.006
 #: gap between neighbouring fronts (m)
 REVEAL = 0.003
+#: front hardware choices of kitchen units
+HANDLES = ("bar", "knob", "none")
+#: front styles of kitchen base units
+FRONT_STYLES = ("flat", "shaker")
 
 
 def shaker_frame(x_face: float, y0: float, y1: float, z0: float, z1: float,
@@ -203,3 +209,57 @@ def front_proud(handle: str, style: str = "flat") -> float:
     carcass (m)."""
     return MOVING_GAP + FRONT_T + max(HANDLE_PROUD if handle != "none" else 0.0,
                                       SHAKER_DEPTH if style == "shaker" else 0.0)
+
+
+# ------------------------------------------------------------------- units under a countertop
+def counter_params(height: tuple[float, float] = (0.86, 0.93)) -> dict[str, Param]:
+    """The parameters every unit under a countertop shares (depth, countertop height and
+    thickness, overhang, toe kick, front hardware and style), so units of a kitchen match."""
+    return {
+        "depth": Param(0.55, 0.62, doc="carcass X extent, front to wall (m)"),
+        "height": Param(*height, doc="height of the countertop's upper face (m)"),
+        "countertop_thickness": Param(0.02, 0.045, doc="countertop slab thickness (m)"),
+        "overhang": Param(0.03, 0.06, doc="how far the countertop reaches past the carcass front (m)"),
+        "toe_kick_height": Param(0.08, 0.15, doc="plinth height under the carcass (m)"),
+        "handle": Param(kind="choice", choices=HANDLES, doc="front hardware (none = push-to-open)"),
+        "front_style": Param(kind="choice", choices=FRONT_STYLES, doc="flat slab or shaker fronts"),
+    }
+
+
+def countertop(p: dict[str, Any], x0: float, x1: float, y0: float, y1: float,
+               detail: bool) -> Part:
+    """The countertop slab over x0..x1, y0..y1, its upper face at `height`; rounded edges."""
+    H, ct = p["height"], p["countertop_thickness"]
+    ext, c = (x1 - x0, y1 - y0, ct), ((x0 + x1) / 2, (y0 + y1) / 2, H - ct / 2)
+    r = p.get("edge_radius", 0.0)
+    solid = bevel_box(ext, c, r, 2) if detail and r > 1e-4 else box(ext, c)
+    return Part(solid, "countertop")
+
+
+def run_parts(p: dict[str, Any], units: list[Unit], detail: bool, prefix_units: bool,
+              open_angle: float = DOOR_OPEN, n_shelves: int = 1
+              ) -> tuple[list[Part], list[Joint], list[Surface]]:
+    """Carcasses and fronts of `units` (one run, fronts at x = depth/2) on a plinth: parts,
+    joints and interior surfaces (`n_shelves` fixed shelves behind doors). The placeholder's
+    units are one block."""
+    D, H, ct = p["depth"], p["height"], p["countertop_thickness"]
+    zk, zc = p["toe_kick_height"], H - ct
+    out, joints, surfs = [], [], []
+    for i, u in enumerate(units):
+        prefix = f"u{i}_" if prefix_units else ""
+        parts, js, ss = unit_parts(u, D, zk, zc + 0.001, 0.018, detail, prefix, p["handle"],
+                                   p["front_style"], top=False, n_shelves=n_shelves,
+                                   open_angle=open_angle)
+        out += parts
+        joints += js
+        surfs += ss
+    y0, y1 = units[0].y0, units[-1].y1
+    if not detail:  # every unit's block has the same depth and height: merge them
+        blocks = [q.solid.bounding_box() for q in out]
+        lo = [min(b[k] for b in blocks) for k in range(3)]
+        hi = [max(b[k + 3] for b in blocks) for k in range(3)]
+        out = [Part(box_between(lo, hi), "wood")]
+    out.append(Part(box_between((-D / 2, y0 + 0.01, 0.0),
+                                (D / 2 - p["toe_kick_depth"], y1 - 0.01, zk + OVERLAP)),
+                    "wood"))
+    return out, joints, surfs

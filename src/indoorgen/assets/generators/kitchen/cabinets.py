@@ -10,17 +10,22 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from indoorgen.assets.generators.kitchen._parts import Unit, unit_parts
+from indoorgen.assets.generators.kitchen._parts import (
+    HANDLES,
+    Unit,
+    counter_params,
+    countertop,
+    run_parts,
+    unit_parts,
+)
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param, Surface
+from indoorgen.assets.protocol import Param
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.moving_parts import DOOR_OPEN
-from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
 
-HANDLES = ("bar", "knob", "none")
-FRONT_STYLES = ("flat", "shaker")
 #: front layouts of the units of a run, per pattern (cycled along the run)
 PATTERNS = {
     "mixed": ("drawers", "doors", "drawer_doors"),
@@ -30,54 +35,6 @@ PATTERNS = {
 }
 #: relative width of the units of a run, scaled by `width_variation`
 WIDTH_WAVE = (0.0, 1.0, -0.6, 0.5, -1.0)
-
-
-def _counter_params(height: tuple[float, float] = (0.86, 0.93)) -> dict[str, Param]:
-    return {
-        "depth": Param(0.55, 0.62, doc="carcass X extent, front to wall (m)"),
-        "height": Param(*height, doc="height of the countertop's upper face (m)"),
-        "countertop_thickness": Param(0.02, 0.045, doc="countertop slab thickness (m)"),
-        "overhang": Param(0.03, 0.06, doc="how far the countertop reaches past the carcass front (m)"),
-        "toe_kick_height": Param(0.08, 0.15, doc="plinth height under the carcass (m)"),
-        "handle": Param(kind="choice", choices=HANDLES, doc="front hardware (none = push-to-open)"),
-        "front_style": Param(kind="choice", choices=FRONT_STYLES, doc="flat slab or shaker fronts"),
-    }
-
-
-def _countertop(p: dict[str, Any], x0: float, x1: float, y0: float, y1: float,
-                detail: bool) -> Part:
-    """The countertop slab over x0..x1, y0..y1, its upper face at `height`; rounded edges."""
-    H, ct = p["height"], p["countertop_thickness"]
-    ext, c = (x1 - x0, y1 - y0, ct), ((x0 + x1) / 2, (y0 + y1) / 2, H - ct / 2)
-    r = p.get("edge_radius", 0.0)
-    solid = bevel_box(ext, c, r, 2) if detail and r > 1e-4 else box(ext, c)
-    return Part(solid, "countertop")
-
-
-def _run_parts(p: dict[str, Any], units: list[Unit], detail: bool, prefix_units: bool,
-               open_angle: float = DOOR_OPEN) -> tuple[list[Part], list, list[Surface]]:
-    """Carcasses and fronts of `units` (one run, fronts at x = depth/2) on a plinth: parts,
-    joints and interior surfaces. The placeholder's units are one block."""
-    D, H, ct = p["depth"], p["height"], p["countertop_thickness"]
-    zk, zc = p["toe_kick_height"], H - ct
-    out, joints, surfs = [], [], []
-    for i, u in enumerate(units):
-        prefix = f"u{i}_" if prefix_units else ""
-        parts, js, ss = unit_parts(u, D, zk, zc + 0.001, 0.018, detail, prefix, p["handle"],
-                                   p["front_style"], top=False, open_angle=open_angle)
-        out += parts
-        joints += js
-        surfs += ss
-    y0, y1 = units[0].y0, units[-1].y1
-    if not detail:  # every unit's block has the same depth and height: merge them
-        blocks = [q.solid.bounding_box() for q in out]
-        lo = [min(b[k] for b in blocks) for k in range(3)]
-        hi = [max(b[k + 3] for b in blocks) for k in range(3)]
-        out = [Part(box_between(lo, hi), "wood")]
-    out.append(Part(box_between((-D / 2, y0 + 0.01, 0.0),
-                                (D / 2 - p["toe_kick_depth"], y1 - 0.01, zk + OVERLAP)),
-                    "wood"))
-    return out, joints, surfs
 
 
 @register
@@ -94,7 +51,7 @@ class KitchenBaseCabinet(PartsFactory):
     solid_bottom = True
     params = {
         "width": Param(0.3, 1.0, doc="Y extent (m)"),
-        **_counter_params(),
+        **counter_params(),
         "toe_kick_depth": Param(0.04, 0.08, doc="how far the plinth is set back (m)"),
         "layout": Param(kind="choice", choices=("doors", "drawers", "drawer_doors"),
                         doc="fronts: doors, a drawer stack, or a drawer over doors"),
@@ -111,13 +68,13 @@ class KitchenBaseCabinet(PartsFactory):
     def parts(self, p, detail):
         """The kitchen base cabinet's solids: detailed, or the blocks of its placeholder."""
         D, W = p["depth"], p["width"]
-        out, _, _ = _run_parts(p, self._units(p), detail, False)
-        out.append(_countertop(p, -D / 2, D / 2 + p["overhang"], -W / 2, W / 2, detail))
+        out, _, _ = run_parts(p, self._units(p), detail, False)
+        out.append(countertop(p, -D / 2, D / 2 + p["overhang"], -W / 2, W / 2, detail))
         return out
 
     def joints(self, p):
         """The base cabinet's joints, one per door and drawer."""
-        return _run_parts(p, self._units(p), False, False)[1]
+        return run_parts(p, self._units(p), False, False)[1]
 
     def extra_surfaces(self, p):
         """The base cabinet's surfaces besides its bounding box's: top (countertop), bottom, interior_<i>."""
@@ -125,7 +82,7 @@ class KitchenBaseCabinet(PartsFactory):
         x1 = D / 2 + p["overhang"]
         return [support_rect("top", ((x1 - D / 2) / 2, 0, H), (x1 + D / 2) / 2 - 0.02, W / 2 - 0.02),
                 bottom_rect((-kd / 2, 0, 0), (D - kd) / 2, W / 2 - 0.01),
-                *_run_parts(p, self._units(p), False, False)[2]]
+                *run_parts(p, self._units(p), False, False)[2]]
 
 
 def run_units(p: dict[str, Any]) -> list[Unit]:
@@ -170,7 +127,7 @@ class CountertopRun(PartsFactory):
     solid_bottom = True
     params = {
         **_run_params(),
-        **_counter_params(),
+        **counter_params(),
         "toe_kick_depth": Param(0.04, 0.08, doc="how far the plinth is set back (m)"),
         "backsplash_height": Param(0.0, 0.12,
                                    doc="upstand along the back of the countertop (m; < 2 cm: none)"),
@@ -181,8 +138,8 @@ class CountertopRun(PartsFactory):
         units = run_units(p)
         D, H = p["depth"], p["height"]
         y0, y1 = units[0].y0, units[-1].y1
-        out, _, _ = _run_parts(p, units, detail, True)
-        out.append(_countertop(p, -D / 2, D / 2 + p["overhang"], y0, y1, detail))
+        out, _, _ = run_parts(p, units, detail, True)
+        out.append(countertop(p, -D / 2, D / 2 + p["overhang"], y0, y1, detail))
         bh = p["backsplash_height"]
         if bh >= 0.02:
             out.append(Part(box_between((-D / 2, y0, H - OVERLAP), (-D / 2 + 0.015, y1, H + bh)),
@@ -191,7 +148,7 @@ class CountertopRun(PartsFactory):
 
     def joints(self, p):
         """The run's joints, one per door and drawer of each unit."""
-        return _run_parts(p, run_units(p), False, True)[1]
+        return run_parts(p, run_units(p), False, True)[1]
 
     def extra_surfaces(self, p):
         """The run's surfaces besides its bounding box's: top (countertop), bottom, u<i>_interior_<j>."""
@@ -202,7 +159,7 @@ class CountertopRun(PartsFactory):
         x1 = D / 2 + p["overhang"]
         return [support_rect("top", ((xb + x1) / 2, 0, H), (x1 - xb) / 2 - 0.02, (y1 - y0) / 2 - 0.02),
                 bottom_rect((-kd / 2, 0, 0), (D - kd) / 2, (y1 - y0) / 2 - 0.01),
-                *_run_parts(p, units, False, True)[2]]
+                *run_parts(p, units, False, True)[2]]
 
 
 @register
@@ -219,7 +176,7 @@ class KitchenIsland(PartsFactory):
     slots = ["wood", "front", "metal", "countertop"]
     params = {
         **_run_params(),
-        **_counter_params((0.88, 0.94)),
+        **counter_params((0.88, 0.94)),
         "seating_overhang": Param(0.2, 0.4, doc="countertop overhang on the seating side (m)"),
         "side_overhang": Param(0.0, 0.15, doc="countertop overhang past the end units (m; "
                                               "not with waterfall ends)"),
@@ -242,8 +199,8 @@ class KitchenIsland(PartsFactory):
         units, x0, x1, y0, y1 = self._geometry(p)
         D, H, ct = p["depth"], p["height"], p["countertop_thickness"]
         zc = H - ct
-        out, _, _ = _run_parts(p, units, detail, True)
-        out.append(_countertop(p, x0, x1, y0, y1, detail))
+        out, _, _ = run_parts(p, units, detail, True)
+        out.append(countertop(p, x0, x1, y0, y1, detail))
         # the finished back panel on the seating side, floor to countertop
         out.append(Part(box_between((-D / 2 - 0.018, units[0].y0, 0.0),
                                     (-D / 2 + 0.001, units[-1].y1, zc + 0.001)),
@@ -265,7 +222,7 @@ class KitchenIsland(PartsFactory):
         # doors of the end units must stop at 90 degrees against a waterfall slab
         """The island's joints, one per door and drawer (90 degrees at most beside waterfall ends)."""
         angle = math.radians(90) if p["end_style"] == "waterfall" else DOOR_OPEN
-        return _run_parts(dict(p, toe_kick_depth=0.06), run_units(p), False, True, angle)[1]
+        return run_parts(dict(p, toe_kick_depth=0.06), run_units(p), False, True, angle)[1]
 
     def extra_surfaces(self, p):
         """The island's surfaces besides its bounding box's: top (countertop), u<i>_interior_<j>."""
@@ -273,7 +230,7 @@ class KitchenIsland(PartsFactory):
         H = p["height"]
         return [support_rect("top", ((x0 + x1) / 2, (y0 + y1) / 2, H), (x1 - x0) / 2 - 0.02,
                              (y1 - y0) / 2 - 0.02),
-                *_run_parts(dict(p, toe_kick_depth=0.06), units, False, True)[2]]
+                *run_parts(dict(p, toe_kick_depth=0.06), units, False, True)[2]]
 
 
 @register

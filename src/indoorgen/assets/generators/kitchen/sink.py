@@ -1,5 +1,5 @@
-"""The kitchen sink: a countertop section with one or two steel basins and a faucet. Front faces
-+X.
+"""The kitchen sink: a sink base unit (a base cabinet's carcass, plinth and doors) under a
+countertop with one or two steel basins hollowed into it and a faucet behind. Front faces +X.
 """
 from __future__ import annotations
 
@@ -8,12 +8,19 @@ from typing import Any
 import manifold3d as m3d
 import shapely.geometry as sg
 
+from indoorgen.assets.generators.kitchen._parts import Unit, counter_params, countertop, run_parts
 from indoorgen.assets.parts_factory import PartsFactory
-from indoorgen.assets.protocol import Param
+from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, lathe, rod, torus
-from indoorgen.assets.shapes.surfaces import support_polygon
+from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon
 from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
+
+#: carcass board thickness of the sink base (that of the base cabinets' units)
+BOARD = 0.018
+#: how far the plinth of the sink base is set back (m)
+TOE_KICK_DEPTH = 0.06
 
 
 def rounded_rect_prism(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float,
@@ -29,23 +36,24 @@ def rounded_rect_prism(x0: float, x1: float, y0: float, y1: float, z0: float, z1
 
 @register
 class KitchenSink(PartsFactory):
-    """A kitchen sink: a countertop section with one or two basins (undermounted below the
-    cut-out, or dropped in with a rim on the countertop) hollowed out of a rounded steel
-    block, drains, and a faucet behind the basin (gooseneck or angular spout; single lever or
-    two cross handles). The countertop around the basin is the `top` support surface."""
+    """A kitchen sink base unit: a base cabinet's carcass (no top board, no shelf: the basins
+    hang there) on a recessed plinth with a pair of overlay doors, under a countertop at base
+    cabinet height with one or two basins (undermounted below the cut-out, or dropped in with a
+    rim on the countertop) hollowed out of rounded steel blocks, drains, and a faucet behind the
+    basin (gooseneck or angular spout; single lever or two cross handles). The countertop
+    around the basin is the `top` support surface, the carcass bottom `interior_0`."""
 
     name = "kitchen_sink"
     tags = frozenset({S.Object, S.KitchenSink, S.Countertop})
-    size_class = "medium"
-    slots = ["countertop", "metal"]
+    size_class = "large"
+    slots = ["wood", "front", "metal", "countertop"]
+    solid_bottom = True
     params = {
-        "width": Param(0.6, 1.2, doc="countertop section Y extent (m)"),
-        "depth": Param(0.55, 0.65, doc="countertop section X extent (m)"),
-        "countertop_thickness": Param(0.02, 0.04, doc="countertop slab thickness (m)"),
+        "width": Param(0.6, 1.2, doc="Y extent (m)"),
+        **counter_params(),
         "bowls": Param(kind="choice", choices=("single", "double"), doc="one or two basins"),
         "bowl_depth": Param(0.16, 0.24, doc="basin depth below the countertop (m)"),
-        "bowl_width_frac": Param(0.6, 0.85, doc="basin Y extent / section width"),
-        "corner_radius": Param(0.01, 0.05, doc="rounding of the basin's corners (m)"),
+        "bowl_width_frac": Param(0.7, 1.0, doc="basin Y extent / the most the carcass holds"),
         "mount": Param(kind="choice", choices=("undermount", "drop_in"),
                        doc="basin under the cut-out or dropped in with a rim"),
         "faucet": Param(kind="choice", choices=("gooseneck", "angular"), doc="spout shape"),
@@ -56,13 +64,20 @@ class KitchenSink(PartsFactory):
 
     WALL = 0.008
     RIM = 0.03
+    CORNER = 0.025
+
+    def _cabinet(self, p) -> tuple[dict[str, Any], list[Unit]]:
+        """The params `run_parts` reads and the one doors-only unit."""
+        W = p["width"]
+        return dict(p, toe_kick_depth=TOE_KICK_DEPTH), [Unit(-W / 2, W / 2, "doors")]
 
     def _sink_layout(self, p) -> dict[str, Any]:
-        W, D, ct = p["width"], p["depth"], p["countertop_thickness"]
-        zb = p["bowl_depth"]
-        zt = zb + ct
-        bw = W * p["bowl_width_frac"]
-        bx0, bx1 = -D / 2 + 0.14, D / 2 - 0.06
+        W, D, H = p["width"], p["depth"], p["height"]
+        zb = H - p["countertop_thickness"]
+        # the basin block and its flange stay inside the carcass, clear of the doors
+        room = W - 2 * (BOARD + 0.005 + self.WALL + self.RIM)
+        bw = room * p["bowl_width_frac"]
+        bx0, bx1 = -D / 2 + 0.14, D / 2 - 0.02 - self.WALL - self.RIM
         if p["bowls"] == "double":
             gap = 0.04
             wa = (bw - gap) * 0.55
@@ -70,7 +85,8 @@ class KitchenSink(PartsFactory):
         else:
             cav = [(-bw / 2, bw / 2)]
         xf = (-D / 2 + bx0) / 2
-        return dict(zb=zb, zt=zt, bw=bw, bx0=bx0, bx1=bx1, cav=cav, xf=xf, yf=0.0)
+        return dict(z0=zb - p["bowl_depth"], zb=zb, zt=H, bw=bw, bx0=bx0, bx1=bx1, cav=cav,
+                    xf=xf, yf=0.0)
 
     def _faucet(self, p, L, solids: bool = True) -> tuple[list[m3d.Manifold], tuple[tuple, tuple]]:
         """The faucet solids (none unless `solids`: placeholders only need the box) and their
@@ -122,62 +138,70 @@ class KitchenSink(PartsFactory):
         return out, (tuple(lo), tuple(hi))
 
     def parts(self, p, detail):
-        """The kitchen sink's solids: detailed, or the blocks of its placeholder."""
+        """The sink base's solids: detailed, or the blocks of its placeholder."""
         W, D = p["width"], p["depth"]
+        q, units = self._cabinet(p)
         L = self._sink_layout(p)
-        zb, zt, bx0, bx1 = L["zb"], L["zt"], L["bx0"], L["bx1"]
-        w, rc = self.WALL, p["corner_radius"]
+        z0, zb, zt, bx0, bx1 = L["z0"], L["zb"], L["zt"], L["bx0"], L["bx1"]
+        w, rc, R = self.WALL, self.CORNER, self.RIM
         drop = p["mount"] == "drop_in"
         # outer block of the basin, its rim (drop-in) and the countertop's cut-out
         oy0, oy1 = L["cav"][0][0] - w, L["cav"][-1][1] + w
         ox0, ox1 = bx0 - w, bx1 + w
+        out, _, _ = run_parts(q, units, detail, False, n_shelves=0)
+        slab = countertop(p, -D / 2, D / 2 + p["overhang"], -W / 2, W / 2, detail)
         faucet, (flo, fhi) = self._faucet(p, L, detail)
-        if not detail:
-            out = [Part(box_between((-D / 2, -W / 2, zb), (D / 2, W / 2, zt)), "countertop"),
-                   Part(box_between((ox0 - (0 if drop else self.RIM), oy0 - (0 if drop else self.RIM), 0.0),
-                                    (ox1 + (0 if drop else self.RIM), oy1 + (0 if drop else self.RIM),
-                                     zb + 0.001)),
-                        "metal"),
-                   Part(box_between(flo, fhi), "metal")]
+        if not detail:  # the basin hangs inside the carcass block
+            out += [slab, Part(box_between(flo, fhi), "metal")]
             if drop:
-                out.append(Part(box_between((ox0 - self.RIM, oy0 - self.RIM, zt - 0.001),
-                                            (ox1 + self.RIM, oy1 + self.RIM, zt + 0.006)), "metal"))
+                out.append(Part(box_between((ox0 - R, oy0 - R, zt - 0.001),
+                                            (ox1 + R, oy1 + R, zt + 0.006)), "metal"))
             return out
-        cavities = [rounded_rect_prism(bx0, bx1, ya, yb, w, zt + 0.02, rc) for ya, yb in L["cav"]]
+        cavities = [rounded_rect_prism(bx0, bx1, ya, yb, z0 + w, zt + 0.02, rc) for ya, yb in L["cav"]]
         if drop:
-            block = rounded_rect_prism(ox0, ox1, oy0, oy1, 0.0, zt - 0.001, rc + w)
-            rim = rounded_rect_prism(ox0 - self.RIM, ox1 + self.RIM, oy0 - self.RIM, oy1 + self.RIM,
-                                     zt - 0.001, zt + 0.006, rc + w + self.RIM)
+            block = rounded_rect_prism(ox0, ox1, oy0, oy1, z0, zt - 0.001, rc + w)
+            rim = rounded_rect_prism(ox0 - R, ox1 + R, oy0 - R, oy1 + R, zt - 0.001, zt + 0.006,
+                                     rc + w + R)
             hole = rounded_rect_prism(ox0 + 0.001, ox1 - 0.001, oy0 + 0.001, oy1 - 0.001, zb - 0.01,
                                       zt + 0.01, rc + w)
             basin = m3d.Manifold.batch_boolean([block, rim], m3d.OpType.Add)
         else:
-            R = self.RIM
-            basin = rounded_rect_prism(ox0 - R, ox1 + R, oy0 - R, oy1 + R, 0.0, zb + 0.001, rc + w + R)
+            basin = rounded_rect_prism(ox0 - R, ox1 + R, oy0 - R, oy1 + R, z0, zb + 0.001, rc + w + R)
             hole = m3d.Manifold.batch_boolean(
                 [rounded_rect_prism(bx0, bx1, ya, yb, zb - 0.01, zt + 0.01, rc) for ya, yb in L["cav"]],
                 m3d.OpType.Add)
         basin = m3d.Manifold.batch_boolean([basin] + cavities, m3d.OpType.Subtract)
-        slab = box_between((-D / 2, -W / 2, zb), (D / 2, W / 2, zt)) - hole
-        out = [Part(slab, "countertop"), Part(basin, "metal")]
+        out += [Part(slab.solid - hole, "countertop"), Part(basin, "metal")]
         for ya, yb in L["cav"]:  # drain: a flange ring with a recessed strainer
             c = ((bx0 + bx1) / 2, (ya + yb) / 2)
             drain = lathe([(0.0, w - 0.001), (0.045, w - 0.001), (0.045, w + 0.002), (0.035, w + 0.002),
-                           (0.03, w - 0.0005), (0.0, w - 0.0005)], 32).translate((c[0], c[1], 0.0))
+                           (0.03, w - 0.0005), (0.0, w - 0.0005)], 32).translate((c[0], c[1], z0))
             out.append(Part(drain, "metal"))
         out += [Part(f, "metal") for f in faucet]
         return out
 
+    def joints(self, p):
+        """The sink base's joints, one per door."""
+        q, units = self._cabinet(p)
+        return run_parts(q, units, False, False, n_shelves=0)[1]
+
     def extra_surfaces(self, p):
-        """The kitchen sink's surfaces besides its bounding box's: top."""
-        W, D = p["width"], p["depth"]
+        """The sink base's surfaces besides its bounding box's: top (the countertop around the
+        basin and faucet), bottom, back (the carcass and countertop, not the air beside the
+        faucet), interior_0 (the carcass bottom under the basin)."""
+        W, D, H = p["width"], p["depth"], p["height"]
+        q, units = self._cabinet(p)
         L = self._sink_layout(p)
         w = self.WALL
         ox0, ox1 = L["bx0"] - w, L["bx1"] + w
         oy0, oy1 = L["cav"][0][0] - w, L["cav"][-1][1] + w
         R = self.RIM + 0.005 if p["mount"] == "drop_in" else 0.005
-        top = sg.box(-D / 2 + 0.01, -W / 2 + 0.01, D / 2 - 0.01, W / 2 - 0.01)
+        top = sg.box(-D / 2 + 0.01, -W / 2 + 0.02, D / 2 + p["overhang"] - 0.02, W / 2 - 0.02)
         top = top.difference(sg.box(ox0 - R, oy0 - R, ox1 + R, oy1 + R))
         _, (flo, fhi) = self._faucet(p, L, False)
         top = top.difference(sg.box(flo[0] - 0.005, flo[1] - 0.005, fhi[0] + 0.005, fhi[1] + 0.005))
-        return [support_polygon("top", (0, 0, L["zt"]), top)]
+        kd = TOE_KICK_DEPTH
+        return [support_polygon("top", (0, 0, L["zt"]), top),
+                bottom_rect((-kd / 2, 0, 0), (D - kd) / 2, W / 2 - 0.01),
+                Surface.rect("back", Subpart.Back, (-D / 2, 0, H / 2), (-1, 0, 0), (0, 1, 0), W / 2, H / 2),
+                *run_parts(q, units, False, False, n_shelves=0)[2]]
