@@ -102,3 +102,15 @@ def test_measure_functions_equal_the_set_methods():
     assert value(v, f.area()) == value(v, area(f))
     assert value(v, a.distance(b)) == value(v, distance(a, b))
     assert value(v, a.min_distance(b)) == value(v, min_distance(a, b))
+
+
+def test_center_distance_is_zero_only_when_centred():
+    """Outline distance is 0 for any overlap; centre distance says how far off-centre it is."""
+    v = FakeView()
+    v.add("table", {S.Furniture}, (2.0, 1.5, 0.375), extents=(1.8, 0.9, 0.75))
+    v.add("light", {S.Lighting}, (2.7, 1.5, 2.3), extents=(0.3, 0.3, 0.4))
+    light, table = scene()[S.Lighting], scene()[S.Furniture]
+    assert value(v, light.distance(table)) == pytest.approx(0.0)
+    assert value(v, light.center_distance(table)) == pytest.approx(0.7)
+    v.add("light2", {S.Lighting}, (2.0, 1.5, 2.3), extents=(0.3, 0.3, 0.4))
+    assert value(v, light.center_distance(table)) == pytest.approx(0.0)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from indoorgen.quality.rules import (
     accessory_heights,
+    hood_over_range,
     kitchen_has_sink,
     reach,
     room_has_light,
@@ -68,3 +69,18 @@ def test_laptop_on_a_wardrobe_is_out_of_reach():
     checks = reach(context(sc))
     assert [(c.objects[1], c.ok) for c in checks] == [(w, False), (t, True)]
     assert abs(checks[0].value - top) < 1e-6
+
+
+def test_hood_offset_is_measured_along_the_range_not_front_to_back():
+    """A wall hood is shallower than the range below it: its centre sits behind the range's, which
+    is still centred. Sliding it sideways along the wall is what breaks the rule."""
+    sc = new_scene("kitchen")
+    depth = size("range")[0]
+    put(sc, "range", 2.0, 0.05 + depth / 2, FACE_UP, name="range")
+    hood_y = size("range_hood")[0] / 2
+    hood = put(sc, "range_hood", 2.0, hood_y, FACE_UP, z=1.6, parent="wall_0", name="hood")
+    (c,) = hood_over_range(context(sc))
+    assert c.objects == (hood, "range") and c.value < 1e-6
+    sc.objects[hood].pose = type(sc.objects[hood].pose)((2.4, hood_y, 1.6), FACE_UP)
+    (c,) = hood_over_range(context(sc))
+    assert abs(c.value - 0.4) < 1e-6 and not c.ok

@@ -19,7 +19,7 @@ from indoorgen.constraints.logic import Constraint, ForAll
 from indoorgen.constraints.node import Env, EvalContext, Node, Tag
 from indoorgen.constraints.relations import Relation
 from indoorgen.constraints.scalars import Count, Reduce, Scalar, ScalarLike, as_scalar
-from indoorgen.constraints.terms import Area, Distance, MinDistance, Volume
+from indoorgen.constraints.terms import Area, CenterDistance, Distance, MinDistance, Volume
 from indoorgen.errors import ConstraintError
 from indoorgen.model.tags import Semantics
 
@@ -97,6 +97,10 @@ class ObjSet(Node[frozenset[str]]):
     def min_distance(self, other: ObjSet) -> Scalar:
         """Smallest 3D mesh-to-mesh distance between the two sets."""
         return MinDistance(self, other)
+
+    def center_distance(self, other: ObjSet) -> Scalar:
+        """Smallest plan distance between the two sets' members' centres ("centred over")."""
+        return CenterDistance(self, other)
 
     # quantifiers
     def all(self, fn: Callable[[ObjSet], Constraint]) -> Constraint:

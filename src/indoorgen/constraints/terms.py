@@ -70,6 +70,23 @@ class Distance(GeometricTerm):
         return best if best < math.inf else 0.0
 
 
+class CenterDistance(GeometricTerm):
+    """Smallest plan distance between the bounding-box centres of two sets' members: "centred
+    over" (a hood over a range, a light over a table), where outline distance is 0 for any
+    overlap."""
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The least centre-to-centre plan distance over pairs of distinct members (0 if none)."""
+        a, b = self.members(ev, env)
+        best = math.inf
+        for x in sorted(a):
+            cx = ev.view.center(x)[:2]
+            for y in sorted(b):
+                if y != x:
+                    best = min(best, float(np.linalg.norm(ev.view.center(y)[:2] - cx)))
+        return best if best < math.inf else 0.0
+
+
 class MinDistance(GeometricTerm):
     """Smallest 3D mesh-to-mesh distance between two sets."""
 

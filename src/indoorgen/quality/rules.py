@@ -122,8 +122,10 @@ def cooking_height(p: Placed) -> float:
 
 @rule("hood_over_range")
 def hood_over_range(ctx: Context) -> list[Check]:
-    """A hood is centred over a range (plan offset <= 0.15 m) with its bottom 0.6-0.9 m above the
-    cooking surface; value: the offset, detail: the height. A hood with no range fails."""
+    """A hood is centred over a range (its centre within 0.15 m of the range's axis, measured along
+    the range's width: a wall hood is shallower than the range, so front-to-back offset says
+    nothing) with its bottom 0.6-0.9 m above the cooking surface; value: the offset, detail: the
+    height. A hood with no range fails."""
     out = []
     for h in ctx.with_tags(S.RangeHood):
         ranges = ctx.in_room(h.obj.room, *COOKING)
@@ -133,7 +135,7 @@ def hood_over_range(ctx: Context) -> list[Check]:
         if r is None:
             out.append(Check(h.obj.room, (h.name,), None, "a range below", False))
             continue
-        offset = float(np.linalg.norm(np.asarray(r.footprint.centroid.coords[0]) - hc))
+        offset = float(abs(r.local_point(hc)[1] - (r.lo[1] + r.hi[1]) / 2))
         height = h.bottom - cooking_height(r)
         out.append(Check(h.obj.room, (h.name, r.name), offset,
                          {"offset_max": HOOD_OFFSET, "height": list(HOOD_HEIGHT)},

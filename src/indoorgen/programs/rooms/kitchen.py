@@ -65,8 +65,8 @@ def kitchen(room: ObjSet) -> Problem:
             "island clear of the runs": islands.mean(
                 lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
             "stools at the island": stools.count().maximize(0.3),
-            "a hood over the cooker": hoods.mean(
-                lambda h: h.distance(cookers).hinge(0.0, 0.05)).minimize(3),
+            "a hood centred over the cooker": hoods.mean(
+                lambda h: h.center_distance(cookers).hinge(0.0, 0.1)).minimize(3),
             "hood at head height": hoods.mean(lambda h: height(h).hinge(1.7, 2.0)).minimize(2),
             "extraction": hoods.count().maximize(0.5),
             "wall cabinets over counters": wall_cabinets.mean(
