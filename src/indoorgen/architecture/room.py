@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import logging
 import math
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import manifold3d
@@ -285,8 +284,3 @@ def _build_wall(room: Room, i: int, outer: np.ndarray) -> trimesh.Trimesh:
     if solid.status() != manifold3d.Error.NoError:
         raise InvalidGeometryError(f"room {room.name!r} wall {i}: boolean failed ({solid.status()})")
     return to_trimesh(solid)
-
-
-def build_rooms(rooms: Iterable[Room]) -> dict[str, RoomGeometry]:
-    """`build_room` for each room, keyed by room name."""
-    return {r.name: build_room(r) for r in rooms}

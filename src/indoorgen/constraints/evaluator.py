@@ -182,11 +182,6 @@ class Evaluator:
         """Evaluate any node of the program (e.g. a set expression, for bound reasoning)."""
         return self.get(node, env or {})
 
-    @property
-    def n_entries(self) -> int:
-        """How many (node, binding) entries the cache holds."""
-        return len(self._entries)
-
     # -- internals -----------------------------------------------------------------------------
     def _result(self, vals: dict[RootKey, float]) -> Result:
         viol = {n: float(vals[("c", n)]) for n in self.problem.constraints if ("c", n) in vals}

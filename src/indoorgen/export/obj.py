@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
-from indoorgen.export.meshes import Piece, asset_slot_pieces, joint_frames, mesh_piece
+from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece
 from indoorgen.export.textures import TextureStore
 
 log = logging.getLogger(__name__)
@@ -221,11 +221,6 @@ class MeshFiles:
                               f"{MESH_DIR}/architecture")
         self._arch[el.path] = (vis, col)
         return vis, col
-
-
-def link_frames(bundle: ExportBundle, name: str) -> dict[str, np.ndarray]:
-    """Frame origin of each link of object `name` in its asset frame."""
-    return joint_frames(bundle.assets[name])
 
 
 def write_obj_format(bundle: ExportBundle, root: Path, textures: TextureStore) -> list[Path]:

@@ -12,7 +12,6 @@ every object fixed to it at its pose (link names prefixed `<object>__`). All pat
 from __future__ import annotations
 
 import logging
-import math
 import os
 from pathlib import Path
 from xml.etree import ElementTree as ET
@@ -156,8 +155,3 @@ def write_urdf(bundle: ExportBundle, root: Path, files: MeshFiles) -> list[Path]
     _write(scene, root / "scene.urdf")
     written.insert(0, root / "scene.urdf")
     return written
-
-
-def yaw_rpy(yaw: float) -> tuple[float, float, float]:
-    """URDF roll-pitch-yaw of a rotation about +Z."""
-    return (0.0, 0.0, math.remainder(yaw, 2 * math.pi))

@@ -54,11 +54,6 @@ class Grid:
         """Cells only partly inside the outline (cut by a bevel)."""
         return self.inside & ~self.full
 
-    def cell_box(self, iy: int, ix: int) -> sg.Polygon:
-        """The square of cell (iy, ix) in world coordinates."""
-        x, y = self.origin + np.array([ix, iy]) * self.size
-        return sg.box(x, y, x + self.size, y + self.size)
-
     def to_world(self, cx, cy) -> np.ndarray:
         """Grid-corner coordinates (in cells) to world (x, y), shape (..., 2)."""
         if isinstance(cx, (int, float)) and isinstance(cy, (int, float)):
@@ -69,15 +64,6 @@ class Grid:
     def xy(self, cx: float, cy: float) -> tuple[float, float]:
         """One grid-corner coordinate to world, as plain floats."""
         return (float(self.origin[0]) + cx * self.size, float(self.origin[1]) + cy * self.size)
-
-    def cells_of(self, poly: sg.Polygon) -> np.ndarray:
-        """Boolean mask of the cells whose interior overlaps `poly` by more than 1e-6 m^2."""
-        ny, nx = self.shape
-        ix, iy = np.meshgrid(np.arange(nx), np.arange(ny))
-        x = self.origin[0] + ix * self.size
-        y = self.origin[1] + iy * self.size
-        boxes = shapely.box(x, y, x + self.size, y + self.size)
-        return shapely.area(shapely.intersection(boxes, poly)) > 1e-6
 
 
 def make_grid(contour: sg.Polygon, frame: tuple[np.ndarray, tuple[int, int]] | None = None,
@@ -247,13 +233,6 @@ def runs(labels: np.ndarray, full: np.ndarray) -> list[Run]:
                                   cd.tolist(), strict=False):
             out.append(Run(axis, li, si, ei, ci // 100003 - 1, ci % 100003 - 1))
     return out
-
-
-def run_segment(grid: Grid, run: Run) -> tuple[np.ndarray, np.ndarray]:
-    """World end points of a run."""
-    if run.axis == 0:
-        return grid.to_world(run.start, run.line), grid.to_world(run.end, run.line)
-    return grid.to_world(run.line, run.start), grid.to_world(run.line, run.end)
 
 
 # --------------------------------------------------------------------------------------------

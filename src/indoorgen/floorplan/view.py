@@ -51,11 +51,6 @@ def value_runs(*codes: np.ndarray) -> list[tuple[int, int, int, int, int]]:
                     which.tolist(), strict=False))
 
 
-def all_runs(x: np.ndarray) -> list[tuple[int, int, int]]:
-    """Maximal runs of True along axis 1 of a 2D boolean array: (length, row, start)."""
-    return [r[:3] for r in value_runs(np.where(x, 0, OUTSIDE))]
-
-
 def _hull_area(pts: list[tuple[float, float]]) -> float:
     """Area of the convex hull of a few points (monotone chain)."""
     p = sorted(set(pts))
@@ -504,8 +499,3 @@ class GridPlan(RoomView):
             w = d.get("walls")
             if w is not None and idx.get(self.index[name][0], set()) & w.keys():
                 del d["walls"]
-
-    # -- snapshots ------------------------------------------------------------------------------
-    def room_polygons(self, level: int) -> dict[str, sg.Polygon]:
-        """The outline of every room on storey `level`."""
-        return {n: self.polygon(n) for n in self.names[level]}

@@ -249,11 +249,3 @@ def cover(centres: np.ndarray, free: np.ndarray, radius: float, cell: float) -> 
         return np.zeros_like(free)
     dist = ndimage.distance_transform_edt(~centres) * cell
     return np.asarray((dist <= radius + 1e-9) & free)
-
-
-def elevations(rooms: Mapping[str, Room]) -> dict[int, float]:
-    """Each storey's floor elevation, by level, from its rooms."""
-    out: dict[int, float] = {}
-    for r in rooms.values():
-        out.setdefault(r.storey, r.elevation)
-    return dict(sorted(out.items()))

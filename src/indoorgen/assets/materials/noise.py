@@ -363,13 +363,6 @@ def worley(res: int, n: int, rng: np.random.Generator, jitter: float = 0.9) -> C
     return Cells(np.sqrt(f1), np.sqrt(f2), cell, n)
 
 
-def per_cell(ids: np.ndarray, count: int, rng: np.random.Generator,
-             k: int | None = None) -> np.ndarray:
-    """A uniform random value in [0, 1) per id (k values per id if k is given), looked up."""
-    table = rng.random((count,) if k is None else (count, k)).astype(F32)
-    return table[ids]
-
-
 # --------------------------------------------------------------------------- layouts
 
 @dataclass
