@@ -28,16 +28,18 @@ import trimesh
 from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
+from indoorgen.assets.protocol import Asset
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst, parse_relation
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
 from indoorgen.model.boxes import overlapping_pairs
-from indoorgen.model.scene import Scene
+from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Semantics
 from indoorgen.programs import ROOM_PROGRAMS
 from indoorgen.quality.layout import quality_report
 from indoorgen.quality.navigation import navigation_report
+from indoorgen.quality.occupancy import band_outlines
 from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
@@ -126,8 +128,7 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     blocked = []
     for rn, g in rooms.items():
         floor_z = float(getattr(g, "elevation", 0.0))
-        footprints = {n: _footprint_below(scene.objects[n], assets[n], floor_z, DOOR_ZONE_TOP)
-                      for n in meshes}
+        footprints = {n: _footprint_below(scene.objects[n], assets[n], floor_z) for n in meshes}
         for k, zone in enumerate(g.door_zones):
             for n, fp in footprints.items():
                 if fp is not None and fp.intersection(zone).area > 1e-6:
@@ -163,14 +164,11 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
             "quality_passed": quality["passed"], "quality": quality, "navigation": navigation}
 
 
-def _footprint_below(obj, asset, floor_z: float, top: float):
-    """Plan-view footprint (world) of the parts of `asset` that are between a floor at height
-    `floor_z` and `top` above it, as the union of its convex pieces' outlines; None if none."""
-    outlines = []
-    for _, piece in asset.collision:
-        pts = obj.pose.apply(piece.vertices)
-        if pts[:, 2].min() < floor_z + top and pts[:, 2].max() > floor_z - 0.05:
-            outlines.append(sg.MultiPoint(pts[:, :2]).convex_hull)
+def _footprint_below(obj: SceneObject, asset: Asset, floor_z: float) -> Any:
+    """Plan-view footprint (world) of the parts of `asset` up to `DOOR_ZONE_TOP` above a floor at
+    `floor_z`: the union of its convex pieces cut to that band; None if none reach it."""
+    outlines = band_outlines([m for _, m in asset.collision], obj.pose.matrix(), floor_z,
+                             (-0.05, DOOR_ZONE_TOP))
     return shapely.union_all(outlines) if outlines else None
 
 

@@ -34,9 +34,8 @@ class Pose:
 
     def matrix(self) -> np.ndarray:
         """4x4 homogeneous transform from local to world."""
-        c, s = math.cos(self.yaw), math.sin(self.yaw)
         m = np.eye(4)
-        m[:2, :2] = [[c, -s], [s, c]]
+        m[:3, :3] = yaw_matrix(self.yaw)
         m[:3, 3] = self.position
         return m
 
