@@ -7,7 +7,6 @@ language's side, so the language never imports the evaluator that runs it.
 """
 from __future__ import annotations
 
-import itertools
 from collections.abc import Iterable
 from typing import Any, Generic, Protocol, TypeVar
 
@@ -24,8 +23,6 @@ Tag = Semantics | str
 Env = dict[int, str]
 
 T = TypeVar("T")
-
-_ids = itertools.count()
 
 
 class ObjectView(Protocol):
@@ -106,7 +103,9 @@ class Node(Generic[T]):
     children: tuple[Node[Any], ...] = ()
 
     def __init__(self, *children: Node[Any]):
-        self.uid = next(_ids)
+        #: identity of this node while it lives (a program keeps its nodes alive), the key of
+        #: evaluator caches and loop bindings; no process-wide counter needed
+        self.uid = id(self)
         self.children = tuple(children)
 
     __hash__ = object.__hash__
