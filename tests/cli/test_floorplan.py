@@ -24,8 +24,8 @@ def test_floorplan_writes_every_output(tmp_path):
             "--out", str(out))
     assert r.returncode == 0, r.stderr
     assert "objective" in r.stdout
-    assert sorted(p.name for p in out.iterdir()) == ["architecture.usda", "floorplan.json",
-                                                     "plan.png"]
+    assert sorted(p.name for p in out.iterdir()) == [".indoorgen-outputs.json", "architecture.usda",
+                                                     "floorplan.json", "plan.png"]
     plan = json.loads((out / "floorplan.json").read_text())
     assert len(plan["storeys"]) == 2 and len(plan["stairs"]) == 1
     types = [r["type"] for s in plan["storeys"] for r in s["rooms"]]

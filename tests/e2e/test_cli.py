@@ -21,8 +21,8 @@ def test_generate_writes_every_output(tmp_path):
     # the default formats: USD, URDF (per object + whole scene) and MJCF, with their meshes
     # and baked textures
     assert sorted(p.name for p in out.iterdir()) == [
-        "meshes", "plan.png", "report.json", "scene.json", "scene.urdf", "scene.usdc",
-        "scene.xml", "textures", "urdf"]
+        ".indoorgen-outputs.json", "meshes", "plan.png", "report.json", "scene.json",
+        "scene.urdf", "scene.usdc", "scene.xml", "textures", "urdf"]
     scene = json.loads((out / "scene.json").read_text())
     report = json.loads((out / "report.json").read_text())
     assert len(scene["objects"]) == report["objects"] > 10
@@ -117,6 +117,25 @@ def test_bad_input_one_line_exit_2_no_output(tmp_path, args, words):
     assert words in lines[0]
     assert not (tmp_path / "out").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
+
+
+def test_generate_never_replaces_the_users_files(tmp_path):
+    """A directory holding the user's own scene.json is refused before any work, in one line;
+    a scene directory the user added notes to keeps them when regenerated."""
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "scene.json").write_text("the user's")
+    r = run("generate", "--seed", "0", "--room", "bedroom", "--out", str(mine))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "indoorgen did not write" in r.stderr
+    assert (mine / "scene.json").read_text() == "the user's"
+    out = tmp_path / "scene"
+    args = ("generate", "--seed", "0", "--room", "bedroom", "-q", "--formats", "mjcf", "--out", str(out))
+    assert run(*args).returncode == 0
+    (out / "notes.txt").write_text("mine")
+    assert run(*args).returncode == 0
+    assert (out / "notes.txt").read_text() == "mine"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine", "scene"]
 
 
 def test_nav_image_and_navigation_report(tmp_path):

@@ -10,6 +10,7 @@ from indoorgen.export import formats, write_formats
 from indoorgen.export.bundle import bundle_from_scene
 from indoorgen.export.scene_files import SceneFileError, export_scene, read_scene
 from indoorgen.model.scene import Scene
+from indoorgen.outputs import RECORD
 from support.cli import run
 
 
@@ -20,7 +21,7 @@ def test_export_reexports_a_saved_scene(exported, tmp_path):
     (src / "scene.json").write_text(bundle.scene.dumps())
     out, timings = export_scene(src / "scene.json", tmp_path / "again", "mjcf,glb",
                                 texture_resolution=32)
-    assert sorted(p.name for p in out.iterdir()) == ["meshes", "scene.glb", "scene.json",
+    assert sorted(p.name for p in out.iterdir()) == [RECORD, "meshes", "scene.glb", "scene.json",
                                                      "scene.xml", "textures"]
     # same objects, same materials (deterministic from each object's seed)
     text = (out / "scene.xml").read_text()
@@ -29,6 +30,25 @@ def test_export_reexports_a_saved_scene(exported, tmp_path):
     again = bundle_from_scene(Scene.from_json(json.loads((out / "scene.json").read_text())))
     assert again.materials == bundle.materials
     assert {"assets", "mjcf", "glb"} <= set(timings)
+
+
+def test_export_into_the_scene_directory_keeps_what_is_there(exported, tmp_path):
+    """Exporting one more format beside a scene keeps its other formats and the user's files."""
+    bundle, _, _ = exported["dining_room"]
+    d = tmp_path / "scene"
+    export_scene_dir = export_scene(_saved(bundle, tmp_path), d, "mjcf", texture_resolution=16)[0]
+    (d / "notes.txt").write_text("mine")
+    export_scene(d, None, "glb", texture_resolution=16)
+    names = {p.name for p in export_scene_dir.iterdir()}
+    assert {"scene.xml", "scene.glb", "scene.json", "notes.txt", "meshes"} <= names
+    assert (d / "notes.txt").read_text() == "mine"
+
+
+def _saved(bundle, tmp_path):
+    src = tmp_path / "saved"
+    src.mkdir()
+    (src / "scene.json").write_text(bundle.scene.dumps())
+    return src / "scene.json"
 
 
 def test_export_is_atomic(exported, tmp_path, monkeypatch):

@@ -37,13 +37,14 @@ def read_scene(path: Path):
 
 def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
                  usd_ext: str = "usdc", texture_resolution: int = 512) -> tuple[Path, dict]:
-    """Re-export a saved scene into `out` (default: its own directory), atomically. scene.json
-    is copied along, and plan.png / report.json too when they sit beside it. Returns the
+    """Re-export a saved scene into `out` (default: its own directory), atomically, beside
+    what is already there (other formats, the user's files). scene.json is copied along, and
+    plan.png / report.json too when they sit beside it. Returns the
     directory and the seconds per stage."""
     fmts = parse_formats(formats)
     scene, src = read_scene(scene_path)
     out = Path(out) if out else src.parent
-    check_writable(out)
+    check_writable(out, replacing=False)
     if texture_resolution < 0 or texture_resolution > 8192:
         raise ConfigError(f"--texture-resolution {texture_resolution} is invalid; valid: 0 "
                           "(no textures) or 16..8192")
@@ -52,11 +53,12 @@ def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
     bundle = bundle_from_scene(scene)
     timings["assets"] = time.perf_counter() - t
     keep = {}
-    for name in ("scene.json", "plan.png", "report.json"):
-        if (src.parent / name).is_file():
-            keep[name] = (src.parent / name).read_bytes()
-    keep["scene.json"] = src.read_bytes()
-    with atomic_dir(out) as tmp:
+    if out.resolve() != src.parent.resolve():  # a new place: the scene's own files go along
+        for name in ("scene.json", "plan.png", "report.json"):
+            if (src.parent / name).is_file():
+                keep[name] = (src.parent / name).read_bytes()
+        keep["scene.json"] = src.read_bytes()
+    with atomic_dir(out, merge=True) as tmp:  # other formats already there stay
         for name, data in keep.items():
             (tmp / name).write_bytes(data)
         write_formats(bundle, tmp, fmts, usd_ext=usd_ext, texture_resolution=texture_resolution,
