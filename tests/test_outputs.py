@@ -2,6 +2,7 @@
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -100,3 +101,12 @@ def test_leftovers_of_a_killed_run_are_cleaned_and_user_files_restored(tmp_path)
     assert not tmp.exists() and not old.exists() and live.exists()
     assert (out / "notes.txt").read_text() == "mine"
     assert (out / "scene.json").read_text() == "new"
+
+
+@pytest.mark.parametrize("name", [".", "..", ""])
+def test_the_current_directory_is_never_replaced(tmp_path, monkeypatch, name):
+    (tmp_path / "work").mkdir()
+    monkeypatch.chdir(tmp_path / "work")
+    with pytest.raises(OutputError, match="current directory"):
+        _write(Path(name), {"scene.json": "{}"})
+    assert os.listdir(tmp_path / "work") == []

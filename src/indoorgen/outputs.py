@@ -33,6 +33,9 @@ def check_writable(out: Path, directory: bool = True, *, replacing: bool = True)
     `directory` is False) cannot be created or written; for a directory to be `replacing`, also
     if it holds scene files indoorgen did not write."""
     out = Path(out)
+    if directory and Path.cwd().resolve().is_relative_to(out.resolve()):
+        raise OutputError(f"{str(out)!r} is the current directory or holds it; indoorgen writes a "
+                          "scene into a directory of its own: give a new name such as scene_0")
     if directory and out.exists() and not out.is_dir():
         raise OutputError(f"{out} exists and is not a directory")
     if not directory and out.is_dir():
