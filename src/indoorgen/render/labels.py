@@ -85,8 +85,8 @@ def anchor_points(poly: sg.Polygon, n: int = 10) -> list[tuple[float, float]]:
     size = max(float(np.sqrt(poly.area)), 1e-3)
     pole = shapely.ops.polylabel(poly, tolerance=size / 50)
     x0, y0, x1, y1 = poly.bounds
-    xs, ys = np.meshgrid(np.linspace(x0, x1, 9)[1:-1], np.linspace(y0, y1, 9)[1:-1])
-    xs, ys = xs.ravel(), ys.ravel()
+    gx, gy = np.meshgrid(np.linspace(x0, x1, 9)[1:-1], np.linspace(y0, y1, 9)[1:-1])
+    xs, ys = gx.ravel(), gy.ravel()
     keep = shapely.contains_xy(poly, xs, ys)
     xs, ys = xs[keep], ys[keep]
     clear = shapely.distance(poly.exterior, shapely.points(xs, ys))
