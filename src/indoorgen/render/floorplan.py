@@ -9,6 +9,7 @@ from collections import Counter
 from os import PathLike
 
 import numpy as np
+import shapely.geometry as sg
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
@@ -50,8 +51,9 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
     kinds = Counter(r.type for _, r in fp.rooms())
     numbered: list[tuple[int, str]] = []
     for ax, storey in zip(axes, fp.storeys, strict=True):
-        _draw_storey(ax, fp, storey, t, depth)
+        swings = _draw_storey(ax, fp, storey, t, depth)
         placer = LabelPlacer(ax)
+        placer.keep_clear(swings)
         length = nice_length(float(bounds[2] - bounds[0]))
         at = scale_bar(ax, bounds[0] + 0.4, bounds[1] + 0.3, length)
         placer.place([f"{length:g} m"], [at], fontsize=7, va="bottom")
@@ -59,8 +61,8 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
             label = room_label(r.name, r.type, kinds[r.type] > 1)
             short = room_abbreviation(r.name, r.type, kinds[r.type] > 1)
             area = f"\n{r.shape().area:.1f} m²"
-            if not place_room(placer, r.shape(), [label + area, label, short + area, short],
-                              len(numbered) + 1, **LABEL_STYLE):
+            if place_room(placer, r.shape(), [label + area, label, short + area, short],
+                          len(numbered) + 1, **LABEL_STYLE) is False:
                 numbered.append((len(numbered) + 1, label))
         label_fixtures(placer, fp, storey, t)
         ax.set_title(f"storey {storey.level}  (floor at {storey.elevation:.2f} m)", fontsize=10)
@@ -72,14 +74,15 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
 
 
 def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
-                 depth: dict[str, int]) -> None:
-    """One storey's drawing: rooms filled by type, stairs, walls and their openings."""
+                 depth: dict[str, int]) -> list[sg.Polygon]:
+    """One storey's drawing: rooms filled by type, stairs, walls and their openings; returns
+    the doors' swings."""
     for r in storey.rooms:
         patch(ax, r.shape(), facecolor=room_colour(r.type), edgecolor="none", zorder=1)
     for st in fp.stairs:
         if storey.level in (st.from_level, st.to_level):
             stair_symbol(ax, st, storey.level)
-    draw_storey_openings(ax, fp, storey, t, depth)
+    return draw_storey_openings(ax, fp, storey, t, depth)
 
 
 def _legend(fig: Figure, last: Axes, types: list[str], numbered: list[tuple[int, str]]) -> None:

@@ -39,6 +39,7 @@ class LabelPlacer:
         self.ax = ax
         self.renderer = ax.figure.canvas.get_renderer()  # type: ignore[attr-defined]
         self.boxes = np.zeros((0, 4))
+        self.soft = np.zeros((0, 4))
 
     def place(self, texts: Sequence[str], points: Sequence[tuple[float, float]],
               inside: sg.Polygon | None = None, **kw: Any) -> Text | None:
@@ -47,34 +48,51 @@ class LabelPlacer:
         polygon; None (nothing drawn) when none fits."""
         t = self.ax.text(0.0, 0.0, "", **{"ha": "center", "va": "center", "zorder": TEXT_Z, **kw})
         frame = self.ax.bbox
-        for s in texts:
-            t.set_text(s)
-            for p in points:
-                t.set_position(p)
-                box = t.get_window_extent(self.renderer)
-                if not (box.x0 >= frame.x0 and box.x1 <= frame.x1 and box.y0 >= frame.y0
-                        and box.y1 <= frame.y1):
-                    continue
-                if not self.free(box) or (inside is not None and not self._within(box, inside)):
-                    continue
-                self.reserve(box)
-                return t
+        for strict in (True, False):  # keeping clear of the soft areas if at all possible
+            for s in texts:
+                t.set_text(s)
+                for p in points:
+                    t.set_position(p)
+                    box = t.get_window_extent(self.renderer)
+                    if not (box.x0 >= frame.x0 and box.x1 <= frame.x1 and box.y0 >= frame.y0
+                            and box.y1 <= frame.y1):
+                        continue
+                    if not self.free(box) or (strict and _hits(self.soft, box)):
+                        continue
+                    if inside is not None and not self._within(box, inside):
+                        continue
+                    self.reserve(box)
+                    return t
         t.remove()
         return None
 
     def free(self, box: Bbox) -> bool:
         """Whether `box` (pixels) keeps PAD_PX clear of every placed label."""
-        b = self.boxes
-        return not bool(((b[:, 0] < box.x1 + PAD_PX) & (b[:, 2] > box.x0 - PAD_PX)
-                         & (b[:, 1] < box.y1 + PAD_PX) & (b[:, 3] > box.y0 - PAD_PX)).any())
+        return not _hits(self.boxes, box)
 
     def reserve(self, box: Bbox) -> None:
         """Mark `box` (pixels) as taken."""
         self.boxes = np.vstack([self.boxes, [box.x0, box.y0, box.x1, box.y1]])
 
+    def keep_clear(self, areas: Sequence[sg.Polygon]) -> None:
+        """Keep labels off the bounding boxes of `areas` (data coordinates; door swings, say)
+        unless a label fits nowhere else."""
+        for a in areas:
+            x0, y0, x1, y1 = a.bounds
+            (p0, q0), (p1, q1) = self.ax.transData.transform([(x0, y0), (x1, y1)])
+            self.soft = np.vstack([self.soft, [min(p0, p1), min(q0, q1), max(p0, p1),
+                                               max(q0, q1)]])
+
     def _within(self, box: Bbox, poly: sg.Polygon) -> bool:
         (x0, y0), (x1, y1) = self.ax.transData.inverted().transform(box.get_points())
         return bool(poly.contains(sg.box(x0, y0, x1, y1)))
+
+
+def _hits(boxes: np.ndarray, box: Bbox) -> bool:
+    """Whether `box` comes within PAD_PX of any of `boxes` ([x0, y0, x1, y1] rows, pixels)."""
+    b = boxes
+    return bool(((b[:, 0] < box.x1 + PAD_PX) & (b[:, 2] > box.x0 - PAD_PX)
+                 & (b[:, 1] < box.y1 + PAD_PX) & (b[:, 3] > box.y0 - PAD_PX)).any())
 
 
 def anchor_points(poly: sg.Polygon, n: int = 10) -> list[tuple[float, float]]:
@@ -110,9 +128,10 @@ def room_abbreviation(name: str, room_type: str, several: bool) -> str:
 
 
 def place_room(placer: LabelPlacer, poly: sg.Polygon, names: Sequence[str], number: int,
-               **kw: Any) -> bool:
+               **kw: Any) -> bool | None:
     """Label the room `poly` inside itself with the first of `names` that fits (each also
-    tried on two lines); failing all, with `number` (False: the legend must name it)."""
+    tried on two lines): True. Failing all, with `number`, inside the room or else near it:
+    False (the legend must name it). None when not even the number finds a free spot."""
     pts = anchor_points(poly)
     texts: list[str] = []
     for s in names:
@@ -123,7 +142,10 @@ def place_room(placer: LabelPlacer, poly: sg.Polygon, names: Sequence[str], numb
             texts.append(f"{head}\n{tail}{nl}{rest}")
     if placer.place(texts, pts, poly, **kw) is not None:
         return True
-    if placer.place([str(number)], pts, poly, **kw) is None:
-        # a sliver too thin even for a digit: the number beside its pole, where it is free
-        placer.place([str(number)], pts, None, **kw)
-    return False
+    if placer.place([str(number)], pts, poly, **kw) is not None:
+        return False
+    # a sliver too thin even for a digit: the number near it, wherever it is free
+    x, y = pts[0] if pts else (poly.centroid.x, poly.centroid.y)
+    ring = [(x + r * np.cos(a), y + r * np.sin(a)) for r in (0.4, 0.8, 1.2, 1.6)
+            for a in np.linspace(0, 2 * np.pi, 8, endpoint=False)]
+    return False if placer.place([str(number)], ring, None, **kw) is not None else None

@@ -108,10 +108,9 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
         rooms = [r for r in scene.rooms.values() if r.storey == level]
         names = {r.name for r in rooms}
         if fp is not None:
-            _draw_storey(ax, fp, level)
+            swings = _draw_storey(ax, fp, level)
         else:
-            for room in rooms:
-                _draw_room(ax, room)
+            swings = [s for room in rooms for s in _draw_room(ax, room)]
         for rn, zones in (door_zones or {}).items():
             if rn in names or not scene.rooms:
                 for z in zones:
@@ -120,18 +119,20 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
                 and not footprints[o.name].is_empty and (o.room in names or not scene.rooms)]
         classes.update(_draw_objects(ax, mine, footprints))
         placer = LabelPlacer(ax)
+        placer.keep_clear(swings)
         length = nice_length(float(bounds[2] - bounds[0]))
         at = scale_bar(ax, bounds[0] + 0.15 * length, bounds[1] + 0.12, length)
         placer.place([f"{length:g} m"], [at], fontsize=7, va="bottom")
         for room in sorted(rooms, key=lambda r: r.name):
             several = kinds[room.room_type] > 1
             label = room_label(room.name, room.room_type, several)
-            if len(room.polygon) >= 3 and not place_room(
+            if len(room.polygon) >= 3 and place_room(
                     placer, sg.Polygon(room.polygon),
                     [label, room_abbreviation(room.name, room.room_type, several)],
                     len(numbered) + 1, fontsize=9 if home else 12, color=ROOM_TEXT,
                     fontweight="bold", path_effects=[pe.withStroke(linewidth=2.5,
-                                                                   foreground="white")]):
+                                                                   foreground="white")]
+            ) is False:
                 numbered.append((len(numbered) + 1, label))
         if fp is not None:
             label_fixtures(placer, fp, fp.storeys[storeys.index(level)], WallThickness())
@@ -196,33 +197,37 @@ def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
 # architecture
 
 
-def _draw_storey(ax: Axes, fp: Floorplan, level: int) -> None:
-    """A home's storey from its floorplan record: floors, stairs, walls and their openings."""
+def _draw_storey(ax: Axes, fp: Floorplan, level: int) -> list[sg.Polygon]:
+    """A home's storey from its floorplan record: floors, stairs, walls and their openings;
+    returns the doors' swings."""
     storey = next(s for s in fp.storeys if s.level == level)
     for r in storey.rooms:
         patch(ax, r.shape(), facecolor=FLOOR_COLOUR, edgecolor="none", zorder=1)
     for st in fp.stairs:
         if level in (st.from_level, st.to_level):
             stair_symbol(ax, st, level)
-    draw_storey_openings(ax, fp, storey, WallThickness(), fp.room_depths())
+    return draw_storey_openings(ax, fp, storey, WallThickness(), fp.room_depths())
 
 
-def _draw_room(ax: Axes, room: Room) -> None:
-    """A single room: floor, wall band (the polygon grown by the wall thickness) and doors."""
+def _draw_room(ax: Axes, room: Room) -> list[sg.Polygon]:
+    """A single room: floor, wall band (the polygon grown by the wall thickness) and doors;
+    returns the doors' swings."""
     if len(room.polygon) < 3:
-        return
+        return []
     poly = sg.Polygon(room.polygon)
     band = poly.buffer(room.wall_thickness, join_style="mitre").difference(poly)
     ax.add_patch(PathPatch(polygon_path(poly), facecolor=FLOOR_COLOUR, edgecolor="none",
                            zorder=1))
     ax.add_patch(PathPatch(polygon_path(band), facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR,
                            linewidth=0.8, zorder=3))
+    swings = []
     for door in room.doors:
         f = _door_frame(room, door)
         if f is not None:
             patch(ax, f.rect(door.width, -f.thickness / 2 - 0.01, f.thickness / 2 + 0.01),
                   facecolor=FLOOR_COLOUR, edgecolor="none", zorder=4)
-            door_symbol(ax, f, door.width, f.n)
+            swings.append(door_symbol(ax, f, door.width, f.n))
+    return swings
 
 
 def _door_frame(room: Room, door: Door) -> WallFrame | None:

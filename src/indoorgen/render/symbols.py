@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import matplotlib.patheffects as pe
 import numpy as np
 import shapely.geometry as sg
 from matplotlib.axes import Axes
@@ -45,10 +46,10 @@ def patch(ax: Axes, geom: sg.base.BaseGeometry, **kw: object) -> None:
             ax.add_patch(PathPatch(polygon_path(p), **kw))
 
 
-def door_symbol(ax: Axes, f: WallFrame, width: float, into: np.ndarray) -> None:
+def door_symbol(ax: Axes, f: WallFrame, width: float, into: np.ndarray) -> sg.Polygon:
     """A hinged door in the opening `width` wide at `f`, opening towards `into`: the leaf drawn
     open at 90 degrees from the hinge jamb, and the quarter circle its edge sweeps (radius the
-    leaf's width)."""
+    leaf's width). Returns the square the swing fills, for labels to keep clear of."""
     leaf = leaf_width(width)
     hinge = f.center - (width / 2 - JAMB) * f.u + into * f.thickness / 2
     tip = hinge + into * leaf
@@ -59,6 +60,7 @@ def door_symbol(ax: Axes, f: WallFrame, width: float, into: np.ndarray) -> None:
     lo, hi = (a0, a1) if (a1 - a0) % 360 <= 180 else (a1, a0)
     ax.add_patch(Arc((hinge[0], hinge[1]), 2 * leaf, 2 * leaf, theta1=lo, theta2=hi,
                      color=DOOR_COLOUR, linewidth=0.7, linestyle=(0, (3, 2)), zorder=5))
+    return sg.Polygon([hinge, hinge + leaf * f.u, tip + leaf * f.u, tip])
 
 
 def window_symbol(ax: Axes, f: WallFrame, width: float) -> None:
@@ -91,23 +93,26 @@ def storey_walls(fp: Floorplan, storey: Storey, t: WallThickness) -> sg.base.Bas
 
 
 def draw_storey_openings(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
-                         depth: dict[str, int]) -> None:
+                         depth: dict[str, int]) -> list[sg.Polygon]:
     """Walls, doors (swinging into the room farther from the front door, as built), open
-    connections as plain gaps, windows and the front door of `storey`."""
+    connections as plain gaps, windows and the front door of `storey`; returns the doors'
+    swings."""
     patch(ax, storey_walls(fp, storey, t), facecolor=WALL_COLOUR, edgecolor="none", zorder=3)
     for w in storey.windows:
         window_symbol(ax, window_frame(storey, w, t), w.width)
+    swings = []
     for d in storey.doors:
         f = door_frame(storey, d, t)
         a, b = d.rooms
         into = b if depth.get(b, 0) >= depth.get(a, 0) else a
-        door_symbol(ax, f, d.width, f.n if into == b else -f.n)
+        swings.append(door_symbol(ax, f, d.width, f.n if into == b else -f.n))
     if fp.entrance is not None and storey.level == 0:
         f = entrance_frame(storey, fp.entrance, t)
-        door_symbol(ax, f, fp.entrance.width, -f.n)
+        swings.append(door_symbol(ax, f, fp.entrance.width, -f.n))
         tail = f.center + f.n * 1.1
         ax.add_patch(FancyArrow(tail[0], tail[1], *(-f.n * 0.7), width=0.1, head_width=0.35,
                                 head_length=0.28, color=ENTRANCE_COLOUR, zorder=6))
+    return swings
 
 
 def entrance_anchors(fp: Floorplan, t: WallThickness) -> list[tuple[float, float]]:
@@ -162,11 +167,16 @@ def scale_bar(ax: Axes, x: float, y: float, length: float) -> tuple[float, float
 def label_fixtures(placer: LabelPlacer, fp: Floorplan, storey: Storey,
                    t: WallThickness) -> None:
     """The stairs' and the front door's words, where they fit."""
+    halo = [pe.withStroke(linewidth=2.0, foreground="white")]
     for st in fp.stairs:
         c = st.shape().centroid
         if st.from_level == storey.level:
-            placer.place(["up"], [(c.x, c.y)], fontsize=6)
+            p0, up, right, run, width = st.frame()
+            beside = [p0 + right * width * s + up * run / 2 for s in (0.25, 0.75)]
+            placer.place(["up"], [(float(x), float(y)) for x, y in beside] + [(c.x, c.y)],
+                         fontsize=6, path_effects=halo)
         elif st.to_level == storey.level:
-            placer.place(["open to\nbelow", "well"], [(c.x, c.y)], fontsize=6)
+            placer.place(["open to\nbelow", "well"], [(c.x, c.y)], fontsize=6,
+                         path_effects=halo)
     if storey.level == 0:
         placer.place(["entrance"], entrance_anchors(fp, t), fontsize=7, color=ENTRANCE_COLOUR)
