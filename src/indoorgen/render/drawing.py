@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 import shapely.geometry as sg
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
@@ -75,14 +76,14 @@ def panel_figure(bounds: np.ndarray, panels: int, legend_px: int = 0,
     return fig, axes
 
 
-def side_legend(fig: Figure, last: Axes, handles: list[Patch], title: str) -> None:
+def side_legend(fig: Figure, last: Axes, handles: list[Artist], title: str) -> None:
     """A legend of `handles` right of the panels (beside `last`, the rightmost)."""
     box = last.get_position()
     fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(box.x1 + 0.01, box.y1),
                fontsize=7, frameon=False, title=title, title_fontsize=8, alignment="left")
 
 
-def numbered_handles(numbered: list[tuple[int, str]]) -> list[Patch]:
+def numbered_handles(numbered: list[tuple[int, str]]) -> list[Artist]:
     """Legend rows (no swatch) naming the rooms a plan labels only by number."""
     return [Patch(facecolor="none", edgecolor="none", label=f"{n}: {name}")
             for n, name in numbered]

@@ -10,6 +10,7 @@ from os import PathLike
 
 import numpy as np
 import shapely.geometry as sg
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
@@ -25,6 +26,7 @@ from indoorgen.render.symbols import (
     patch,
     scale_bar,
     stair_symbol,
+    symbol_handles,
 )
 
 #: free space around the plan (m): the front door's arrow and label, and the scale bar below
@@ -76,17 +78,17 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
 def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
                  depth: dict[str, int]) -> list[sg.Polygon]:
     """One storey's drawing: rooms filled by type, stairs, walls and their openings; returns
-    the doors' swings."""
+    what labels should keep clear of: the doors' swings and the stairs."""
     for r in storey.rooms:
         patch(ax, r.shape(), facecolor=room_colour(r.type), edgecolor="none", zorder=1)
-    for st in fp.stairs:
-        if storey.level in (st.from_level, st.to_level):
-            stair_symbol(ax, st, storey.level)
-    return draw_storey_openings(ax, fp, storey, t, depth)
+    stairs = [st for st in fp.stairs if storey.level in (st.from_level, st.to_level)]
+    for st in stairs:
+        stair_symbol(ax, st, storey.level)
+    return draw_storey_openings(ax, fp, storey, t, depth) + [st.shape() for st in stairs]
 
 
 def _legend(fig: Figure, last: Axes, types: list[str], numbered: list[tuple[int, str]]) -> None:
     """Room-type colours, and the names of rooms labelled by number, right of the panels."""
-    handles = [Patch(facecolor=room_colour(k), edgecolor="none", label=k.replace("_", " "))
-               for k in types]
-    side_legend(fig, last, handles + numbered_handles(numbered), "rooms")
+    handles: list[Artist] = [Patch(facecolor=room_colour(k), edgecolor="none",
+                                   label=k.replace("_", " ")) for k in types]
+    side_legend(fig, last, handles + symbol_handles() + numbered_handles(numbered), "legend")

@@ -19,6 +19,7 @@ from os import PathLike
 import matplotlib.patheffects as pe
 import numpy as np
 import shapely.geometry as sg
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import FancyArrow, Patch, PathPatch
@@ -45,6 +46,7 @@ from indoorgen.render.symbols import (
     patch,
     scale_bar,
     stair_symbol,
+    symbol_handles,
 )
 
 log = logging.getLogger(__name__)
@@ -184,7 +186,8 @@ def _finish_axes(ax: Axes, title: str) -> None:
 def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
                  numbered: list[tuple[int, str]]) -> None:
     """Walls, door clearances, object classes and the rooms labelled by number."""
-    handles = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
+    handles: list[Artist] = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
+    handles += symbol_handles()
     if zones:
         handles.append(Patch(facecolor="none", edgecolor=ZONE_COLOUR, hatch="///",
                              label="door clearance"))
@@ -199,14 +202,15 @@ def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
 
 def _draw_storey(ax: Axes, fp: Floorplan, level: int) -> list[sg.Polygon]:
     """A home's storey from its floorplan record: floors, stairs, walls and their openings;
-    returns the doors' swings."""
+    returns what labels should keep clear of: the doors' swings and the stairs."""
     storey = next(s for s in fp.storeys if s.level == level)
     for r in storey.rooms:
         patch(ax, r.shape(), facecolor=FLOOR_COLOUR, edgecolor="none", zorder=1)
-    for st in fp.stairs:
-        if level in (st.from_level, st.to_level):
-            stair_symbol(ax, st, level)
-    return draw_storey_openings(ax, fp, storey, WallThickness(), fp.room_depths())
+    stairs = [st for st in fp.stairs if level in (st.from_level, st.to_level)]
+    for st in stairs:
+        stair_symbol(ax, st, level)
+    return (draw_storey_openings(ax, fp, storey, WallThickness(), fp.room_depths())
+            + [st.shape() for st in stairs])
 
 
 def _draw_room(ax: Axes, room: Room) -> list[sg.Polygon]:

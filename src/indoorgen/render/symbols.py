@@ -8,7 +8,9 @@ import math
 import matplotlib.patheffects as pe
 import numpy as np
 import shapely.geometry as sg
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
+from matplotlib.lines import Line2D
 from matplotlib.patches import Arc, FancyArrow, PathPatch
 
 from indoorgen.architecture.walls import (
@@ -180,3 +182,10 @@ def label_fixtures(placer: LabelPlacer, fp: Floorplan, storey: Storey,
                          path_effects=halo)
     if storey.level == 0:
         placer.place(["entrance"], entrance_anchors(fp, t), fontsize=7, color=ENTRANCE_COLOUR)
+
+
+def symbol_handles() -> list[Artist]:
+    """Legend rows for the door and window symbols."""
+    return [Line2D([], [], color=DOOR_COLOUR, linewidth=0.9, linestyle=(0, (3, 2)),
+                   label="door and its swing"),
+            Line2D([], [], color=WINDOW_COLOUR, linewidth=1.0, label="window")]
