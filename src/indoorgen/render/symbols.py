@@ -123,7 +123,8 @@ def entrance_anchors(fp: Floorplan, t: WallThickness) -> list[tuple[float, float
     if fp.entrance is None:
         return []
     f = entrance_frame(fp.storeys[0], fp.entrance, t)
-    pts = [f.center + f.n * 1.5] + [f.center + f.n * 1.0 + s * f.u for s in (0.9, -0.9)]
+    pts = [f.center + f.n * 1.5] + [f.center + f.n * d + s * f.u
+                                    for d in (1.0, 0.75) for s in (0.9, -0.9, 1.4, -1.4)]
     return [(float(x), float(y)) for x, y in pts]
 
 
