@@ -145,7 +145,8 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
     if heading:
         fig.suptitle(heading, fontsize=11)
     _draw_legend(fig, axes[-1], dict(sorted(classes.items())),
-                 bool(door_zones and any(door_zones.values())), numbered)
+                 bool(door_zones and any(door_zones.values())), numbered,
+                 fp is not None and any(s.windows for s in fp.storeys))
     return fig
 
 
@@ -184,10 +185,11 @@ def _finish_axes(ax: Axes, title: str) -> None:
 
 
 def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
-                 numbered: list[tuple[int, str]]) -> None:
-    """Walls, door clearances, object classes and the rooms labelled by number."""
+                 numbered: list[tuple[int, str]], windows: bool) -> None:
+    """Walls, doors (and windows), door clearances, object classes and the rooms labelled by
+    number."""
     handles: list[Artist] = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
-    handles += symbol_handles()
+    handles += symbol_handles(windows)
     if zones:
         handles.append(Patch(facecolor="none", edgecolor=ZONE_COLOUR, hatch="///",
                              label="door clearance"))

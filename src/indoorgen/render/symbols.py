@@ -185,8 +185,10 @@ def label_fixtures(placer: LabelPlacer, fp: Floorplan, storey: Storey,
         placer.place(["entrance"], entrance_anchors(fp, t), fontsize=7, color=ENTRANCE_COLOUR)
 
 
-def symbol_handles() -> list[Artist]:
-    """Legend rows for the door and window symbols."""
-    return [Line2D([], [], color=DOOR_COLOUR, linewidth=0.9, linestyle=(0, (3, 2)),
-                   label="door and its swing"),
-            Line2D([], [], color=WINDOW_COLOUR, linewidth=1.0, label="window")]
+def symbol_handles(windows: bool = True) -> list[Artist]:
+    """Legend rows for the door symbol and (when the plan has any) the window symbol."""
+    rows: list[Artist] = [Line2D([], [], color=DOOR_COLOUR, linewidth=0.9,
+                                 linestyle=(0, (3, 2)), label="door and its swing")]
+    if windows:
+        rows.append(Line2D([], [], color=WINDOW_COLOUR, linewidth=1.0, label="window"))
+    return rows
