@@ -125,19 +125,10 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
         length = nice_length(float(bounds[2] - bounds[0]))
         at = scale_bar(ax, bounds[0] + 0.15 * length, bounds[1] + 0.12, length)
         placer.place([f"{length:g} m"], [at], fontsize=7, va="bottom")
-        for room in sorted(rooms, key=lambda r: r.name):
-            several = kinds[room.room_type] > 1
-            label = room_label(room.name, room.room_type, several)
-            if len(room.polygon) >= 3 and place_room(
-                    placer, sg.Polygon(room.polygon),
-                    [label, room_abbreviation(room.name, room.room_type, several)],
-                    len(numbered) + 1, fontsize=9 if home else 12, color=ROOM_TEXT,
-                    fontweight="bold", path_effects=[pe.withStroke(linewidth=2.5,
-                                                                   foreground="white")]
-            ) is False:
-                numbered.append((len(numbered) + 1, label))
-        if fp is not None:
-            label_fixtures(placer, fp, fp.storeys[storeys.index(level)], WallThickness())
+        _label_rooms(placer, rooms, kinds, numbered, 9 if home else 12)
+        storey = next((s for s in fp.storeys if s.level == level), None) if fp else None
+        if fp is not None and storey is not None:
+            label_fixtures(placer, fp, storey, WallThickness())
         _label_objects(placer, mine, footprints, HOME_LABEL_AREA if home else 0.0)
         heading = f"storey {level}" if len(storeys) > 1 else ""
         _finish_axes(ax, heading)
@@ -198,6 +189,23 @@ def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
     side_legend(fig, last, handles + numbered_handles(numbered), "legend")
 
 
+def _label_rooms(placer: LabelPlacer, rooms: list[Room], kinds: Counter[str],
+                 numbered: list[tuple[int, str]], size: float) -> None:
+    """Name each room inside itself (abbreviated if need be); rooms that get a number instead
+    are appended to `numbered` for the legend. `kinds` counts the home's rooms by type."""
+    for room in sorted(rooms, key=lambda r: r.name):
+        if len(room.polygon) < 3:
+            continue
+        several = kinds[room.room_type] > 1
+        label = room_label(room.name, room.room_type, several)
+        got = place_room(placer, sg.Polygon(room.polygon),
+                         [label, room_abbreviation(room.name, room.room_type, several)],
+                         len(numbered) + 1, fontsize=size, color=ROOM_TEXT, fontweight="bold",
+                         path_effects=[pe.withStroke(linewidth=2.5, foreground="white")])
+        if got is False:
+            numbered.append((len(numbered) + 1, label))
+
+
 # --------------------------------------------------------------------------------------------
 # architecture
 
@@ -205,7 +213,9 @@ def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
 def _draw_storey(ax: Axes, fp: Floorplan, level: int) -> list[sg.Polygon]:
     """A home's storey from its floorplan record: floors, stairs, walls and their openings;
     returns what labels should keep clear of: the doors' swings and the stairs."""
-    storey = next(s for s in fp.storeys if s.level == level)
+    storey = next((s for s in fp.storeys if s.level == level), None)
+    if storey is None:
+        return []
     for r in storey.rooms:
         patch(ax, r.shape(), facecolor=FLOOR_COLOUR, edgecolor="none", zorder=1)
     stairs = [st for st in fp.stairs if level in (st.from_level, st.to_level)]
