@@ -44,9 +44,10 @@ def room_colour(room_type: str) -> str:
     return spec.colour if spec is not None else DEFAULT_COLOUR
 
 
-#: the plan drawings' resolution and the size a panel's plan gets at most (pixels)
+#: the plan drawings' resolution, the size a panel's plan gets at most and the most all the
+#: panels side by side take (pixels)
 DPI = 125
-PANEL_MAX_W, PANEL_MAX_H = 700, 860
+PANEL_MAX_W, PANEL_MAX_H, ALL_PANELS_MAX_W = 700, 860, 1800
 #: margins around the panels (pixels): tick labels left and below, titles above
 LEFT_PX, BOTTOM_PX, TOP_PX, GAP_PX, TITLE_PX = 58, 42, 40, 58, 26
 
@@ -57,7 +58,8 @@ def panel_figure(bounds: np.ndarray, panels: int, legend_px: int = 0,
     `panels` equal plan panels side by side, each showing `bounds` [xmin, ymin, xmax, ymax] at
     the same scale, and `legend_px` pixels kept free on the right."""
     w, h = float(bounds[2] - bounds[0]), float(bounds[3] - bounds[1])
-    scale = min(PANEL_MAX_W / max(w, 1e-6), PANEL_MAX_H / max(h, 1e-6))  # pixels per metre
+    most_w = min(PANEL_MAX_W, ALL_PANELS_MAX_W / panels)
+    scale = min(most_w / max(w, 1e-6), PANEL_MAX_H / max(h, 1e-6))  # pixels per metre
     pw, ph = w * scale, h * scale
     width = LEFT_PX + panels * pw + (panels - 1) * GAP_PX + legend_px + 12
     height = max(BOTTOM_PX + ph + TITLE_PX + TOP_PX, min_height_px)

@@ -21,6 +21,7 @@ from indoorgen.render.drawing import DPI, numbered_handles, panel_figure, room_c
 from indoorgen.render.labels import LabelPlacer, place_room, room_abbreviation, room_label
 from indoorgen.render.symbols import (
     draw_storey_openings,
+    entrance_box,
     label_fixtures,
     nice_length,
     patch,
@@ -29,8 +30,8 @@ from indoorgen.render.symbols import (
     symbol_handles,
 )
 
-#: free space around the plan (m): the front door's arrow and label, and the scale bar below
-MARGIN, BAR_MARGIN = 1.8, 0.9
+#: free space around the plan (m), besides the front door's arrow and label; the scale bar's
+MARGIN, BAR_MARGIN = 0.6, 0.8
 LEGEND_PX = 200
 LABEL_STYLE = {"fontsize": 7, "color": "#1f1f1f", "linespacing": 1.0}
 
@@ -46,8 +47,13 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
     """The figure `draw_floorplan` saves: one panel per storey, side by side, and a legend."""
     t = walls or WallThickness()
     b = np.array([r.shape().bounds for _, r in fp.rooms()])
-    bounds = np.array([b[:, 0].min() - MARGIN, b[:, 1].min() - MARGIN - BAR_MARGIN,
+    bounds = np.array([b[:, 0].min() - MARGIN, b[:, 1].min() - MARGIN,
                        b[:, 2].max() + MARGIN, b[:, 3].max() + MARGIN])
+    door = entrance_box(fp, t)
+    if door is not None:
+        bounds = np.concatenate([np.minimum(bounds[:2], door[:2]),
+                                 np.maximum(bounds[2:], door[2:])])
+    bounds[1] -= BAR_MARGIN
     fig, axes = panel_figure(bounds, len(fp.storeys), LEGEND_PX)
     depth = fp.room_depths()
     kinds = Counter(r.type for _, r in fp.rooms())

@@ -41,6 +41,7 @@ from indoorgen.render.labels import LabelPlacer, place_room, room_abbreviation, 
 from indoorgen.render.symbols import (
     door_symbol,
     draw_storey_openings,
+    entrance_box,
     label_fixtures,
     nice_length,
     patch,
@@ -75,8 +76,8 @@ LEGEND_PX = 210
 HOME_LABEL_AREA = 0.3
 #: objects smaller than this (m^2) get the small label font
 SMALL_AREA = 0.15
-#: free space around a home (the front door's arrow and label) and under any plan (scale bar), m
-HOME_MARGIN, BAR_MARGIN = 1.8, 0.5
+#: free space under a plan for its scale bar, m
+BAR_MARGIN = 0.5
 
 
 def draw_plan(scene: Scene, footprints: dict[str, sg.Polygon], path: str | PathLike, *,
@@ -100,7 +101,8 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
     """
     storeys = sorted({r.storey for r in scene.rooms.values()}) or [0]
     fp = from_json(scene.floorplan) if scene.floorplan is not None else None
-    bounds = _scene_bounds(scene, footprints, HOME_MARGIN if fp is not None else 0.0)
+    bounds = _scene_bounds(scene, footprints,
+                           entrance_box(fp, WallThickness()) if fp is not None else None)
     fig, axes = panel_figure(bounds, len(storeys), LEGEND_PX)
     home = len(scene.rooms) > 1
     kinds = Counter(r.room_type for r in scene.rooms.values())
@@ -145,9 +147,11 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
 # layout
 
 
-def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon], margin: float) -> np.ndarray:
-    """[xmin, ymin, xmax, ymax] of every room (with walls) and footprint, with a margin all
-    round (at least 4 % of the plan, or `margin`) and room for the scale bar below."""
+def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon],
+                  door: np.ndarray | None) -> np.ndarray:
+    """[xmin, ymin, xmax, ymax] of every room (with walls) and footprint with a margin (4 % of
+    the plan), the box `door` (the front door's arrow and label) and room for the scale bar
+    below."""
     boxes = [np.asarray(sg.Polygon(r.polygon).buffer(r.wall_thickness, join_style="mitre").bounds)
              for r in scene.rooms.values() if len(r.polygon) >= 3]
     boxes += [np.asarray(f.bounds) for f in footprints.values() if not f.is_empty]
@@ -155,8 +159,11 @@ def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon], margin: float
         return np.array([-1.0, -1.0 - BAR_MARGIN, 1.0, 1.0])
     b = np.stack(boxes)
     lo, hi = b[:, :2].min(axis=0), b[:, 2:].max(axis=0)
-    pad = max(0.04 * max(float((hi - lo).max()), 1.0), margin)
-    return np.concatenate([lo - pad - [0.0, BAR_MARGIN], hi + pad])
+    pad = 0.04 * max(float((hi - lo).max()), 1.0)
+    lo, hi = lo - pad, hi + pad
+    if door is not None:
+        lo, hi = np.minimum(lo, door[:2]), np.maximum(hi, door[2:])
+    return np.concatenate([lo - [0.0, BAR_MARGIN], hi])
 
 
 def _default_title(scene: Scene) -> str:

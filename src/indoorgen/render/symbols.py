@@ -98,7 +98,7 @@ def draw_storey_openings(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickne
                          depth: dict[str, int]) -> list[sg.Polygon]:
     """Walls, doors (swinging into the room farther from the front door, as built), open
     connections as plain gaps, windows and the front door of `storey`; returns the doors'
-    swings."""
+    swings and the front door's arrow."""
     patch(ax, storey_walls(fp, storey, t), facecolor=WALL_COLOUR, edgecolor="none", zorder=3)
     for w in storey.windows:
         window_symbol(ax, window_frame(storey, w, t), w.width)
@@ -114,6 +114,7 @@ def draw_storey_openings(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickne
         tail = f.center + f.n * 1.1
         ax.add_patch(FancyArrow(tail[0], tail[1], *(-f.n * 0.7), width=0.1, head_width=0.35,
                                 head_length=0.28, color=ENTRANCE_COLOUR, zorder=6))
+        swings.append(f.rect(0.35, 0.3, 1.15))  # the arrow, for labels to keep clear of
     return swings
 
 
@@ -123,9 +124,20 @@ def entrance_anchors(fp: Floorplan, t: WallThickness) -> list[tuple[float, float
     if fp.entrance is None:
         return []
     f = entrance_frame(fp.storeys[0], fp.entrance, t)
-    pts = [f.center + f.n * 1.5] + [f.center + f.n * d + s * f.u
-                                    for d in (1.0, 0.75) for s in (0.9, -0.9, 1.4, -1.4)]
+    pts = [f.center + f.n * d for d in (1.5, 2.0)] + [f.center + f.n * d + s * f.u
+                                                      for d in (1.0, 0.75)
+                                                      for s in (0.9, -0.9, 1.4, -1.4)]
     return [(float(x), float(y)) for x, y in pts]
+
+
+def entrance_box(fp: Floorplan, t: WallThickness) -> np.ndarray | None:
+    """[xmin, ymin, xmax, ymax] of what is drawn outside the front door (its arrow and label),
+    for the plan's bounds to include."""
+    if fp.entrance is None:
+        return None
+    f = entrance_frame(fp.storeys[0], fp.entrance, t)
+    pts = np.array([f.center + f.n * 2.6 + s * f.u for s in (-0.8, 0.8)] + [f.center])
+    return np.concatenate([pts.min(axis=0), pts.max(axis=0)])
 
 
 def stair_symbol(ax: Axes, st: StairSpec, level: int) -> None:
