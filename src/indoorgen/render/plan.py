@@ -3,26 +3,52 @@
 The renderer is deliberately ignorant of assets: callers pass each object's world XY footprint,
 so drawing a plan never builds a mesh. It uses matplotlib's object-oriented API with the Agg
 canvas only (never pyplot), so it is thread-safe and leaves no global figure state behind.
+A home's storeys sit side by side at one scale, drawn from its floorplan record as built (walls,
+doors at their leaf's width, open connections as gaps, windows, stairs, the front door). Text
+never collides (`labels`): rooms are named inside themselves, abbreviated or numbered (and named
+in the legend) when small; object labels that do not fit are left out.
 """
 from __future__ import annotations
 
 import logging
-import math
 import re
+from collections import Counter
 from collections.abc import Iterable
 from os import PathLike
-from typing import Any
 
 import matplotlib.patheffects as pe
 import numpy as np
 import shapely.geometry as sg
-from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.artist import Artist
+from matplotlib.axes import Axes
 from matplotlib.figure import Figure
-from matplotlib.patches import Arc, FancyArrow, Patch, PathPatch
+from matplotlib.patches import FancyArrow, Patch, PathPatch
 
-from indoorgen.model.scene import Room, Scene, SceneObject
+from indoorgen.architecture.walls import WallFrame, WallThickness
+from indoorgen.model.floorplan import Floorplan
+from indoorgen.model.floorplan_io import from_json
+from indoorgen.model.scene import Door, Room, Scene, SceneObject
 from indoorgen.model.tags import Semantics
-from indoorgen.render.drawing import WALL_COLOUR, polygon_path
+from indoorgen.render.drawing import (
+    DPI,
+    WALL_COLOUR,
+    numbered_handles,
+    panel_figure,
+    polygon_path,
+    side_legend,
+)
+from indoorgen.render.labels import LabelPlacer, place_room, room_abbreviation, room_label
+from indoorgen.render.symbols import (
+    door_symbol,
+    draw_storey_openings,
+    entrance_box,
+    label_fixtures,
+    nice_length,
+    patch,
+    scale_bar,
+    stair_symbol,
+    symbol_handles,
+)
 
 log = logging.getLogger(__name__)
 
@@ -43,83 +69,101 @@ CLASS_COLOURS: tuple[tuple[str, str, str], ...] = (
 OTHER_COLOUR = ("other", "#bab0ac")
 
 FLOOR_COLOUR = "#faf8f3"
-DOOR_COLOUR = "#7a7a7a"
 ZONE_COLOUR = "#d62728"
-TARGET_WIDTH_PX = 1000
-DPI = 125
+ROOM_TEXT = "#6b6254"
+LEGEND_PX = 210
+#: objects of a home smaller than this (m^2 of footprint) go unlabelled: furniture only
+HOME_LABEL_AREA = 0.3
+#: objects smaller than this (m^2) get the small label font
+SMALL_AREA = 0.15
+#: free space under a plan for its scale bar, m
+BAR_MARGIN = 0.5
 
 
 def draw_plan(scene: Scene, footprints: dict[str, sg.Polygon], path: str | PathLike, *,
               door_zones: dict[str, list[sg.Polygon]] | None = None,
               title: str | None = None) -> None:
-    """Draw `scene` seen from above and save it as a PNG at `path` (about 1000 px wide).
+    """Draw `scene` seen from above and save it as a PNG at `path` (see `plan_figure`)."""
+    plan_figure(scene, footprints, door_zones=door_zones, title=title).savefig(
+        path, dpi=DPI, facecolor="white")
+    log.debug("plan written to %s", path)
+
+
+def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
+                door_zones: dict[str, list[sg.Polygon]] | None = None,
+                title: str | None = None) -> Figure:
+    """The plan of `scene` as a figure: one panel per storey, side by side at one scale (a
+    single room's plan about 1000 px wide), a scale bar and a legend on the right.
 
     `footprints` maps object names to world-XY footprint polygons; objects without one are
-    skipped. `door_zones` maps room names to door clearance polygons, drawn hatched. Rooms are
-    drawn with their walls (outside the polygon, as built), doors as a gap with a swing arc, and
-    objects filled by class colour, lowest first, each with a short label and a front arrow.
+    skipped. `door_zones` maps room names to door clearance polygons, drawn hatched. Objects are
+    filled by class colour, lowest first, each with a front arrow and, where it fits, a label.
     """
-    fig = Figure(dpi=DPI)
-    FigureCanvasAgg(fig)
     storeys = sorted({r.storey for r in scene.rooms.values()}) or [0]
-    bounds = _scene_bounds(scene, footprints)
-    _size_figure(fig, bounds, len(storeys))
+    fp = from_json(scene.floorplan) if scene.floorplan is not None else None
+    bounds = _scene_bounds(scene, footprints,
+                           entrance_box(fp, WallThickness()) if fp is not None else None)
+    fig, axes = panel_figure(bounds, len(storeys), LEGEND_PX)
     home = len(scene.rooms) > 1
+    kinds = Counter(r.room_type for r in scene.rooms.values())
     classes: dict[str, str] = {}
-    for k, level in enumerate(storeys):
-        ax = fig.add_subplot(len(storeys), 1, k + 1)
+    numbered: list[tuple[int, str]] = []
+    for ax, level in zip(axes, storeys, strict=True):
         rooms = [r for r in scene.rooms.values() if r.storey == level]
         names = {r.name for r in rooms}
-        for room in rooms:
-            _draw_room(ax, room)
+        if fp is not None:
+            swings = _draw_storey(ax, fp, level)
+        else:
+            swings = [s for room in rooms for s in _draw_room(ax, room)]
         for rn, zones in (door_zones or {}).items():
             if rn in names or not scene.rooms:
                 for z in zones:
                     _draw_zone(ax, z)
-        mine = {n: f for n, f in footprints.items()
-                if n in scene.objects and (scene.objects[n].room in names or not scene.rooms)}
-        classes.update(_draw_objects(ax, scene, mine, bounds, label_small=not home))
-        if scene.floorplan is not None:
-            _draw_openings(ax, scene, scene.floorplan, level)
-        for room in rooms:
-            _draw_room_label(ax, room, 9 if home else 13)
-        heading = title if title is not None else _default_title(scene)
-        if len(storeys) > 1:
-            heading = f"{heading}  (storey {level})"
-        _finish_axes(ax, bounds, heading)
-        if k == 0:
-            _draw_legend(ax, dict(sorted(classes.items())),
-                         bool(door_zones and any(door_zones.values())))
-    fig.savefig(path, dpi=DPI, facecolor="white")
-    log.debug("plan written to %s", path)
+        mine = [o for o in scene.objects.values() if o.name in footprints
+                and not footprints[o.name].is_empty and (o.room in names or not scene.rooms)]
+        classes.update(_draw_objects(ax, mine, footprints))
+        placer = LabelPlacer(ax)
+        placer.keep_clear(swings)
+        length = nice_length(float(bounds[2] - bounds[0]))
+        at = scale_bar(ax, bounds[0] + 0.15 * length, bounds[1] + 0.12, length)
+        placer.place([f"{length:g} m"], [at], fontsize=7, va="bottom")
+        _label_rooms(placer, rooms, kinds, numbered, 9 if home else 12)
+        storey = next((s for s in fp.storeys if s.level == level), None) if fp else None
+        if fp is not None and storey is not None:
+            label_fixtures(placer, fp, storey, WallThickness())
+        _label_objects(placer, mine, footprints, HOME_LABEL_AREA if home else 0.0)
+        heading = f"storey {level}" if len(storeys) > 1 else ""
+        _finish_axes(ax, heading)
+    heading = title if title is not None else _default_title(scene)
+    if heading:
+        fig.suptitle(heading, fontsize=11)
+    _draw_legend(fig, axes[-1], dict(sorted(classes.items())),
+                 bool(door_zones and any(door_zones.values())), numbered,
+                 fp is not None and any(s.windows for s in fp.storeys))
+    return fig
 
 
 # --------------------------------------------------------------------------------------------
 # layout
 
 
-def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon]) -> np.ndarray:
-    """[xmin, ymin, xmax, ymax] of every room (with walls) and footprint, with a margin."""
+def _scene_bounds(scene: Scene, footprints: dict[str, sg.Polygon],
+                  door: np.ndarray | None) -> np.ndarray:
+    """[xmin, ymin, xmax, ymax] of every room (with walls) and footprint with a margin (4 % of
+    the plan), the box `door` (the front door's arrow and label) and room for the scale bar
+    below."""
     boxes = [np.asarray(sg.Polygon(r.polygon).buffer(r.wall_thickness, join_style="mitre").bounds)
              for r in scene.rooms.values() if len(r.polygon) >= 3]
     boxes += [np.asarray(f.bounds) for f in footprints.values() if not f.is_empty]
     if not boxes:
-        return np.array([-1.0, -1.0, 1.0, 1.0])
+        return np.array([-1.0, -1.0 - BAR_MARGIN, 1.0, 1.0])
     b = np.stack(boxes)
     lo, hi = b[:, :2].min(axis=0), b[:, 2:].max(axis=0)
     pad = 0.04 * max(float((hi - lo).max()), 1.0)
-    return np.concatenate([lo - pad, hi + pad])
-
-
-def _size_figure(fig: Figure, bounds: np.ndarray, panels: int = 1) -> None:
-    """Fix the width at TARGET_WIDTH_PX and pick a height that suits the plan's aspect, one
-    panel per storey stacked (the legend sits to the right, so the plan gets roughly 70 % of
-    the width)."""
-    w, h = bounds[2] - bounds[0], bounds[3] - bounds[1]
-    width_in = TARGET_WIDTH_PX / DPI
-    height_in = float(np.clip(0.7 * width_in * h / max(w, 1e-6) + 0.9, 4.0, 12.0)) * panels
-    fig.set_size_inches(width_in, height_in)
-    fig.set_layout_engine("constrained")
+    lo, hi = lo - pad, hi + pad
+    if door is not None:
+        lo, hi = np.minimum(lo, door[:2]), np.maximum(hi, door[2:])
+    return np.concatenate([lo - [0.0, BAR_MARGIN], hi])
 
 
 def _default_title(scene: Scene) -> str:
@@ -128,12 +172,7 @@ def _default_title(scene: Scene) -> str:
             f"{n_obj} object{'s' * (n_obj != 1)}")
 
 
-def _finish_axes(ax, bounds: np.ndarray, title: str) -> None:
-    ax.set_xlim(bounds[0], bounds[2])
-    ax.set_ylim(bounds[1], bounds[3])
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (m)", fontsize=8)
-    ax.set_ylabel("y (m)", fontsize=8)
+def _finish_axes(ax: Axes, title: str) -> None:
     ax.tick_params(labelsize=7, colors="#666666")
     ax.grid(True, color="#e6e6e6", linewidth=0.5, zorder=0)
     ax.set_axisbelow(True)
@@ -143,105 +182,87 @@ def _finish_axes(ax, bounds: np.ndarray, title: str) -> None:
         ax.set_title(title, fontsize=10)
 
 
-def _draw_legend(ax, classes: dict[str, str], zones: bool) -> None:
-    handles = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
+def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
+                 numbered: list[tuple[int, str]], windows: bool) -> None:
+    """Walls, doors (and windows), door clearances, object classes and the rooms labelled by
+    number."""
+    handles: list[Artist] = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
+    handles += symbol_handles(windows)
     if zones:
         handles.append(Patch(facecolor="none", edgecolor=ZONE_COLOUR, hatch="///",
                              label="door clearance"))
     handles += [Patch(facecolor=c, edgecolor=_darker(c), label=name)
                 for name, c in classes.items()]
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
-              frameon=False, title="legend", title_fontsize=8, alignment="left")
+    side_legend(fig, last, handles + numbered_handles(numbered), "legend")
+
+
+def _label_rooms(placer: LabelPlacer, rooms: list[Room], kinds: Counter[str],
+                 numbered: list[tuple[int, str]], size: float) -> None:
+    """Name each room inside itself (abbreviated if need be); rooms that get a number instead
+    are appended to `numbered` for the legend. `kinds` counts the home's rooms by type."""
+    for room in sorted(rooms, key=lambda r: r.name):
+        if len(room.polygon) < 3:
+            continue
+        several = kinds[room.room_type] > 1
+        label = room_label(room.name, room.room_type, several)
+        got = place_room(placer, sg.Polygon(room.polygon),
+                         [label, room_abbreviation(room.name, room.room_type, several)],
+                         len(numbered) + 1, fontsize=size, color=ROOM_TEXT, fontweight="bold",
+                         path_effects=[pe.withStroke(linewidth=2.5, foreground="white")])
+        if got is False:
+            numbered.append((len(numbered) + 1, label))
 
 
 # --------------------------------------------------------------------------------------------
 # architecture
 
 
-def _edge_frames(room: Room) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Per edge: start point, unit direction, inward normal (CCW polygon) and length."""
-    p = np.asarray(room.polygon, float)
-    d = np.roll(p, -1, axis=0) - p
-    length = np.linalg.norm(d, axis=1)
-    d = d / length[:, None]
-    return p, d, np.stack([-d[:, 1], d[:, 0]], axis=1), length
+def _draw_storey(ax: Axes, fp: Floorplan, level: int) -> list[sg.Polygon]:
+    """A home's storey from its floorplan record: floors, stairs, walls and their openings;
+    returns what labels should keep clear of: the doors' swings and the stairs."""
+    storey = next((s for s in fp.storeys if s.level == level), None)
+    if storey is None:
+        return []
+    for r in storey.rooms:
+        patch(ax, r.shape(), facecolor=FLOOR_COLOUR, edgecolor="none", zorder=1)
+    stairs = [st for st in fp.stairs if level in (st.from_level, st.to_level)]
+    for st in stairs:
+        stair_symbol(ax, st, level)
+    return (draw_storey_openings(ax, fp, storey, WallThickness(), fp.room_depths())
+            + [st.shape() for st in stairs])
 
 
-def _draw_room(ax, room: Room) -> None:
-    """Floor fill, wall band (polygon grown by the wall thickness) and doors."""
+def _draw_room(ax: Axes, room: Room) -> list[sg.Polygon]:
+    """A single room: floor, wall band (the polygon grown by the wall thickness) and doors;
+    returns the doors' swings."""
     if len(room.polygon) < 3:
-        return
+        return []
     poly = sg.Polygon(room.polygon)
     band = poly.buffer(room.wall_thickness, join_style="mitre").difference(poly)
     ax.add_patch(PathPatch(polygon_path(poly), facecolor=FLOOR_COLOUR, edgecolor="none",
                            zorder=1))
     ax.add_patch(PathPatch(polygon_path(band), facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR,
                            linewidth=0.8, zorder=3))
+    swings = []
     for door in room.doors:
-        _draw_door(ax, room, door)
+        f = _door_frame(room, door)
+        if f is not None:
+            patch(ax, f.rect(door.width, -f.thickness / 2 - 0.01, f.thickness / 2 + 0.01),
+                  facecolor=FLOOR_COLOUR, edgecolor="none", zorder=4)
+            swings.append(door_symbol(ax, f, door.width, f.n))
+    return swings
 
 
-def _draw_door(ax, room: Room, door) -> None:
-    """A gap in the wall band, the open door leaf and its quarter-circle swing into the room."""
-    p, d, n, length = _edge_frames(room)
+def _door_frame(room: Room, door: Door) -> WallFrame | None:
+    """The frame of a single room's door: centred in its wall band, `n` pointing in."""
+    p = np.asarray(room.polygon, float)
     if not 0 <= door.wall < len(p):
-        return
-    i, t, w = door.wall, room.wall_thickness, door.width
-    a = p[i] + (door.offset - w / 2) * d[i]
-    b = p[i] + (door.offset + w / 2) * d[i]
-    eps = 0.01
-    gap = np.array([a, b, b - (t + eps) * n[i], a - (t + eps) * n[i]]) + eps * n[i]
-    ax.fill(gap[:, 0], gap[:, 1], facecolor=FLOOR_COLOUR, edgecolor="none", zorder=4)
-    for jamb in (a, b):  # thin jamb lines keep the opening readable
-        seg = np.array([jamb, jamb - t * n[i]])
-        ax.plot(seg[:, 0], seg[:, 1], color=WALL_COLOUR, linewidth=1.0, zorder=4)
-    leaf = np.array([a, a + w * n[i]])
-    ax.plot(leaf[:, 0], leaf[:, 1], color=DOOR_COLOUR, linewidth=1.6, zorder=4,
-            solid_capstyle="butt")
-    theta = math.degrees(math.atan2(d[i, 1], d[i, 0]))
-    ax.add_patch(Arc(tuple(a), 2 * w, 2 * w, theta1=theta, theta2=theta + 90.0,
-                     color=DOOR_COLOUR, linewidth=0.9, linestyle=(0, (3, 2)), zorder=4))
-
-
-def _nearest_edge(rooms: list[Room], point: np.ndarray) -> tuple[np.ndarray, float]:
-    """Unit direction of the room edge nearest `point` and the wall thickness there."""
-    best = (np.inf, np.array([1.0, 0.0]), 0.12)
-    for room in rooms:
-        p, d, _, length = _edge_frames(room)
-        t = np.clip(np.einsum("ij,ij->i", point - p, d), 0, length)
-        dist = np.linalg.norm(p + t[:, None] * d - point, axis=1)
-        i = int(np.argmin(dist))
-        if dist[i] < best[0]:
-            best = (dist[i], d[i], room.wall_thickness)
-    return best[1], best[2]
-
-
-def _draw_openings(ax, scene: Scene, fp: dict[str, Any], level: int) -> None:
-    """A home's doors (brown), open connections (dashed), windows (blue), stairs (hatched) and
-    front entrance (triangle) on storey `level`, from the floorplan scene.json records `fp`."""
-    storey = next((s for s in fp["storeys"] if s["level"] == level), None)
-    if storey is None:
-        return
-    rooms = [r for r in scene.rooms.values() if r.storey == level]
-    for kind, colour, lw in (("doors", "#8c564b", 3.0), ("windows", "#4a90d9", 3.0),
-                             ("openings", "#8c564b", 1.2)):
-        for o in storey.get(kind, []):
-            c = np.asarray(o["center"], float)
-            d, t = _nearest_edge(rooms, c)
-            seg = np.array([c - d * o["width"] / 2, c + d * o["width"] / 2])
-            ax.plot(seg[:, 0], seg[:, 1], color=colour, linewidth=lw, zorder=6,
-                    solid_capstyle="butt", linestyle="--" if kind == "openings" else "-")
-    for st in fp.get("stairs", []):
-        if level in (st["from_level"], st["to_level"]):
-            poly = sg.Polygon(st["polygon"])
-            ax.add_patch(PathPatch(polygon_path(poly), facecolor="#cfcfcf", edgecolor="#555555",
-                                   hatch="---", linewidth=0.8, alpha=0.9, zorder=5))
-            pt = poly.representative_point()
-            ax.text(pt.x, pt.y, "stairs", fontsize=7, ha="center", va="center", zorder=7,
-                    path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
-    ent = fp.get("entrance")
-    if ent and level == 0:
-        ax.plot(*ent["center"], marker="^", markersize=9, color="#2ca02c", zorder=8)
+        return None
+    d = p[(door.wall + 1) % len(p)] - p[door.wall]
+    d = d / np.linalg.norm(d)
+    inward = np.array([-d[1], d[0]])  # polygons are counter-clockwise
+    t = room.wall_thickness
+    return WallFrame(p[door.wall] + door.offset * d - t / 2 * inward, d, inward, t)
 
 
 def _draw_zone(ax, zone: sg.Polygon) -> None:
@@ -252,16 +273,6 @@ def _draw_zone(ax, zone: sg.Polygon) -> None:
                            edgecolor="none", zorder=2))
     ax.add_patch(PathPatch(polygon_path(zone), facecolor="none", edgecolor=ZONE_COLOUR,
                            hatch="///", linewidth=0.6, linestyle="--", alpha=0.45, zorder=2))
-
-
-def _draw_room_label(ax, room: Room, size: float = 13) -> None:
-    """The room's name, large and faint, under the furniture at the room's centre."""
-    if len(room.polygon) < 3:
-        return
-    poly = sg.Polygon(room.polygon)
-    pt = poly.centroid if poly.contains(poly.centroid) else poly.representative_point()
-    ax.text(pt.x, pt.y, room.name.replace("_", " "), fontsize=size, color="#d0cbc0",
-            ha="center", va="center", zorder=1.5, fontweight="bold")
 
 
 # --------------------------------------------------------------------------------------------
@@ -283,50 +294,58 @@ def short_label(name: str) -> str:
     return base.replace("_", " ")
 
 
-def _draw_objects(ax, scene: Scene, footprints: dict[str, sg.Polygon],
-                  bounds: np.ndarray, label_small: bool = True) -> dict[str, str]:
+def _draw_objects(ax: Axes, objs: list[SceneObject],
+                  footprints: dict[str, sg.Polygon]) -> dict[str, str]:
     """Fill every footprint by class, lowest and largest first so that small objects on top of
-    furniture stay visible; return the classes drawn (legend name -> colour). Without
-    `label_small` (a whole home), only furniture-sized footprints are labelled."""
-    objs = [o for o in scene.objects.values()
-            if o.name in footprints and not footprints[o.name].is_empty]
-    missing = len(scene.objects) - len(objs)
-    if missing:
-        log.debug("plan: %d objects have no footprint and are not drawn", missing)
-    objs.sort(key=lambda o: (float(o.pose.position[2]), -footprints[o.name].area, o.name))
-    scale = float(max(bounds[2] - bounds[0], bounds[3] - bounds[1]))
+    furniture stay visible, each with its front arrow; return the classes drawn (legend name ->
+    colour)."""
+    objs = sorted(objs, key=lambda o: (float(o.pose.position[2]), -footprints[o.name].area,
+                                       o.name))
+    px = _metres_per_pixel(ax)
     classes: dict[str, str] = {}
     for k, obj in enumerate(objs):
         name, colour = object_class(obj.tags)
         classes.setdefault(name, colour)
-        _draw_object(ax, obj, footprints[obj.name], colour, 10 + 3 * k, scale,
-                     label=label_small or footprints[obj.name].area >= 0.15)
+        _draw_object(ax, obj, footprints[obj.name], colour, 10 + 3 * k, px)
     return dict(sorted(classes.items()))
 
 
-def _draw_object(ax, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
-                 scale: float, label: bool = True) -> None:
-    """One footprint: fill, outline, front arrow and label, stacked at z-order `z`."""
+def _draw_object(ax: Axes, obj: SceneObject, fp: sg.Polygon, colour: str, z: float,
+                 px: float) -> None:
+    """One footprint: fill, outline and front arrow, stacked at z-order `z` (`px`: metres per
+    pixel)."""
     floor_cover = colour == CLASS_COLOURS[0][2]
     ax.add_patch(PathPatch(polygon_path(fp), facecolor=colour, edgecolor=_darker(colour),
                            linewidth=0.8, alpha=0.6 if floor_cover else 0.85, zorder=z))
     c = np.asarray(fp.centroid.coords[0])
-    size = math.sqrt(max(fp.area, 1e-6))
     front = obj.pose.front()[:2]
-    px = scale / (0.7 * TARGET_WIDTH_PX)  # metres per pixel, roughly
-    arrow_len = float(np.clip(0.45 * size, 10 * px, 0.5))
+    arrow_len = float(np.clip(0.45 * np.sqrt(max(fp.area, 1e-6)), 10 * px, 0.5))
     ax.add_patch(FancyArrow(c[0], c[1], *(arrow_len * front), width=2.0 * px,
                             head_width=8.0 * px, head_length=min(7.0 * px, 0.5 * arrow_len),
                             length_includes_head=True, color="#1f1f1f", alpha=0.7,
                             linewidth=0, zorder=z + 500))
-    small = fp.area < 0.15
-    if not label:
-        return
-    # the label sits behind the arrow's tail so the two never overlap
-    at = c - front * (9.0 * px)
-    ax.text(at[0], at[1], short_label(obj.name), fontsize=5.5 if small else 6.5,
-            ha="center", va="center", color="#202020", zorder=z + 1000,
-            path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
+
+
+def _label_objects(placer: LabelPlacer, objs: list[SceneObject],
+                   footprints: dict[str, sg.Polygon], min_area: float) -> None:
+    """Label objects of at least `min_area` m^2, largest first, each behind its front arrow's
+    tail (or on its centre) where the label collides with no other; the rest go unlabelled."""
+    px = _metres_per_pixel(placer.ax)
+    big = sorted((o for o in objs if footprints[o.name].area >= min_area),
+                 key=lambda o: (-footprints[o.name].area, o.name))
+    for obj in big:
+        fp = footprints[obj.name]
+        c = np.asarray(fp.centroid.coords[0])
+        tail = c - obj.pose.front()[:2] * (9.0 * px)
+        placer.place([short_label(obj.name)], [(tail[0], tail[1]), (c[0], c[1])],
+                     fontsize=5.5 if fp.area < SMALL_AREA else 6.5, color="#202020",
+                     path_effects=[pe.withStroke(linewidth=1.8, foreground="white")])
+
+
+def _metres_per_pixel(ax: Axes) -> float:
+    """The plan's scale on `ax` (equal aspect, final position)."""
+    (x0, _), (x1, _) = ax.transData.transform([(0.0, 0.0), (1.0, 0.0)])
+    return 1.0 / max(float(x1 - x0), 1e-9)
 
 
 def _darker(colour: str, factor: float = 0.65) -> tuple[float, float, float]:
