@@ -10,10 +10,13 @@ from indoorgen.model.floorplan_io import from_json
 from indoorgen.model.scene import Scene
 
 
-def scene_architecture(scene: Scene) -> tuple[dict[str, RoomGeometry], Architecture | None]:
-    """(room geometry by room name, the solidified home or None for a single room)."""
+def scene_architecture(scene: Scene, doors: str | None = None
+                       ) -> tuple[dict[str, RoomGeometry], Architecture | None]:
+    """(room geometry by room name, the solidified home or None for a single room); `doors`
+    (a mode of `architecture.doors.DOOR_MODES`) re-stands a home's leaves instead of using
+    the recorded values."""
     if scene.floorplan is not None:
-        doors = scene.doors if scene.doors is not None else "closed"
-        arch = solidify(from_json(scene.floorplan), seed=scene.seed, doors=doors)
+        states = doors or (scene.doors if scene.doors is not None else "closed")
+        arch = solidify(from_json(scene.floorplan), seed=scene.seed, doors=states)
         return room_geometries(arch), arch
     return {n: build_room(r) for n, r in scene.rooms.items()}, None

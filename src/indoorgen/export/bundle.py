@@ -326,15 +326,15 @@ def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
 
 
 def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
-                      variants: int = 1) -> ExportBundle:
+                      variants: int = 1, doors: str | None = None) -> ExportBundle:
     """The bundle of a saved scene without solving: the architecture rebuilt from the scene
-    (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
-    from their generators (through `cache`, an `AssetCache`, so identical objects are built
-    once)."""
+    (a home's floorplan solidified again, its door leaves as recorded or as `doors` says; a
+    room's polygon; unless `rooms` are given) and assets from their generators (through
+    `cache`, an `AssetCache`, so identical objects are built once)."""
     cache = cache or AssetCache()
     arch = None
     if rooms is None:
-        rooms, arch = scene_architecture(scene)
+        rooms, arch = scene_architecture(scene, doors)
     assets = {n: cache.full(o.generator, o.params) for n, o in scene.objects.items()}
     if arch is not None:
         return make_bundle(scene, assets, elements_from_architecture(scene, arch),
