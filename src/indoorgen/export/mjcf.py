@@ -27,6 +27,7 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
+from indoorgen.assets.protocol import Joint
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
@@ -110,6 +111,21 @@ def _collision_geom(assets: _Assets, geom: CollisionGeom, offset: np.ndarray) ->
                                "pos": _f(offset)})
 
 
+def _joint(body: ET.Element, name: str, j: Joint, damping: float,
+           ref: float | None = None) -> None:
+    """A hinge or slide <joint> of `j` at `body`'s origin: limited to its range, damped, with
+    dry friction; `ref`, when given, the joint value the body is authored at."""
+    axis = np.asarray(j.axis, float)
+    attrs = {"name": name, "type": "slide" if j.kind == "prismatic" else "hinge",
+             "axis": _f(axis / np.linalg.norm(axis)), "pos": "0 0 0",
+             "range": f"{j.lower:.6g} {j.upper:.6g}", "limited": "true"}
+    if ref is not None:
+        attrs["ref"] = f"{ref:.6g}"
+    attrs.update(damping=f"{damping:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
+                 armature="0.01")
+    ET.SubElement(body, "joint", attrs)
+
+
 def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link: str,
            frame: np.ndarray) -> None:
     pos = _f(-frame)
@@ -152,13 +168,7 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
             bname = f"{name}__{j.child}"
             b = ET.SubElement(bodies[j.parent], "body", name=bname,
                               pos=_f(frames[j.child] - frames[j.parent]))
-            axis = np.asarray(j.axis, float)
-            ET.SubElement(b, "joint", name=f"{name}__{j.name}",
-                          type="slide" if j.kind == "prismatic" else "hinge",
-                          axis=_f(axis / np.linalg.norm(axis)), pos="0 0 0",
-                          range=f"{j.lower:.6g} {j.upper:.6g}", limited="true",
-                          damping=f"{JOINT_DAMPING:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
-                          armature="0.01")
+            _joint(b, f"{name}__{j.name}", j, JOINT_DAMPING)
             _inertial(b, inertials[j.child], frames[j.child])
             _geoms(b, assets, files, name, j.child, frames[j.child])
             bodies[j.child] = b
@@ -191,13 +201,7 @@ def _leaf_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files: 
     origin = np.asarray(j.origin, float)
     name = f"{el.parent}__leaf"
     body = ET.SubElement(world, "body", name=name, pos=_f(origin))
-    axis = np.asarray(j.axis, float)
-    ET.SubElement(body, "joint", name=f"{el.parent}__{j.name}",
-                  type="slide" if j.kind == "prismatic" else "hinge",
-                  axis=_f(axis / np.linalg.norm(axis)), pos="0 0 0",
-                  range=f"{j.lower:.6g} {j.upper:.6g}", limited="true",
-                  ref=f"{el.joint_value:.6g}", damping=f"{DOOR_DAMPING:g}",
-                  frictionloss=f"{JOINT_FRICTIONLOSS:g}", armature="0.01")
+    _joint(body, f"{el.parent}__{j.name}", j, DOOR_DAMPING, el.joint_value)
     _inertial(body, bundle.element_inertial(el), origin)
     _element_geoms(body, assets, files, el, -origin)
     return name
