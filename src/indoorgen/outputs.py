@@ -13,7 +13,7 @@ import os
 import re
 import shutil
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from indoorgen.errors import OutputError
@@ -59,14 +59,15 @@ def check_writable(out: Path, directory: bool = True, *, replacing: bool = True)
 
 
 @contextlib.contextmanager
-def atomic_dir(out: Path, *, merge: bool = False) -> Iterator[Path]:
+def atomic_dir(out: Path, *, merge: bool = False, drop: Iterable[str] = ()) -> Iterator[Path]:
     """Yield a fresh temporary directory; on success its entries replace `out`'s, on any error
     it is removed and `out` is left as it was.
 
     Only entries indoorgen wrote are ever replaced or dropped: every other entry of `out` (the
     user's files) is carried over into the new directory. `merge` keeps indoorgen's earlier
     entries too unless rewritten (an export adding a format beside the others); otherwise the
-    result holds exactly what was written now plus the user's files. If something written now
+    result holds exactly what was written now plus the user's files; `drop` names earlier
+    entries of indoorgen's that a merge must not keep (now stale). If something written now
     would overwrite a user's entry of the same name, OutputError is raised and nothing changes.
     """
     out = Path(out)
@@ -80,7 +81,7 @@ def atomic_dir(out: Path, *, merge: bool = False) -> Iterator[Path]:
         raise OutputError(f"cannot write to {out}: {e.strerror}") from None
     try:
         yield tmp
-        _swap_in(tmp, out, merge)
+        _swap_in(tmp, out, merge, frozenset(drop))
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -101,7 +102,7 @@ def _write_record(directory: Path, entries: set[str]) -> None:
                                                 "entries": sorted(entries)}, indent=1) + "\n")
 
 
-def _swap_in(tmp: Path, out: Path, merge: bool) -> None:
+def _swap_in(tmp: Path, out: Path, merge: bool, drop: frozenset[str]) -> None:
     """Put the finished `tmp` in `out`'s place, carrying over the entries of `out` to keep."""
     new = {p.name for p in tmp.iterdir()}
     if not out.exists():
@@ -114,7 +115,7 @@ def _swap_in(tmp: Path, out: Path, merge: bool) -> None:
     if clash:
         raise OutputError(f"{out} holds {', '.join(clash[:5])}, which indoorgen did not write; "
                           "move them or choose another output directory")
-    keep = {e for e in old_entries - new if merge or e not in ours}
+    keep = {e for e in old_entries - new if (merge and e not in drop) or e not in ours}
     _write_record(tmp, new | (keep & ours))
     old = out.with_name(f".{out.name}.old-{os.getpid()}")
     out.rename(old)

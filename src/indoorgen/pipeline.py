@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from indoorgen.architecture.doors import check_door_mode
 from indoorgen.architecture.room import RoomGeometry, build_room, place_door, rectangle
 from indoorgen.architecture.solidify import room_geometries, solidify
 from indoorgen.assets import Asset
@@ -155,10 +156,12 @@ class HomeConfig:
     floorplan: dict | None = None
     steps: dict[str, int] | None = None
     check: bool = False
+    #: how the room doors stand: "open", "closed" or "random" (architecture.doors.DOOR_MODES)
+    doors: str = "open"
 
     def to_json(self) -> dict:
         """The settings as recorded in scene.json (a predefined floorplan as a flag)."""
-        return {"home": True, "floors": self.floors,
+        return {"home": True, "floors": self.floors, "doors": self.doors,
                 "rooms": self.rooms if isinstance(self.rooms, (str, type(None))) else dict(self.rooms),
                 "area": self.area, "contour": self.contour,
                 "predefined_floorplan": self.floorplan is not None, "steps": self.steps}
@@ -169,6 +172,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
     furnished by its program. Same seed + config + version => same scene."""
     cfg = config or HomeConfig()
+    check_door_mode(cfg.doors)
     t0 = time.perf_counter()
     if cfg.floorplan is not None:
         plan = from_json(cfg.floorplan)
@@ -177,7 +181,8 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
         plan = generate_floorplan(seed, FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms,
                                                         area=cfg.area, contour=cfg.contour))
     t1 = time.perf_counter()
-    arch = solidify(plan, seed=seed)  # seeded: doors, windows and stairs from the catalogue
+    # seeded: doors, windows and stairs from the catalogue, door leaves as cfg.doors says
+    arch = solidify(plan, seed=seed, doors=cfg.doors)
     geometry = room_geometries(arch)
     problems = {name: _problem(ROOM_PROGRAMS[g.room.room_type], name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
@@ -185,6 +190,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
                    check=cfg.check, progress=progress)
     gen.scene.floorplan = floorplan_json(plan)
+    gen.scene.doors = arch.door_states
     gen.architecture = arch
     _assess(gen)
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)

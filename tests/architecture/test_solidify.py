@@ -120,17 +120,22 @@ def test_catalogue_doors_windows_and_stairs(two_storeys, catalogue_arch):
 def test_catalogue_elements_carry_their_own_collision_pieces(catalogue_arch):
     """Doors, windows and stairs from the catalogue bring the asset's convex pieces (placed in
     the world like the mesh), so exporters never decompose them; each piece is convex and lies
-    within the element's mesh bounds."""
+    within the element's mesh bounds (a door's leaf: its own pieces within the leaf)."""
     for e in catalogue_arch.elements:
         if not e.generator:
             continue
         assert e.collision, e.name
-        (mesh,) = e.meshes.values()
-        lo, hi = mesh.bounds
-        for piece in e.collision:
-            assert piece.is_watertight and piece.is_convex, e.name
-            assert np.all(piece.bounds[0] >= lo - 0.02), e.name
-            assert np.all(piece.bounds[1] <= hi + 0.02), e.name
+        assert set(e.meshes) == ({e.kind, "leaf"} if e.joint is not None else {e.kind})
+        parts = [(e.meshes[e.kind], e.collision)]
+        if e.joint is not None:
+            assert e.leaf_collision, e.name
+            parts.append((e.meshes["leaf"], e.leaf_collision))
+        for mesh, pieces in parts:
+            lo, hi = mesh.bounds
+            for piece in pieces:
+                assert piece.is_watertight and piece.is_convex, e.name
+                assert np.all(piece.bounds[0] >= lo - 0.02), e.name
+                assert np.all(piece.bounds[1] <= hi + 0.02), e.name
 
 
 @pytest.mark.slow

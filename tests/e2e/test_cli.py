@@ -98,6 +98,8 @@ def bad_generator(room):
     (["--room", "bedroom", "--floors", "2"], "give options of one kind only"),
     (["--floors", "0"], "floors"),
     (["--rooms", "bedroom=2,ballroom=1"], "ballroom"),
+    (["--doors", "ajar"], "doors 'ajar' is not a door state; valid: open, closed, random"),
+    (["--room", "bedroom", "--doors", "open"], "give options of one kind only"),
     (["--floorplan", "{prog}"], "not a floorplan.json"),
     (["--polygon", "[[0,0],[1,1],[2,2]]"], "area"),
     (["--program", "{prog}:bad_range"], "in_range(5, 2)"),

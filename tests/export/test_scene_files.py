@@ -6,12 +6,15 @@ import json
 
 import pytest
 
+from indoorgen.errors import ConfigError
 from indoorgen.export import formats, write_formats
 from indoorgen.export.bundle import bundle_from_scene
 from indoorgen.export.scene_files import SceneFileError, export_scene, read_scene
+from indoorgen.model.floorplan_io import from_json, to_json
 from indoorgen.model.scene import Scene
 from indoorgen.outputs import RECORD
 from support.cli import run
+from support.plans import apartment
 
 
 def test_export_reexports_a_saved_scene(exported, tmp_path):
@@ -91,3 +94,32 @@ def test_bad_input_one_line_exit_2(tmp_path, args, needle):
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and needle in lines[0], r.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["afile", "bad.json", "scene.json"]
+
+
+def test_export_restands_a_homes_doors(tmp_path):
+    """`--doors` on re-export: the leaves stand as asked in the files, scene.json records the
+    new states, and a single room (whose door has no leaf) is refused."""
+    scene = Scene(seed=5, config={"home": True, "doors": "open"},
+                  floorplan=to_json(from_json(apartment())),
+                  doors={"d0": 1.570796, "d1": 1.570796, "d2": 1.570796, "entrance": 1.570796})
+    (tmp_path / "scene.json").write_text(scene.dumps())
+    (tmp_path / "report.json").write_text("{}")
+    out, _ = export_scene(tmp_path, tmp_path / "shut", "mjcf", texture_resolution=0,
+                          doors="closed")
+    saved = json.loads((out / "scene.json").read_text())
+    assert saved["config"]["doors"] == "closed"
+    assert saved["doors"] == {"d0": 0.0, "d1": 0.0, "d2": 0.0, "entrance": 0.0}
+    assert not (out / "report.json").exists()  # its navigation measured the open doors
+    text = (out / "scene.xml").read_text()
+    assert text.count('name="d0__leaf_joint"') == 1 and 'ref="0"' in text
+    # without --doors the recorded states are kept
+    out2, _ = export_scene(tmp_path, tmp_path / "kept", "mjcf", texture_resolution=0)
+    assert (out2 / "scene.json").read_bytes() == (tmp_path / "scene.json").read_bytes()
+    assert 'ref="1.5708"' in (out2 / "scene.xml").read_text()
+    room = Scene(seed=1)
+    (tmp_path / "room").mkdir()
+    (tmp_path / "room" / "scene.json").write_text(room.dumps())
+    with pytest.raises(ConfigError, match="single room"):
+        export_scene(tmp_path / "room", None, "mjcf", doors="open")
+    with pytest.raises(ConfigError, match="'ajar'"):
+        export_scene(tmp_path, None, "mjcf", doors="ajar")

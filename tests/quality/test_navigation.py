@@ -89,6 +89,18 @@ def test_an_open_door_links_two_rooms():
     assert narrow["failures"] == ["room b is not reachable from the entrance"]
 
 
+def test_a_shut_door_cuts_off_the_room_behind_an_open_one_does_not():
+    """scene.json's door states: a leaf recorded shut (0) blocks its passage, an open one
+    (its joint value) does not; the front door shut still lets the agent start inside."""
+    for doors, cut_off in (({"d": 1.5708, "entrance": 0.0}, False),
+                           ({"d": 0.0, "entrance": 1.5708}, True)):
+        sc, geo = scene_of(_two_rooms(0.9))
+        sc.doors = doors
+        rep = navigation_report(sc, geo, BoxCache())
+        assert rep["unreachable_rooms"] == (["b"] if cut_off else []), doors
+        assert rep["unreachable_doors"] == (["d"] if cut_off else []), doors
+
+
 def test_furniture_against_a_door_cuts_off_the_room_behind():
     rep = _report(_two_rooms(0.9), [box("wardrobe", "b", 4.5, 1.5, (0.6, 1.6, 2.0))])
     assert rep["unreachable_rooms"] == ["b"] and rep["unreachable_doors"] == ["d"]

@@ -8,6 +8,9 @@ a railing runs along Y. Each fixture here samples the generator's free parameter
 seed, pins the ones the plan fixes (width, height, wall thickness, rise, run), and places the
 asset on the plan's wall, flight or opening. `None` comes back when a generator is missing or
 rejects the plan's values, and the caller falls back to the simple parametric solids.
+
+A door's leaf is kept apart from its frame (`Fixture.leaf`, `leaf_collision`, `joint`, all in
+world coordinates at the shut pose), so the home's exporters make it an articulated body.
 """
 from __future__ import annotations
 
@@ -18,7 +21,9 @@ from typing import Any
 import numpy as np
 import trimesh
 
+from indoorgen.architecture.doors import placed_joint
 from indoorgen.assets import get_factory
+from indoorgen.assets.protocol import Joint
 from indoorgen.assets.shapes.architectural import opening_size
 from indoorgen.errors import IndoorGenError
 from indoorgen.rng import stream
@@ -36,6 +41,11 @@ class Fixture:
     opening: tuple[float, float] | None = None  # the rough opening (width, height) it needs
     #: the asset's own convex collision pieces, placed like `mesh` (what simulators collide)
     collision: list[trimesh.Trimesh] = field(default_factory=list)
+    #: a door's moving leaf: its mesh and convex pieces (shut, world coordinates; `mesh` and
+    #: `collision` then hold the frame alone) and its joint in world coordinates
+    leaf: trimesh.Trimesh | None = None
+    leaf_collision: list[trimesh.Trimesh] = field(default_factory=list)
+    joint: Joint | None = None
 
 
 def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
@@ -52,22 +62,42 @@ def _build(generator: str, seed: int, path: tuple, fixed: dict[str, Any]):
         return None
 
 
-def _fixture(generator: str, params: dict, asset, x_axis: np.ndarray, origin: np.ndarray,
-             opening: tuple[float, float] | None = None) -> Fixture:
-    """`asset` placed with its local +X rotated onto `x_axis` (2D, horizontal) and its origin
-    moved to `origin`; its collision pieces go along."""
+def _placement(x_axis: np.ndarray, origin: np.ndarray) -> np.ndarray:
+    """The 4x4 transform turning local +X onto `x_axis` (2D, horizontal), origin to `origin`."""
     m = np.eye(4)
     c, s = float(x_axis[0]), float(x_axis[1])
     m[:2, :2] = [[c, -s], [s, c]]
     m[:3, 3] = origin
+    return m
 
-    def placed(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
-        out = mesh.copy()
-        out.apply_transform(m)
-        return out
 
-    return Fixture(generator, params, placed(asset.mesh), opening,
-                   [placed(piece) for _, piece in asset.collision])
+def _placed(mesh: trimesh.Trimesh, m: np.ndarray) -> trimesh.Trimesh:
+    out = mesh.copy()
+    out.apply_transform(m)
+    return out
+
+
+def _fixture(generator: str, params: dict, asset, x_axis: np.ndarray, origin: np.ndarray,
+             opening: tuple[float, float] | None = None) -> Fixture:
+    """`asset` placed with its local +X rotated onto `x_axis` (2D, horizontal) and its origin
+    moved to `origin`; its collision pieces go along."""
+    m = _placement(x_axis, origin)
+    return Fixture(generator, params, _placed(asset.mesh, m), opening,
+                   [_placed(piece, m) for _, piece in asset.collision])
+
+
+def _door_fixture(generator: str, params: dict, asset, x_axis: np.ndarray, origin: np.ndarray,
+                  opening: tuple[float, float]) -> Fixture:
+    """A door set placed like `_fixture`, its leaf (the child of its one joint) kept apart from
+    the frame; a door without a joint stays one piece."""
+    if len(asset.joints) != 1:
+        return _fixture(generator, params, asset, x_axis, origin, opening)
+    joint = asset.joints[0]
+    m = _placement(x_axis, origin)
+    frame = [_placed(p, m) for link, p in asset.collision if link != joint.child]
+    leaf = [_placed(p, m) for link, p in asset.collision if link == joint.child]
+    return Fixture(generator, params, _placed(asset.link_mesh(joint.parent), m), opening, frame,
+                   _placed(asset.link_mesh(joint.child), m), leaf, placed_joint(joint, m))
 
 
 def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: float,
@@ -82,8 +112,8 @@ def door(seed: int, name: str, exterior: bool, center, into: np.ndarray, width: 
         return None
     f, params, asset = got
     c = np.asarray(center, float)
-    return _fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
-                    opening_size(params))
+    return _door_fixture(gen, params, asset, into, np.array([c[0], c[1], elevation]),
+                         opening_size(params))
 
 
 def window(seed: int, name: str, center, inward: np.ndarray, width: float, height: float,

@@ -18,11 +18,15 @@ as they furnish a single room:
   into), a strip in front of open connections, and the stairs with their landings.
 
 Doors, windows and stairs are separate `Element`s (a simple parametric door leaf with casing, a
-window frame with glass, straight stair flights with guard rails round the floor opening).
+window frame with glass, straight stair flights with guard rails round the floor opening). A
+catalogue door's leaf is its own part ("leaf", with its convex pieces in `leaf_collision`) on a
+`joint` (world coordinates, 0 = shut), standing at `state` (`architecture.doors`: open, closed,
+random, or the values a saved scene recorded); `Architecture.door_states` collects them.
 """
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import manifold3d
@@ -31,6 +35,7 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.architecture import fixtures
+from indoorgen.architecture.doors import check_door_mode, door_value, posed
 from indoorgen.architecture.room import (
     SLAB_THICKNESS,
     RoomGeometry,
@@ -50,7 +55,7 @@ from indoorgen.architecture.walls import (
     wall_footprint,
     window_frame,
 )
-from indoorgen.assets.protocol import Surface
+from indoorgen.assets.protocol import Joint, Surface
 from indoorgen.model.floorplan import DoorSpec, Floorplan, StairSpec, Storey
 from indoorgen.model.polygons import cross_2d, largest_polygon
 from indoorgen.model.scene import Door, Room
@@ -83,13 +88,23 @@ class Element:
     #: convex collision pieces in world coordinates (a catalogue asset's own); empty: exporters
     #: decompose `meshes` themselves
     collision: list[trimesh.Trimesh] = field(default_factory=list)
+    #: a door's leaf joint (world coordinates, 0 = shut) and the value the "leaf" part and
+    #: `leaf_collision` stand at
+    joint: Joint | None = None
+    state: float = 0.0
+    leaf_collision: list[trimesh.Trimesh] = field(default_factory=list)
 
     @classmethod
-    def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str]
-           ) -> Element:
-        """An element holding a catalogue fixture's mesh."""
-        return cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
-                   dict(fx.params), list(fx.collision))
+    def of(cls, fx, name: str, kind: str, room: str, storey: int, semantics: list[str],
+           state: float = 0.0) -> Element:
+        """An element holding a catalogue fixture's mesh (and a door's leaf at `state`)."""
+        el = cls(name, kind, room, storey, {kind: fx.mesh}, semantics, fx.generator,
+                 dict(fx.params), list(fx.collision))
+        if fx.joint is not None and fx.leaf is not None:
+            el.joint, el.state = fx.joint, float(state)
+            el.meshes["leaf"] = posed(fx.leaf, fx.joint, el.state)
+            el.leaf_collision = [posed(p, fx.joint, el.state) for p in fx.leaf_collision]
+        return el
 
 
 @dataclass
@@ -115,6 +130,11 @@ class Architecture:
     rooms: dict[str, HomeRoomGeometry]
     elements: list[Element]
     walls: WallThickness
+
+    @property
+    def door_states(self) -> dict[str, float]:
+        """Each articulated door's joint value by door name (what scene.json records)."""
+        return {e.name: round(e.state, 6) for e in self.elements if e.joint is not None}
 
 
 # --------------------------------------------------------------------------------------------
@@ -231,14 +251,19 @@ def _door_on_free_edge(free: sg.Polygon, frame: WallFrame, into: np.ndarray, wid
 
 
 def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | None = None,
-             seed: int | None = None) -> Architecture:
+             seed: int | None = None, doors: str | Mapping[str, float] = "open"
+             ) -> Architecture:
     """Build every room's geometry and the doors, windows and stairs of `fp`.
 
     `pitch` is the floor-to-floor distance (default: the difference of the first two storeys'
     elevations, or height + 2 slab thicknesses). With a `seed`, doors, windows, stairs and
     railings come from the asset catalogue (each from its own child stream of the seed); without
-    one, or where a generator is missing, they are simple parametric solids. Raises
-    InvalidGeometryError when a door or window does not sit on a suitable wall."""
+    one, or where a generator is missing, they are simple parametric solids. `doors` sets how
+    far each catalogue door's leaf stands open: a mode of `architecture.doors.DOOR_MODES` or
+    recorded joint values by door name. Raises InvalidGeometryError when a door or window does
+    not sit on a suitable wall, ConfigError for an unknown door mode."""
+    if isinstance(doors, str):
+        check_door_mode(doors)
     t = walls or WallThickness()
     if pitch is None:
         pitch = (fp.storeys[1].elevation - fp.storeys[0].elevation) if len(fp.storeys) > 1 \
@@ -249,7 +274,7 @@ def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | N
     for st in fp.stairs:
         elements += _stair_elements(st, fp, pitch, seed)
     for storey in fp.storeys:
-        rooms.update(_solidify_storey(fp, storey, t, depth, elements, seed))
+        rooms.update(_solidify_storey(fp, storey, t, depth, elements, seed, doors))
     return Architecture(fp, rooms, elements, t)
 
 
@@ -281,8 +306,17 @@ def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
     return out
 
 
+def _door_state(fx: fixtures.Fixture | None, doors: str | Mapping[str, float],
+                seed: int | None, name: str) -> float:
+    """The joint value door `name`'s leaf stands at (0 without a jointed leaf)."""
+    if fx is None or fx.joint is None:
+        return 0.0
+    return door_value(doors, seed, name, fx.joint)
+
+
 def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dict[str, int],
-                     elements: list[Element], seed: int | None) -> dict[str, HomeRoomGeometry]:
+                     elements: list[Element], seed: int | None,
+                     doors_state: str | Mapping[str, float]) -> dict[str, HomeRoomGeometry]:
     e, h = storey.elevation, storey.height
     wall_fp = wall_footprint(storey, t)
     outline = storey.contour()
@@ -321,7 +355,8 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
             dep = SWING_DEPTH if rn == swing_into else PASS_DEPTH
             add_door(rn, d.name, f, side, d.width, d.height, dep, d.width + 0.2)
         elements.append(Element.of(fx, d.name, "door", swing_into, storey.level,
-                                   ["door", "architecture"]) if fx is not None
+                                   ["door", "architecture"],
+                                   _door_state(fx, doors_state, seed, d.name)) if fx is not None
                         else _door_element(d, f, storey))
     for o in storey.openings:
         f = door_frame(storey, o, t)
@@ -347,8 +382,9 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         ow, oh = _opening(fx, en.width, en.height)
         cut[en.room].append(_box(f, ow, 3 * t.exterior, e - 0.01, e + oh))
         add_door(en.room, "entrance", f, -f.n, en.width, en.height, SWING_DEPTH, en.width + 0.2)
-        elements.append(Element.of(fx, "entrance", "door", en.room, 0, ["door", "entrance",
-                                                                       "architecture"])
+        elements.append(Element.of(fx, "entrance", "door", en.room, 0,
+                                   ["door", "entrance", "architecture"],
+                                   _door_state(fx, doors_state, seed, "entrance"))
                         if fx is not None else _door_element(
             DoorSpec("entrance", (en.room, en.room), en.center, en.width, en.height), f,
             storey))

@@ -19,6 +19,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     e.add_argument("--usd-format", choices=["usdc", "usda"], default="usdc")
     e.add_argument("--texture-resolution", type=int, default=512,
                    help="texture size in pixels (0: no textures)")
+    e.add_argument("--doors", help="re-stand a home's door leaves: open|closed|random "
+                                   "(default: as scene.json records them)")
     e.set_defaults(func=run_export)
 
 
@@ -26,6 +28,6 @@ def run_export(args: argparse.Namespace) -> int:
     """`indoorgen export`."""
     out, timings = export_scene(Path(args.scene), Path(args.out) if args.out else None,
                                 args.formats, usd_ext=args.usd_format,
-                                texture_resolution=args.texture_resolution)
+                                texture_resolution=args.texture_resolution, doors=args.doors)
     print(f"{out}: " + ", ".join(f"{k} {v:.2f} s" for k, v in timings.items()))
     return 0

@@ -9,6 +9,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from indoorgen.architecture.doors import DOOR_MODES, check_door_mode
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
@@ -26,6 +27,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     home.add_argument("--rooms", help="room counts, e.g. bedroom=2,bathroom=1")
     home.add_argument("--area", type=float, help="ground-floor area in m^2")
     home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
+    home.add_argument("--doors", help="room door leaves: " + "|".join(DOOR_MODES)
+                      + " (default open; random: each door open or shut, from the seed)")
     g.add_argument("--room",
                    help="one room of this type instead of a home: " + ", ".join(ROOM_TYPES))
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
@@ -74,7 +77,9 @@ def run_generate(args: argparse.Namespace) -> int:
         raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
     progress = not args.quiet and sys.stderr.isatty()
     room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
-    home_opts = [o for o in ("floors", "rooms", "area", "floorplan")
+    if args.doors is not None:
+        check_door_mode(args.doors)
+    home_opts = [o for o in ("floors", "rooms", "area", "floorplan", "doors")
                  if getattr(args, o) is not None]
     if room_opts and home_opts:
         raise ConfigError(f"--{room_opts[0]} makes a single room and --{home_opts[0]} a whole "
@@ -141,4 +146,4 @@ def _home_config(args: argparse.Namespace) -> HomeConfig:
                               f"({type(e).__name__}: {e})") from None
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
-                      floorplan=plan, check=args.check)
+                      floorplan=plan, check=args.check, doors=args.doors or "open")

@@ -11,7 +11,10 @@ tomorrow. A bundle holds:
   drawn deterministically from the object's `seed`, so re-exporting a saved scene.json gives
   the same materials;
 - `elements`: the architecture as `ArchElement`s (floors, walls, ceilings, doors, windows,
-  stairs...), meshes in world coordinates, each part with its material.
+  stairs...), meshes in world coordinates, each part with its material. A door's leaf is an
+  element of its own below its door (path `(..., <door>, "leaf")`) carrying the `joint` it turns
+  on (world coordinates, 0 = shut) and the `joint_value` it stands at: exporters make it a
+  moving body jointed to the static architecture.
 
 Builders: `bundle_from_generated` (a freshly generated scene), `bundle_from_scene` (a saved
 scene: rooms rebuilt with `architecture.room.build_room`, assets from the generators) and
@@ -33,7 +36,7 @@ from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
-from indoorgen.assets.protocol import Asset
+from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.export.convex import convex_parts
 from indoorgen.export.physics import Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject
@@ -85,6 +88,10 @@ class ArchElement:
     #: convex collision pieces (world coordinates) when the element brings its own (catalogue
     #: doors, windows, stairs); otherwise they are cut from `parts` on demand
     collision: list[trimesh.Trimesh] = field(default_factory=list)
+    #: a moving element (a door leaf): its joint to the static architecture (world
+    #: coordinates, 0 = shut) and the value its meshes stand at
+    joint: Joint | None = None
+    joint_value: float = 0.0
 
 
 @dataclass
@@ -116,6 +123,30 @@ class ExportBundle:
             self._memo[key] = list(element.collision) or [
                 p for part in element.parts for p in convex_parts(part.mesh)]
         return self._memo[key]
+
+    def element_inertial(self, element: ArchElement) -> Inertial:
+        """Mass, centre of mass and inertia (world coordinates) of a moving element (a door
+        leaf) from its convex pieces and its first part's material."""
+        key = ("element_inertial", element.path)
+        if key not in self._memo:
+            mesh = trimesh.util.concatenate([p.mesh for p in element.parts])
+            assert isinstance(mesh, trimesh.Trimesh)  # parts are triangle meshes
+            body = Asset(mesh, [], collision=[("base", p)
+                                              for p in self.element_pieces(element)])
+            self._memo[key] = link_inertials(body, {"body": element.parts[0].material.name}
+                                             )["base"]
+        inertial: Inertial = self._memo[key]
+        return inertial
+
+    @property
+    def static_elements(self) -> list[ArchElement]:
+        """The elements that never move (everything but door leaves)."""
+        return [e for e in self.elements if e.joint is None]
+
+    @property
+    def moving_elements(self) -> list[ArchElement]:
+        """The elements on a joint (door leaves)."""
+        return [e for e in self.elements if e.joint is not None]
 
     @property
     def objects(self) -> list[SceneObject]:
@@ -248,12 +279,21 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
         else:
             path = (f"storey_{el.storey}", groups.get(el.kind, "elements"), el.name)
         el_parts = []
+        leaf = None
         for pname, mesh in el.meshes.items():
             slot = PART_SLOTS.get(pname, "frame")
-            el_parts.append(ArchPart(pname, mesh, mats[slot], slot))
-        out.append(ArchElement(el.name, el.kind, el.room, path, el_parts,
-                               list(el.semantics) or [el.kind, "architecture"], el.room,
-                               list(getattr(el, "collision", []))))
+            part = ArchPart(pname, mesh, mats[slot], slot)
+            if pname == "leaf" and el.joint is not None:
+                leaf = part
+            else:
+                el_parts.append(part)
+        semantics = list(el.semantics) or [el.kind, "architecture"]
+        out.append(ArchElement(el.name, el.kind, el.room, path, el_parts, semantics, el.room,
+                               list(el.collision)))
+        if leaf is not None:
+            out.append(ArchElement(f"{el.name}_leaf", "door_leaf", el.room, (*path, "leaf"),
+                                   [leaf], [*semantics, "door_leaf"], el.name,
+                                   list(el.leaf_collision), el.joint, el.state))
     return out
 
 
@@ -286,15 +326,15 @@ def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
 
 
 def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
-                      variants: int = 1) -> ExportBundle:
+                      variants: int = 1, doors: str | None = None) -> ExportBundle:
     """The bundle of a saved scene without solving: the architecture rebuilt from the scene
-    (a home's floorplan solidified again, a room's polygon; unless `rooms` are given) and assets
-    from their generators (through `cache`, an `AssetCache`, so identical objects are built
-    once)."""
+    (a home's floorplan solidified again, its door leaves as recorded or as `doors` says; a
+    room's polygon; unless `rooms` are given) and assets from their generators (through
+    `cache`, an `AssetCache`, so identical objects are built once)."""
     cache = cache or AssetCache()
     arch = None
     if rooms is None:
-        rooms, arch = scene_architecture(scene)
+        rooms, arch = scene_architecture(scene, doors)
     assets = {n: cache.full(o.generator, o.params) for n, o in scene.objects.items()}
     if arch is not None:
         return make_bundle(scene, assets, elements_from_architecture(scene, arch),

@@ -1,6 +1,8 @@
 """glTF binary export (`scene.glb`) through trimesh.
 
-Node hierarchy: `world` -> `architecture` -> one node per element (its parts below) and
+Node hierarchy: `world` -> `architecture` -> one node per element (its parts below; a door's
+leaf is an element node of its own, `.../doors/<door>/leaf`, at the angle it stands, its joint
+in `extras`) and
 `world` -> `objects` -> one node per object at its pose -> one node per link -> one mesh per
 material slot. Materials are glTF PBR (base colour, metallic-roughness and normal textures);
 identical objects share their glTF meshes. Every element and object node carries its semantic
@@ -11,6 +13,7 @@ from __future__ import annotations
 import io
 import logging
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import trimesh
@@ -95,10 +98,12 @@ def build_scene(bundle: ExportBundle, textures: TextureStore) -> trimesh.Scene:
     g.update(frame_from="world", frame_to="objects", matrix=np.eye(4))
     for el in bundle.elements:
         node = "architecture/" + "/".join(el.path)
-        g.update(frame_from="architecture", frame_to=node, matrix=np.eye(4),
-                 metadata={"name": el.name, "kind": el.kind, "room": el.room,
-                           "semantics": sorted(el.semantics), "generator": el.kind,
-                           "parent": el.parent})
+        meta: dict[str, Any] = {"name": el.name, "kind": el.kind, "room": el.room,
+                "semantics": sorted(el.semantics), "generator": el.kind, "parent": el.parent}
+        if el.joint is not None:  # a door leaf, standing at its joint value
+            meta.update(joint=el.joint.kind, joint_value=round(float(el.joint_value), 6),
+                        joint_lower=float(el.joint.lower), joint_upper=float(el.joint.upper))
+        g.update(frame_from="architecture", frame_to=node, matrix=np.eye(4), metadata=meta)
         for part in el.parts:
             gname = f"{node}/{part.name}"
             scene.add_geometry(_geometry(mesh_piece(part.mesh), mats.get(part.material),

@@ -6,6 +6,10 @@
   bodies with `hinge` / `slide` joints (limits, damping and friction loss so flaps and doors
   stay shut under gravity until pushed).
 - Objects hanging from walls or ceilings: bodies welded to the world (no joint).
+- Door leaves: a body each in the world with a `hinge` / `slide` joint (range from shut, 0, to
+  fully open; `ref` the value the leaf stands at, so the model starts where the scene stands
+  it); the leaf's contacts with the static architecture are excluded (its range keeps it
+  clear of frame and walls).
 - Collision: one mesh geom per convex piece (MuJoCo hulls every mesh anyway); visual: textured
   mesh geoms that never collide (contype = conaffinity = 0, group 2).
 - Inertials are written explicitly (mass from volume x density), and contacts between the
@@ -23,7 +27,8 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle
+from indoorgen.assets.protocol import Joint
+from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
 from indoorgen.export.physics import Inertial, matrix_to_quat
@@ -33,6 +38,8 @@ log = logging.getLogger(__name__)
 TIMESTEP = 0.002
 #: joint damping (N m s/rad or N s/m) and dry friction (N m or N) of doors, drawers and lids
 JOINT_DAMPING, JOINT_FRICTIONLOSS = 2.0, 0.5
+#: damping of a room door's hinge or slide (N m s/rad or N s/m): a heavy leaf swings slowly
+DOOR_DAMPING = 5.0
 FRICTION = "0.9 0.02 0.001"
 
 
@@ -104,6 +111,21 @@ def _collision_geom(assets: _Assets, geom: CollisionGeom, offset: np.ndarray) ->
                                "pos": _f(offset)})
 
 
+def _joint(body: ET.Element, name: str, j: Joint, damping: float,
+           ref: float | None = None) -> None:
+    """A hinge or slide <joint> of `j` at `body`'s origin: limited to its range, damped, with
+    dry friction; `ref`, when given, the joint value the body is authored at."""
+    axis = np.asarray(j.axis, float)
+    attrs = {"name": name, "type": "slide" if j.kind == "prismatic" else "hinge",
+             "axis": _f(axis / np.linalg.norm(axis)), "pos": "0 0 0",
+             "range": f"{j.lower:.6g} {j.upper:.6g}", "limited": "true"}
+    if ref is not None:
+        attrs["ref"] = f"{ref:.6g}"
+    attrs.update(damping=f"{damping:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
+                 armature="0.01")
+    ET.SubElement(body, "joint", attrs)
+
+
 def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link: str,
            frame: np.ndarray) -> None:
     pos = _f(-frame)
@@ -146,13 +168,7 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
             bname = f"{name}__{j.child}"
             b = ET.SubElement(bodies[j.parent], "body", name=bname,
                               pos=_f(frames[j.child] - frames[j.parent]))
-            axis = np.asarray(j.axis, float)
-            ET.SubElement(b, "joint", name=f"{name}__{j.name}",
-                          type="slide" if j.kind == "prismatic" else "hinge",
-                          axis=_f(axis / np.linalg.norm(axis)), pos="0 0 0",
-                          range=f"{j.lower:.6g} {j.upper:.6g}", limited="true",
-                          damping=f"{JOINT_DAMPING:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
-                          armature="0.01")
+            _joint(b, f"{name}__{j.name}", j, JOINT_DAMPING)
             _inertial(b, inertials[j.child], frames[j.child])
             _geoms(b, assets, files, name, j.child, frames[j.child])
             bodies[j.child] = b
@@ -162,6 +178,33 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
                         [j.name for j in pending])
             break
     return names
+
+
+def _element_geoms(body: ET.Element, assets: _Assets, files: MeshFiles, el: ArchElement,
+                   offset: np.ndarray) -> None:
+    """Visual and collision geoms of architectural element `el` (world coordinates) moved by
+    `offset` into `body`'s frame."""
+    vis_files, col_files = files.architecture(el)
+    for vf in vis_files:
+        ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
+                                     "material": assets.material(vf.material),
+                                     "pos": _f(offset)})
+    for geom in col_files:
+        body.append(_collision_geom(assets, geom, offset))
+
+
+def _leaf_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files: MeshFiles,
+               el: ArchElement) -> str:
+    """A door leaf's body on its joint, framed at the joint's origin; returns its name."""
+    j = el.joint
+    assert j is not None  # moving elements have joints
+    origin = np.asarray(j.origin, float)
+    name = f"{el.parent}__leaf"
+    body = ET.SubElement(world, "body", name=name, pos=_f(origin))
+    _joint(body, f"{el.parent}__{j.name}", j, DOOR_DAMPING, el.joint_value)
+    _inertial(body, bundle.element_inertial(el), origin)
+    _element_geoms(body, assets, files, el, -origin)
+    return name
 
 
 def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
@@ -182,14 +225,12 @@ def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
     world = ET.SubElement(root, "worldbody")
     ET.SubElement(world, "light", name="sun", directional="true", pos="0 0 10",
                   dir="0.2 0.3 -1", diffuse="0.6 0.6 0.6")
-    for el in bundle.elements:
-        vis_files, col_files = files.architecture(el)
-        for vf in vis_files:
-            ET.SubElement(world, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
-                                          "material": assets.material(vf.material)})
-        for geom in col_files:
-            world.append(_collision_geom(assets, geom, np.zeros(3)))
+    for el in bundle.static_elements:
+        _element_geoms(world, assets, files, el, np.zeros(3))
     contact = ET.Element("contact")
+    for el in bundle.moving_elements:
+        leaf = _leaf_body(world, assets, bundle, files, el)
+        ET.SubElement(contact, "exclude", body1="world", body2=leaf)
     for obj in bundle.objects:
         names = _object_body(world, assets, bundle, files, obj.name)
         for i, a in enumerate(names):

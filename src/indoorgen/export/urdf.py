@@ -8,6 +8,12 @@ mass from volume x density (`physics.link_inertials`).
 
 `scene.urdf` holds everything in one robot whose root link is `world`: the architecture and
 every object fixed to it at its pose (link names prefixed `<object>__`). All paths are relative.
+
+Door leaves are links of their own (`<door>__leaf`) on a revolute or prismatic joint to the
+`architecture` link, with limits, effort, velocity, damping and friction. URDF has no initial
+joint state, so a leaf's link is built where the scene stands it (open, shut) and that pose is
+the joint's zero: the limits run from the shut pose (`-value`) to the fully open one
+(`upper - value`).
 """
 from __future__ import annotations
 
@@ -18,7 +24,7 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
-from indoorgen.export.bundle import ExportBundle
+from indoorgen.export.bundle import ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
 from indoorgen.export.physics import Inertial
@@ -28,6 +34,8 @@ log = logging.getLogger(__name__)
 URDF_DIR = "urdf"
 #: joint effort (N or N m) and velocity (m/s or rad/s) limits written for every joint
 EFFORT, VELOCITY = 50.0, 2.0
+#: joint damping (N m s/rad or N s/m) and friction (N m or N) of doors, drawers and lids
+DAMPING, FRICTION = 1.0, 0.1
 
 
 def _f(v) -> str:
@@ -44,13 +52,7 @@ def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, 
     asset frame, shifted by -frame into the link frame. `rel` prefixes mesh paths."""
     el = ET.SubElement(robot, "link", name=name)
     if inertial is not None:
-        ine = ET.SubElement(el, "inertial")
-        _origin(ine, inertial.com - frame)
-        ET.SubElement(ine, "mass", value=f"{inertial.mass:.6g}")
-        i = inertial.inertia
-        ET.SubElement(ine, "inertia", ixx=f"{i[0, 0]:.6g}", ixy=f"{i[0, 1]:.6g}",
-                      ixz=f"{i[0, 2]:.6g}", iyy=f"{i[1, 1]:.6g}", iyz=f"{i[1, 2]:.6g}",
-                      izz=f"{i[2, 2]:.6g}")
+        _inertial(el, inertial, frame)
     for vf in files.visuals(obj_name):
         if vf.link != link:
             continue
@@ -64,6 +66,17 @@ def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, 
     for k, (plink, geom) in enumerate(files.collisions(obj_name)):
         if plink == link:
             _collision(el, f"{link}_collision_{k}", geom, -frame, rel)
+
+
+def _inertial(link: ET.Element, inertial: Inertial, frame: np.ndarray) -> None:
+    """An <inertial> of `inertial` (asset or world coordinates) in a link frame at `frame`."""
+    ine = ET.SubElement(link, "inertial")
+    _origin(ine, inertial.com - frame)
+    ET.SubElement(ine, "mass", value=f"{inertial.mass:.6g}")
+    i = inertial.inertia
+    ET.SubElement(ine, "inertia", ixx=f"{i[0, 0]:.6g}", ixy=f"{i[0, 1]:.6g}",
+                  ixz=f"{i[0, 2]:.6g}", iyy=f"{i[1, 1]:.6g}", iyz=f"{i[1, 2]:.6g}",
+                  izz=f"{i[2, 2]:.6g}")
 
 
 def _collision(link: ET.Element, name: str, geom: CollisionGeom, offset: np.ndarray,
@@ -99,20 +112,48 @@ def _object_links(robot: ET.Element, bundle: ExportBundle, files: MeshFiles, nam
         ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
         ET.SubElement(je, "limit", lower=f"{j.lower:.6g}", upper=f"{j.upper:.6g}",
                       effort=f"{EFFORT:g}", velocity=f"{VELOCITY:g}")
-        ET.SubElement(je, "dynamics", damping="1.0", friction="0.1")
+        ET.SubElement(je, "dynamics", damping=f"{DAMPING:g}", friction=f"{FRICTION:g}")
+
+
+def _element_geometry(link: ET.Element, e: ArchElement, files: MeshFiles, offset: np.ndarray,
+                      rel: str) -> None:
+    """Visuals and collisions of architectural element `e` (world coordinates) moved by
+    `offset` into `link`'s frame."""
+    vis, col = files.architecture(e)
+    for vf in vis:
+        v = ET.SubElement(link, "visual", name=f"{'_'.join(e.path)}_{vf.slot}")
+        _origin(v, offset)
+        geo = ET.SubElement(v, "geometry")
+        ET.SubElement(geo, "mesh", filename=rel + vf.path)
+    for k, geom in enumerate(col):
+        _collision(link, f"{'_'.join(e.path)}_collision_{k}", geom, offset, rel)
 
 
 def _architecture_link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles,
                        rel: str) -> None:
+    """The static architecture as link `name`, and each door leaf as a link jointed to it."""
     el = ET.SubElement(robot, "link", name=name)
-    for e in bundle.elements:
-        vis, col = files.architecture(e)
-        for vf in vis:
-            v = ET.SubElement(el, "visual", name=f"{'_'.join(e.path)}_{vf.slot}")
-            geo = ET.SubElement(v, "geometry")
-            ET.SubElement(geo, "mesh", filename=rel + vf.path)
-        for k, geom in enumerate(col):
-            _collision(el, f"{'_'.join(e.path)}_collision_{k}", geom, np.zeros(3), rel)
+    for e in bundle.static_elements:
+        _element_geometry(el, e, files, np.zeros(3), rel)
+    for e in bundle.moving_elements:
+        j = e.joint
+        assert j is not None  # moving elements have joints
+        origin = np.asarray(j.origin, float)
+        lname = f"{e.parent}__leaf"
+        link = ET.SubElement(robot, "link", name=lname)
+        inertial = bundle.element_inertial(e)
+        _inertial(link, inertial, origin)
+        _element_geometry(link, e, files, -origin, rel)
+        je = ET.SubElement(robot, "joint", name=f"{e.parent}__{j.name}", type=j.kind)
+        _origin(je, origin)
+        ET.SubElement(je, "parent", link=name)
+        ET.SubElement(je, "child", link=lname)
+        axis = np.asarray(j.axis, float)
+        ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
+        ET.SubElement(je, "limit", lower=f"{j.lower - e.joint_value:.6g}",
+                      upper=f"{j.upper - e.joint_value:.6g}", effort=f"{EFFORT:g}",
+                      velocity=f"{VELOCITY:g}")
+        ET.SubElement(je, "dynamics", damping=f"{DAMPING:g}", friction=f"{FRICTION:g}")
 
 
 def _write(robot: ET.Element, path: Path) -> None:

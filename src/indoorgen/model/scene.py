@@ -221,6 +221,9 @@ class Scene:
     #: for a whole home, its floorplan in the floorplan.json schema (architecture is rebuilt
     #: from it); None for a single room
     floorplan: dict[str, Any] | None = None
+    #: for a whole home, each door leaf's joint value by door name (0 = shut; radians for a
+    #: hinge), so a re-export stands every leaf where it stood; None for a single room
+    doors: dict[str, float] | None = None
 
     def add_object(self, obj: SceneObject) -> None:
         """Add (or replace) `obj`, keyed by its name."""
@@ -239,6 +242,8 @@ class Scene:
             "rooms": [r.to_json() for r in self.rooms.values()],
             "objects": [o.to_json() for o in self.objects.values()],
             **({"floorplan": self.floorplan} if self.floorplan is not None else {}),
+            **({"doors": {k: _r(v) for k, v in self.doors.items()}}
+               if self.doors is not None else {}),
         }
 
     def dumps(self) -> str:
@@ -255,4 +260,6 @@ class Scene:
         for o in d["objects"]:
             s.add_object(SceneObject.from_json(o))
         s.floorplan = d.get("floorplan")
+        if d.get("doors") is not None:
+            s.doors = {str(k): float(v) for k, v in d["doors"].items()}
         return s

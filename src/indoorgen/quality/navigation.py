@@ -1,13 +1,14 @@
 """Can a robot walk from the entrance to every room, door and large object? The `navigation`
 section of report.json, the community's navigability figure and `nav_<storey>.png`.
 
-Method (issue 11): each storey's free floor on a 5 cm grid (`quality.occupancy`: rooms and open
-door passages, less stairs, stairwells and everything 0.02-1.8 m above the floor), eroded by the
-agent's radius (the cells its centre may occupy), split into 4-connected components, and flooded
-from the components just inside the entrance door (a single room: its door). A stair joins the
-components at its foot (lower storey) to those at its head (upper storey). The floor *reached*
-is what the agent's body sweeps from every reachable centre, so an empty room counts as reached
-but for its corners (each loses (1 - pi/4) r^2).
+Method (issue 11): each storey's free floor on a 5 cm grid (`quality.occupancy`: rooms and the
+passages of doors standing open (a door scene.json records as shut blocks its passage), less
+stairs, stairwells and everything 0.02-1.8 m above the floor), eroded by the agent's radius (the
+cells its centre may occupy), split into 4-connected components, and flooded from the components
+just inside the entrance door (a single room: its door). A stair joins the components at its
+foot (lower storey) to those at its head (upper storey). The floor *reached* is what the agent's
+body sweeps from every reachable centre, so an empty room counts as reached but for its corners
+(each loses (1 - pi/4) r^2).
 
 - a room is reachable when a reachable centre lies on its floor;
 - a door when reachable centres lie in front of it on each side it opens into (`APPROACH` beyond
@@ -32,6 +33,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from scipy import ndimage
 
+from indoorgen.architecture.doors import SHUT
 from indoorgen.architecture.room import RoomGeometry
 from indoorgen.architecture.solidify import Architecture
 from indoorgen.assets.cache import AssetCache
@@ -127,12 +129,13 @@ def occupancies(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCac
     room_map = _room_map(scene, rooms)
     fp = _floorplan(scene, architecture)
     levels = sorted({r.storey for r in room_map.values()})
+    shut = [n for n, v in (scene.doors or {}).items() if v <= SHUT]
     out = {}
     for lv in levels:
         elevation = next(r.elevation for r in room_map.values() if r.storey == lv)
         out[lv] = storey_occupancy(scene, cache, lv, rooms=room_map, floorplan=fp,
                                    extra_obstacles=_railings(architecture, lv, elevation),
-                                   cell=cell)
+                                   shut=shut, cell=cell)
     return out
 
 

@@ -2,11 +2,11 @@
 
 Per storey, at `cell` metres (5 cm by default), the free floor is the union of the storey's room
 floor polygons (`scene.Room.polygon` is the floor inside the wall faces, so walls are already
-out) plus each door's opening through its wall (doors count as open: navigation measures the
-layout, not the leaves), minus the stair flight on the storey it starts from and the stairwell
-on the storey above, minus every obstacle between `BAND` heights above that storey's floor:
-objects (each convex placeholder piece clipped to the band, its outline the convex hull of the
-clipped piece) and railings. Windows are part of the walls.
+out) plus each door's opening through its wall (an open door's leaf stands in its swing zone,
+which the solver keeps free; a shut door's passage is left out), minus the stair flight on the
+storey it starts from and the stairwell on the storey above, minus every obstacle between `BAND`
+heights above that storey's floor: objects (each convex placeholder piece clipped to the band,
+its outline the convex hull of the clipped piece) and railings. Windows are part of the walls.
 
 `erode` keeps the cells an agent's centre can occupy; `cover` is the floor its body sweeps from
 a set of centres. Both use scipy's Euclidean distance transform on cell centres.
@@ -213,11 +213,12 @@ def object_obstacles(scene: Scene, cache: AssetCache, level: int, elevation: flo
 
 def storey_occupancy(scene: Scene, cache: AssetCache, level: int, *,
                      rooms: Mapping[str, Room] | None = None, floorplan: Floorplan | None = None,
-                     extra_obstacles: Iterable[sg.Polygon] = (), cell: float = 0.05
-                     ) -> StoreyOccupancy:
-    """The occupancy grid of storey `level` of `scene`: rooms and door passages, less stair
-    footprints and stairwells (from `floorplan`'s stairs), objects and `extra_obstacles`
-    (e.g. railings' outlines in the band). `rooms` defaults to `scene.rooms`."""
+                     extra_obstacles: Iterable[sg.Polygon] = (), shut: Iterable[str] = (),
+                     cell: float = 0.05) -> StoreyOccupancy:
+    """The occupancy grid of storey `level` of `scene`: rooms and the passages of doors not
+    `shut` (names), less stair footprints and stairwells (from `floorplan`'s stairs), objects
+    and `extra_obstacles` (e.g. railings' outlines in the band). `rooms` defaults to
+    `scene.rooms`."""
     here = {n: r for n, r in sorted((rooms or scene.rooms).items()) if r.storey == level}
     if not here:
         raise ValueError(f"scene has no room on storey {level}")
@@ -226,7 +227,8 @@ def storey_occupancy(scene: Scene, cache: AssetCache, level: int, *,
     doors = door_sites(here.values())
     holes = [sg.Polygon(st.polygon) for st in (floorplan.stairs if floorplan else [])
              if level in (st.from_level, st.to_level)]
-    walkable = [*polys.values(), *(d.passage for d in doors.values())]
+    shut = set(shut)
+    walkable = [*polys.values(), *(d.passage for n, d in doors.items() if n not in shut)]
     grid = Grid.covering(shapely.union_all(walkable).bounds, cell)
     floor = grid.rasterise(walkable) & ~grid.rasterise(holes)
     blocking = [p for ps in object_obstacles(scene, cache, level, elevation).values() for p in ps]

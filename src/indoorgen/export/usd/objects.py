@@ -15,7 +15,13 @@ from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
 from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names
 from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
 from indoorgen.export.usd.materials import Looks, bind_slots
-from indoorgen.export.usd.prims import define_mesh, sanitize_name, tag_prim, unique_names
+from indoorgen.export.usd.prims import (
+    define_mesh,
+    rigid_body,
+    sanitize_name,
+    tag_prim,
+    unique_names,
+)
 from indoorgen.model.scene import SceneObject
 
 log = logging.getLogger(__name__)
@@ -79,7 +85,7 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
                 _write_lights(stage, prim.GetPath(), asset)
             if physics and not fixed:
                 assert inertial is not None  # computed whenever physics is on
-                _rigid_body(prim, inertial["base"])
+                rigid_body(prim, inertial["base"])
         if asset.joints:
             _write_lights(stage, prim.GetPath(), asset)
 
@@ -124,18 +130,6 @@ def _write_link(stage: Usd.Stage, path: Sdf.Path, asset: Asset, link: str,
                     UsdPhysics.Tokens.convexHull)
 
 
-def _rigid_body(prim: Usd.Prim, inertial: Inertial) -> None:
-    """RigidBodyAPI + MassAPI (mass, centre of mass, principal inertia and axes)."""
-    UsdPhysics.RigidBodyAPI.Apply(prim)
-    mass = UsdPhysics.MassAPI.Apply(prim)
-    mass.CreateMassAttr(float(inertial.mass))
-    mass.CreateCenterOfMassAttr(Gf.Vec3f(*map(float, inertial.com)))
-    moments, axes = inertial.diagonalised()
-    mass.CreateDiagonalInertiaAttr(Gf.Vec3f(*map(float, moments)))
-    q = matrix_to_quat(axes)
-    mass.CreatePrincipalAxesAttr(Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:]))))
-
-
 def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset: Asset,
                        mats: dict[str, MatRef], looks: Looks, cache: _ObjectMeshes,
                        inertials: dict[str, Inertial] | None, physics: bool, fixed: bool
@@ -150,7 +144,7 @@ def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset
         _write_link(stage, lp, asset, link, mats, looks, cache, physics)
         link_paths[link] = lp
         if physics and inertials is not None:
-            _rigid_body(stage.GetPrimAtPath(lp), inertials[link])
+            rigid_body(stage.GetPrimAtPath(lp), inertials[link])
     if not physics:
         return
     UsdPhysics.ArticulationRootAPI.Apply(stage.GetPrimAtPath(path))

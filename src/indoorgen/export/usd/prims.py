@@ -1,6 +1,6 @@
 """The USD building blocks every indoorgen stage uses: prim names, the contract's
-`indoorgen:*` attributes and semantic labels, triangle meshes, a new Z-up stage in metres, and
-writing a stage to a file."""
+`indoorgen:*` attributes and semantic labels, triangle meshes, rigid bodies with their mass, a
+new Z-up stage in metres, and writing a stage to a file."""
 from __future__ import annotations
 
 import re
@@ -9,9 +9,10 @@ from os import PathLike
 
 import numpy as np
 import trimesh
-from pxr import Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
+from pxr import Gf, Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
 
 from indoorgen.errors import OutputError
+from indoorgen.export.physics import Inertial, matrix_to_quat
 
 ATTR_GENERATOR = "indoorgen:generator"
 ATTR_ROOM = "indoorgen:room"
@@ -106,3 +107,15 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
             "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.faceVarying)
         pv.Set(Vt.Vec2fArray.FromNumpy(np.ascontiguousarray(uv.reshape(-1, 2), np.float32)))
     return usd_mesh
+
+
+def rigid_body(prim: Usd.Prim, inertial: Inertial) -> None:
+    """RigidBodyAPI + MassAPI (mass, centre of mass, principal inertia and axes)."""
+    UsdPhysics.RigidBodyAPI.Apply(prim)
+    mass = UsdPhysics.MassAPI.Apply(prim)
+    mass.CreateMassAttr(float(inertial.mass))
+    mass.CreateCenterOfMassAttr(Gf.Vec3f(*map(float, inertial.com)))
+    moments, axes = inertial.diagonalised()
+    mass.CreateDiagonalInertiaAttr(Gf.Vec3f(*map(float, moments)))
+    q = matrix_to_quat(axes)
+    mass.CreatePrincipalAxesAttr(Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:]))))

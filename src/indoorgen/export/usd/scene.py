@@ -7,6 +7,8 @@ Stage (upAxis Z, metersPerUnit 1, defaultPrim /World)::
     /World/Prototypes/<proto>                    class prims: meshes shared by identical objects
     /World/Architecture/<room>/<element>         Xform per element (floor, ceiling, wall_<i>,
                                                  doors, windows, stairs), "mesh" Mesh(es) below
+        .../doors/<door>/leaf                    a door's leaf: rigid body, convex collision
+                                                 pieces, joint (usd/doors.py)
     /World/Objects/<object>                      Xform: translate + rotateZ (degrees)
         mesh                                     render mesh (object frame), GeomSubsets per
                                                  material slot (or an instance of a prototype)
@@ -37,6 +39,7 @@ from indoorgen.errors import OutputError
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, elements_from_rooms, make_bundle
 from indoorgen.export.meshes import corner_normals, mesh_uv
 from indoorgen.export.textures import TextureStore
+from indoorgen.export.usd.doors import write_leaf_physics
 from indoorgen.export.usd.materials import Looks
 from indoorgen.export.usd.objects import write_objects
 from indoorgen.export.usd.prims import define_mesh, export_stage, new_stage, sanitize_name, tag_prim
@@ -156,10 +159,12 @@ def _write_architecture(stage: Usd.Stage, bundle: ExportBundle, looks: Looks,
             m = define_mesh(stage, mp, piece.mesh, mesh_uv(piece.mesh), corner_normals(piece.mesh))
             UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(
                 looks.get(piece.material, piece.slot in EMISSIVE_SLOTS))
-            if physics:
+            if physics and el.joint is None:
                 UsdPhysics.CollisionAPI.Apply(m.GetPrim())
                 UsdPhysics.MeshCollisionAPI.Apply(m.GetPrim()).CreateApproximationAttr(
                     UsdPhysics.Tokens.none)
+        if physics and el.joint is not None:
+            write_leaf_physics(stage, path, path.GetParentPath(), el, bundle)
 
 
 def _tag_room(prim: Usd.Prim, room: str, bundle: ExportBundle) -> None:
