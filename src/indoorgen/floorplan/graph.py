@@ -150,12 +150,14 @@ def grow_storey(rng: np.random.Generator, level: int) -> tuple[nx.Graph, dict[in
     queue = [0]
     while queue and g.number_of_nodes() < 3 * MAX_ROOMS_PER_STOREY:
         i = queue.pop(0)
+        # a balcony is a leaf: the rooms the grammar hangs on it go on its parent instead
+        host = parent[i] if g.nodes[i]["type"] == BALCONY else i
         for child_type, spec in table.get(g.nodes[i]["type"], {}).items():
             for _ in range(_draw_count(rng, spec)):
                 j = g.number_of_nodes()
                 g.add_node(j, type=child_type)
-                g.add_edge(i, j)
-                parent[j] = i
+                g.add_edge(host, j)
+                parent[j] = host
                 queue.append(j)
     _share_hallways(rng, g, parent)
     return g, parent
@@ -169,7 +171,8 @@ def _share_hallways(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int
         if not halls:
             continue
         for c in kids:
-            if g.nodes[c]["type"] in (HALLWAY, KITCHEN) or rng.random() >= HALLWAY_SHARE:
+            if g.nodes[c]["type"] in (HALLWAY, KITCHEN, BALCONY) or \
+                    rng.random() >= HALLWAY_SHARE:
                 continue
             h = halls[int(rng.integers(len(halls)))]
             g.remove_edge(p, c)
@@ -236,11 +239,13 @@ def _repair_counts(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]],
     return True
 
 
-def privacy_problems(home: nx.Graph) -> list[str]:
+def privacy_problems(home: nx.Graph, entrance: str | None = None) -> list[str]:
     """Bathroom privacy (D.1) on a whole-home graph; an empty list when respected.
 
     - an en-suite bathroom (one next to a bedroom) opens onto that bedroom and closets only;
-    - every bedroom reaches a bathroom without walking through another bedroom.
+    - every bedroom reaches a bathroom without walking through another bedroom;
+    - a guest reaches a bathroom from the entrance (``entrance``, default: the graph's first
+      living room) without walking through a bedroom (an en-suite comes on top).
     """
     out = []
     types = {n: room_type_of(n) for n in home.nodes}
@@ -255,6 +260,24 @@ def privacy_problems(home: nx.Graph) -> list[str]:
         reach = nx.node_connected_component(home.subgraph(allowed), bed)
         if baths and not reach & baths:
             out.append(f"{bed} reaches no bathroom without crossing another bedroom")
+    start = entrance if entrance is not None else next(
+        (n for n in sorted(home.nodes) if types[n] == LIVING_ROOM), None)
+    if baths and start in home and types[start] != BEDROOM:
+        shared = home.subgraph(n for n in home.nodes if types[n] != BEDROOM)
+        if not nx.node_connected_component(shared, start) & baths:
+            out.append("every bathroom is behind a bedroom")
+    return out
+
+
+def balcony_problems(home: nx.Graph) -> list[str]:
+    """Balconies not entered from a living room or a bedroom only."""
+    out = []
+    for b in sorted(n for n in home.nodes if room_type_of(n) == BALCONY):
+        others = sorted(n for n in home.neighbors(b)
+                        if room_type_of(n) not in (LIVING_ROOM, BEDROOM))
+        if others or not home.degree(b):
+            out.append(f"{b} is entered from {others or 'nowhere'}, not a living room or "
+                       "bedroom")
     return out
 
 
@@ -276,7 +299,8 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
     for t in (BATHROOM, KITCHEN):
         if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
-    out += privacy_problems(home)
+    out += privacy_problems(home, hg.entrance)
+    out += balcony_problems(home)
     if counts:
         have = hg.type_counts()
         for t, n in sorted(counts.items()):
