@@ -144,12 +144,13 @@ def home_problems(fp: Floorplan, wall_half: float = WALL_HALF) -> list[str]:
     behind a bedroom."""
     g = fp.connection_graph()
     out = _stair_problems(fp, wall_half) + _garage_problems(fp, g) + _balcony_problems(fp)
-    out += balcony_problems(g)
+    types = {r.name: r.type for _, r in fp.rooms()}
+    out += balcony_problems(g, types)
     if fp.entrance is not None:
         t = fp.storey_of(fp.entrance.room).room(fp.entrance.room).type
         if t not in ENTRANCE_TYPES:
             out.append(f"the front door opens into a {t}, not a hallway or living room")
-    out += privacy_problems(g, fp.entrance.room if fp.entrance is not None else None)
+    out += privacy_problems(g, fp.entrance.room if fp.entrance is not None else None, types)
     return out
 
 

@@ -239,16 +239,19 @@ def _repair_counts(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]],
     return True
 
 
-def privacy_problems(home: nx.Graph, entrance: str | None = None) -> list[str]:
+def privacy_problems(home: nx.Graph, entrance: str | None = None,
+                     types: dict[str, str] | None = None) -> list[str]:
     """Bathroom privacy (D.1) on a whole-home graph; an empty list when respected.
 
     - an en-suite bathroom (one next to a bedroom) opens onto that bedroom and closets only;
     - every bedroom reaches a bathroom without walking through another bedroom;
     - a guest reaches a bathroom from the entrance (``entrance``, default: the graph's first
       living room) without walking through a bedroom (an en-suite comes on top).
+
+    `types` gives the rooms' types by name (default: read off the names, ``<type>_<k>``).
     """
     out = []
-    types = {n: room_type_of(n) for n in home.nodes}
+    types = types or {n: room_type_of(n) for n in home.nodes}
     for b in sorted(n for n, t in types.items() if t == BATHROOM):
         beds = [n for n in home.neighbors(b) if types[n] == BEDROOM]
         others = [n for n in home.neighbors(b) if types[n] not in (BEDROOM, CLOSET)]
@@ -269,12 +272,13 @@ def privacy_problems(home: nx.Graph, entrance: str | None = None) -> list[str]:
     return out
 
 
-def balcony_problems(home: nx.Graph) -> list[str]:
-    """Balconies not entered from a living room or a bedroom only."""
+def balcony_problems(home: nx.Graph, types: dict[str, str] | None = None) -> list[str]:
+    """Balconies not entered from a living room or a bedroom only (`types`: room types by
+    name, default: read off the names)."""
     out = []
-    for b in sorted(n for n in home.nodes if room_type_of(n) == BALCONY):
-        others = sorted(n for n in home.neighbors(b)
-                        if room_type_of(n) not in (LIVING_ROOM, BEDROOM))
+    types = types or {n: room_type_of(n) for n in home.nodes}
+    for b in sorted(n for n in home.nodes if types[n] == BALCONY):
+        others = sorted(n for n in home.neighbors(b) if types[n] not in (LIVING_ROOM, BEDROOM))
         if others or not home.degree(b):
             out.append(f"{b} is entered from {others or 'nowhere'}, not a living room or "
                        "bedroom")
