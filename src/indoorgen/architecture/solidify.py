@@ -15,7 +15,8 @@ as they furnish a single room:
 - `surfaces`: "floor", "ceiling" and "wall_<i>" (one per edge of the free polygon), normals into
   the room, as `build_room` makes them;
 - `door_zones`: keep-out regions: each door's swing and clearance (deeper on the side it opens
-  into), a strip in front of open connections, and the stairs with their landings.
+  into), a strip in front of open connections, and the stairs with their landings and a lane
+  beside them (`stair_circulation`).
 
 Doors, windows and stairs are separate `Element`s (a simple parametric door leaf with casing, a
 window frame with glass, straight stair flights with guard rails round the floor opening where
@@ -61,7 +62,8 @@ from indoorgen.model.scene import Door, Room
 #: Depth of the keep-out zone on the side a door swings into, and on the other side (m).
 SWING_DEPTH = 1.0
 PASS_DEPTH = 0.6
-#: Clear floor kept at the foot and the head of a flight (m).
+#: Clear floor kept at the foot and the head of a flight (m; the plan leaves
+#: `floorplan.stairs.LANDING`, 1.1 m, between a flight's end and the staircase room's wall).
 STAIR_LANDING = 1.0
 #: Guard rail height and thickness (m).
 RAIL_HEIGHT = 1.0
@@ -208,6 +210,16 @@ def _stair_element(st: StairSpec, fp: Floorplan, pitch: float) -> Element:
     a, _ = fp.stair_rooms(st)
     return Element(f"stair_{st.from_level}_{st.to_level}", "stair", a or "", st.from_level,
                    {"flight": mesh}, ["stairs", "architecture"])
+
+
+def stair_circulation(st: StairSpec) -> sg.Polygon:
+    """The floor kept free round a flight on both its storeys: the flight (or its stairwell),
+    STAIR_LANDING at its foot and its head, and a lane as wide as the flight on either side,
+    where one walks between the landings and the staircase room's doors."""
+    p0, up, right, run, width = st.frame()
+    a0, a1, b0, b1 = -STAIR_LANDING, run + STAIR_LANDING, -width, 2 * width
+    return sg.Polygon([p0 + a * up + b * right for a, b in ((a0, b0), (a1, b0), (a1, b1),
+                                                             (a0, b1))])
 
 
 def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -397,25 +409,17 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         add_door(v.room, name, f, -f.n, v.width, v.height, SWING_DEPTH, v.width)
         elements.append(_vehicle_door_element(name, v, f, storey))
     # stairs: flights leave this storey (cut the ceiling) or arrive (cut the floor)
-    floor_holes, ceil_holes = [], []
+    floor_holes: list[sg.Polygon] = []
+    ceil_holes: list[sg.Polygon] = []
     for st in fp.stairs:
-        poly = st.shape()
-        p = np.asarray(st.polygon, float)
-        up = (p[3] - p[0]) / np.linalg.norm(p[3] - p[0])
-        if st.from_level == storey.level:
-            ceil_holes.append(poly)
-            foot = sg.Polygon([p[0] - STAIR_LANDING * up, p[1] - STAIR_LANDING * up, p[2], p[3]])
-            for r in storey.rooms:
-                z = foot.intersection(frees[r.name])
-                if z.area > 1e-6:
-                    zones[r.name].append(largest_polygon(z))
-        if st.to_level == storey.level:
-            floor_holes.append(poly)
-            head = sg.Polygon([p[0], p[1], p[2] + STAIR_LANDING * up, p[3] + STAIR_LANDING * up])
-            for r in storey.rooms:
-                z = head.intersection(frees[r.name])
-                if z.area > 1e-6:
-                    zones[r.name].append(largest_polygon(z))
+        if storey.level not in (st.from_level, st.to_level):
+            continue
+        (ceil_holes if st.from_level == storey.level else floor_holes).append(st.shape())
+        walk = stair_circulation(st)
+        for r in storey.rooms:
+            z = walk.intersection(frees[r.name])
+            if z.area > 1e-6:
+                zones[r.name].append(largest_polygon(z))
     out = {}
     for r in storey.rooms:
         poly = r.shape()

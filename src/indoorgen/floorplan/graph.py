@@ -265,7 +265,7 @@ def privacy_problems(home: nx.Graph, entrance: str | None = None,
             out.append(f"{bed} reaches no bathroom without crossing another bedroom")
     start = entrance if entrance is not None else next(
         (n for n in sorted(home.nodes) if types[n] == LIVING_ROOM), None)
-    if baths and start in home and types[start] != BEDROOM:
+    if baths and start is not None and start in home and types[start] != BEDROOM:
         shared = home.subgraph(n for n in home.nodes if types[n] != BEDROOM)
         if not nx.node_connected_component(shared, start) & baths:
             out.append("every bathroom is behind a bedroom")
