@@ -12,6 +12,7 @@ from indoorgen.floorplan.graph import (
     graph_problems,
     privacy_problems,
     sample_home_graph,
+    zone_problems,
 )
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.rng import stream
@@ -106,3 +107,11 @@ def test_user_graph_round_trips_and_is_checked():
     assert isinstance(graph_from_spec({"storeys": [{"rooms": ["living_room_0", "bathroom_0"],
                                                     "edges": [["living_room_0", "bathroom_0"]]}]}),
                       HomeGraph)
+
+
+def test_shared_rooms_are_not_behind_bedrooms():
+    g = nx.Graph([("hallway_0", "bedroom_0"), ("bedroom_0", "kitchen_0"),
+                  ("bedroom_0", "bathroom_0"), ("hallway_0", "bathroom_1")])
+    assert zone_problems(g, "hallway_0") == ["kitchen_0 is reached only through a bedroom"]
+    g.add_edge("hallway_0", "kitchen_0")
+    assert zone_problems(g, "hallway_0") == []   # an en-suite bathroom may be behind it

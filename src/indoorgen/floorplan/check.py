@@ -15,7 +15,7 @@ import shapely
 import shapely.geometry as sg
 
 from indoorgen.constraints.room_terms import MIN_BALCONY_EXTERIOR_SHARE
-from indoorgen.floorplan.graph import balcony_problems, privacy_problems
+from indoorgen.floorplan.graph import balcony_problems, privacy_problems, zone_problems
 from indoorgen.floorplan.rooms import min_width
 from indoorgen.floorplan.stairs import stair_door_ok, stair_obstacles
 from indoorgen.model.floorplan import Floorplan
@@ -112,14 +112,8 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
                 out.append(f"{r.name} is narrower than {width} m somewhere "
                            f"({narrow_area(p, width):.2f} m^2)")
     out += _door_problems(fp)
-    g = fp.connection_graph()
     if fp.entrance is None:
         out.append("the plan has no entrance")
-    else:
-        reach = nx.node_connected_component(g, fp.entrance.room)
-        for n in g.nodes:
-            if n not in reach:
-                out.append(f"{n} cannot be reached from the entrance")
     types = [r.type for _, r in fp.rooms()]
     if counts:
         for t, n in counts.items():
@@ -140,17 +134,22 @@ def home_problems(fp: Floorplan, wall_half: float = WALL_HALF) -> list[str]:
     for: stairs without free landings or with a staircase door over them or out of the
     landings' reach; a garage without a vehicle door on an outside wall or a door into the
     home; a balcony off the edge of the storey or not entered from a living room or bedroom;
-    an entrance not into a hallway or living room; bathroom privacy broken, or every bathroom
-    behind a bedroom."""
+    an entrance not into a hallway or living room; bathroom privacy broken, every bathroom
+    behind a bedroom, a shared room reached only through a bedroom, a room out of reach."""
     g = fp.connection_graph()
     out = _stair_problems(fp, wall_half) + _garage_problems(fp, g) + _balcony_problems(fp)
     types = {r.name: r.type for _, r in fp.rooms()}
     out += balcony_problems(g, types)
+    entrance = fp.entrance.room if fp.entrance is not None else None
+    out += zone_problems(g, entrance, types)
+    if entrance is not None:
+        reach = nx.node_connected_component(g, entrance)
+        out += [f"{n} cannot be reached from the entrance" for n in g.nodes if n not in reach]
     if fp.entrance is not None:
         t = fp.storey_of(fp.entrance.room).room(fp.entrance.room).type
         if t not in ENTRANCE_TYPES:
             out.append(f"the front door opens into a {t}, not a hallway or living room")
-    out += privacy_problems(g, fp.entrance.room if fp.entrance is not None else None, types)
+    out += privacy_problems(g, entrance, types)
     return out
 
 

@@ -272,6 +272,24 @@ def privacy_problems(home: nx.Graph, entrance: str | None = None,
     return out
 
 
+#: What may lie behind a bedroom (reached only through it): its en-suite, closet or balcony.
+PRIVATE_ANNEXES = frozenset({BATHROOM, CLOSET, BALCONY})
+
+
+def zone_problems(home: nx.Graph, entrance: str | None = None,
+                  types: dict[str, str] | None = None) -> list[str]:
+    """Rooms of the shared zone (everything but bedrooms and their annexes) that one reaches
+    from the entrance only through a bedroom; `types` as in `privacy_problems`."""
+    types = types or {n: room_type_of(n) for n in home.nodes}
+    if entrance is None or entrance not in home or types[entrance] == BEDROOM:
+        return []
+    shared = home.subgraph(n for n in home.nodes if types[n] != BEDROOM)
+    reach = nx.node_connected_component(shared, entrance)
+    everywhere = nx.node_connected_component(home, entrance)
+    return [f"{n} is reached only through a bedroom" for n in sorted(everywhere - reach)
+            if types[n] not in PRIVATE_ANNEXES and types[n] != BEDROOM]
+
+
 def balcony_problems(home: nx.Graph, types: dict[str, str] | None = None) -> list[str]:
     """Balconies not entered from a living room or a bedroom only (`types`: room types by
     name, default: read off the names)."""
@@ -304,7 +322,7 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
         if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
     out += privacy_problems(home, hg.entrance)
-    out += balcony_problems(home)
+    out += balcony_problems(home) + zone_problems(home, hg.entrance)
     if counts:
         have = hg.type_counts()
         for t, n in sorted(counts.items()):
