@@ -96,6 +96,44 @@ def test_stairs_and_floor_opening(two_storeys):
     assert any(z.intersects(hole) for z in upper.door_zones)
 
 
+def test_railings_stand_free_of_walls_and_doorways(two_storeys):
+    fp, arch = two_storeys
+    (st,) = fp.stairs
+    _, head_room = fp.stair_rooms(st)
+    room = fp.storeys[1].room(head_room)
+    outline = room.shape().exterior
+    rails = [e for e in arch.elements if e.kind == "railing"]
+    assert rails
+    doorways = [sg.Point(d.center).buffer(d.width / 2)
+                for d in fp.storeys[1].doors + fp.storeys[1].openings if head_room in d.rooms]
+    for e in rails:
+        for m in e.meshes.values():
+            pts = [sg.Point(p) for p in m.vertices[:, :2]]
+            # no rail inside a wall (the wall guards that side) nor across a doorway
+            assert min(outline.distance(p) for p in pts) > 0.02
+            assert not any(dw.contains(p) for dw in doorways for p in pts)
+
+
+def test_garage_gets_a_vehicle_door_in_its_outside_wall():
+    d = apartment()
+    d["storeys"][0]["rooms"][4]["type"] = "garage"   # bedroom_1: its east wall is outside
+    d["vehicle_doors"] = [{"room": "bedroom_1", "center": [10.0, 6.5], "width": 2.4,
+                           "height": 2.1}]
+    arch = solidify(from_json(d))
+    (gd,) = [e for e in arch.elements if e.kind == "vehicle_door"]
+    assert gd.room == "bedroom_1" and "garage_door" in gd.semantics
+    assert all(m.is_watertight for m in gd.meshes.values())
+    garage = arch.rooms["bedroom_1"]
+    assert "vehicle_door_bedroom_1" in {dr.name for dr in garage.room.doors}
+    # the wall is open through the door's middle, closed beside it
+    walls = garage.walls[0]
+    through = walls.ray.intersects_any(np.array([[9.0, 6.5, 1.0], [9.0, 5.1, 1.0]]),
+                                       np.array([[1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]))
+    panel = gd.meshes["panel"].ray.intersects_any(np.array([[9.0, 6.5, 1.0]]),
+                                                  np.array([[1.0, 0.0, 0.0]]))
+    assert list(through) == [False, True] and panel[0]
+
+
 @pytest.fixture(scope="module")
 def catalogue_arch(two_storeys):
     """The two-storey plan solidified with catalogue doors, windows and stairs."""

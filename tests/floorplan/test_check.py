@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import shapely.geometry as sg
 
-from indoorgen.floorplan.check import floorplan_problems, narrow_area
+from indoorgen.floorplan.check import floorplan_problems, home_problems, narrow_area
 from indoorgen.model.floorplan import Floorplan
 from indoorgen.model.floorplan_io import from_json
 from support.plans import apartment
@@ -32,6 +32,40 @@ def test_the_apartment_is_sound():
 ])
 def test_broken_plans_are_reported(mutate, needle):
     assert any(needle in p for p in floorplan_problems(_plan(mutate))), needle
+
+
+def _garage_with(d: dict, door: dict | None) -> None:
+    d["storeys"][0]["rooms"][4]["type"] = "garage"   # bedroom_1: 2.5 x 3 m, east wall outside
+    if door is not None:
+        d["vehicle_doors"] = [door]
+
+
+@pytest.mark.parametrize("mutate, needle", [
+    # the only bathroom opens off a bedroom
+    (lambda d: d["storeys"][0]["doors"][1].update(rooms=["bedroom_0", "bathroom_0"],
+                                                  center=[5.0, 6.5]),
+     "every bathroom is behind a bedroom"),
+    (lambda d: _garage_with(d, None), "bedroom_1 has no vehicle door"),
+    (lambda d: _garage_with(d, {"room": "bedroom_1", "center": [8.75, 5.0], "width": 2.4,
+                                "height": 2.1}), "vehicle door is not on an outside wall"),
+    # a balcony with only its short north side outside
+    (lambda d: d["storeys"][0]["rooms"][3].update(type="balcony"),
+     "bathroom_0 is inside the outline"),
+    (lambda d: (d["storeys"][0]["rooms"][3].update(type="balcony"),
+                d["storeys"][0]["doors"][1].update(rooms=["kitchen_0", "bathroom_0"],
+                                                   center=[6.75, 5.0])),
+     "bathroom_0 is entered from ['kitchen_0'], not a living room or bedroom"),
+    (lambda d: d.update(entrance={"room": "kitchen_0", "center": [10, 2.5]}),
+     "front door opens into a kitchen"),
+])
+def test_what_a_person_would_question_is_reported(mutate, needle):
+    assert any(needle in p for p in home_problems(_plan(mutate))), needle
+
+
+def test_a_garage_with_a_vehicle_door_on_its_outside_wall_passes():
+    fp = _plan(lambda d: _garage_with(d, {"room": "bedroom_1", "center": [10.0, 6.5],
+                                          "width": 2.4, "height": 2.1}))
+    assert not [p for p in home_problems(fp) if "bedroom_1" in p]
 
 
 def test_required_counts_and_outline_are_checked():

@@ -7,10 +7,12 @@ import pytest
 from indoorgen.errors import ConfigError
 from indoorgen.floorplan.graph import (
     HomeGraph,
+    balcony_problems,
     graph_from_spec,
     graph_problems,
     privacy_problems,
     sample_home_graph,
+    zone_problems,
 )
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.rng import stream
@@ -66,6 +68,21 @@ def test_privacy_rules():
                    ("hallway_0", "bedroom_1"), ("hallway_0", "bathroom_0"),
                    ("bedroom_0", "bathroom_1"), ("bathroom_1", "closet_0")])
     assert privacy_problems(ok) == []
+    # one bedroom with the home's only bathroom en-suite: a guest has to cross the bedroom
+    ensuite = nx.Graph([("living_room_0", "bedroom_0"), ("bedroom_0", "bathroom_0")])
+    assert "every bathroom is behind a bedroom" in privacy_problems(ensuite)
+    assert "every bathroom is behind a bedroom" in privacy_problems(ensuite, "living_room_0")
+
+
+def test_balconies_are_leaves_off_living_rooms_and_bedrooms():
+    for floors in (1, 2):
+        for seed in range(25):
+            home = _sample(seed, floors).home()
+            for b in (n for n in home.nodes if room_type_of(n) == "balcony"):
+                assert {room_type_of(n) for n in home.neighbors(b)} <= {"living_room", "bedroom"}
+    g = nx.Graph([("living_room_0", "balcony_0"), ("balcony_0", "utility_0")])
+    assert balcony_problems(g) == ["balcony_0 is entered from ['utility_0'], not a living room "
+                                   "or bedroom"]
 
 
 def test_floors_out_of_range():
@@ -90,3 +107,11 @@ def test_user_graph_round_trips_and_is_checked():
     assert isinstance(graph_from_spec({"storeys": [{"rooms": ["living_room_0", "bathroom_0"],
                                                     "edges": [["living_room_0", "bathroom_0"]]}]}),
                       HomeGraph)
+
+
+def test_shared_rooms_are_not_behind_bedrooms():
+    g = nx.Graph([("hallway_0", "bedroom_0"), ("bedroom_0", "kitchen_0"),
+                  ("bedroom_0", "bathroom_0"), ("hallway_0", "bathroom_1")])
+    assert zone_problems(g, "hallway_0") == ["kitchen_0 is reached only through a bedroom"]
+    g.add_edge("hallway_0", "kitchen_0")
+    assert zone_problems(g, "hallway_0") == []   # an en-suite bathroom may be behind it

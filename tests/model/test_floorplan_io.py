@@ -26,8 +26,10 @@ def test_schema_keys_are_exactly_the_contract():
     fp = generate_floorplan(2, FloorplanConfig(floors=2,
                                                anneal=FloorplanAnnealConfig(steps_per_storey=30)))
     d = json.loads(dumps(fp))
-    assert set(d) == {"storeys", "stairs", "entrance"}
+    # vehicle_doors is written only when the home has a garage (this one does)
+    assert set(d) == {"storeys", "stairs", "entrance", "vehicle_doors"}
     assert set(d["entrance"]) == {"room", "center"}
+    assert all(set(v) == {"room", "center", "width", "height"} for v in d["vehicle_doors"])
     for s in d["storeys"]:
         assert set(s) == {"level", "elevation", "height", "rooms", "doors", "windows", "openings"}
         assert all(set(r) == {"name", "type", "polygon"} for r in s["rooms"])

@@ -15,13 +15,16 @@ as they furnish a single room:
 - `surfaces`: "floor", "ceiling" and "wall_<i>" (one per edge of the free polygon), normals into
   the room, as `build_room` makes them;
 - `door_zones`: keep-out regions: each door's swing and clearance (deeper on the side it opens
-  into), a strip in front of open connections, and the stairs with their landings.
+  into), a strip in front of open connections, and the stairs with their landings and a lane
+  beside them (`stair_circulation`).
 
 Doors, windows and stairs are separate `Element`s (a simple parametric door leaf with casing, a
-window frame with glass, straight stair flights with guard rails round the floor opening). A
-catalogue door's leaf is its own part ("leaf", with its convex pieces in `leaf_collision`) on a
-`joint` (world coordinates, 0 = shut), standing at `state` (`architecture.doors`: open, closed,
-random, or the values a saved scene recorded); `Architecture.door_states` collects them.
+window frame with glass, straight stair flights with guard rails round the floor opening where
+no wall guards it, `rail_sides`). A catalogue door's leaf is its own part ("leaf", with its convex
+pieces in `leaf_collision`) on a `joint` (world coordinates, 0 = shut), standing at `state`
+(`architecture.doors`: open, closed, random, or the values a saved scene recorded);
+`Architecture.door_states` collects them. Garages' vehicle doors are cut in their exterior walls
+and closed by a sectional door (`_vehicle_door_element`).
 """
 from __future__ import annotations
 
@@ -49,6 +52,7 @@ from indoorgen.architecture.walls import (
     WallThickness,
     door_frame,
     entrance_frame,
+    exterior_frame,
     free_polygon,
     outer_outline,
     room_region,
@@ -56,14 +60,15 @@ from indoorgen.architecture.walls import (
     window_frame,
 )
 from indoorgen.assets.protocol import Joint, Surface
-from indoorgen.model.floorplan import DoorSpec, Floorplan, StairSpec, Storey
+from indoorgen.model.floorplan import DoorSpec, Floorplan, StairSpec, Storey, VehicleDoor
 from indoorgen.model.polygons import cross_2d, largest_polygon
 from indoorgen.model.scene import Door, Room
 
 #: Depth of the keep-out zone on the side a door swings into, and on the other side (m).
 SWING_DEPTH = 1.0
 PASS_DEPTH = 0.6
-#: Clear floor kept at the foot and the head of a flight (m).
+#: Clear floor kept at the foot and the head of a flight (m; the plan leaves
+#: `floorplan.stairs.LANDING`, 1.1 m, between a flight's end and the staircase room's wall).
 STAIR_LANDING = 1.0
 #: Guard rail height and thickness (m).
 RAIL_HEIGHT = 1.0
@@ -71,6 +76,8 @@ RAIL_THICKNESS = 0.05
 #: Door leaf thickness and casing profile (m).
 LEAF = 0.04
 CASING = 0.06
+#: A sectional garage door's panel thickness (m).
+VEHICLE_PANEL = 0.04
 
 
 @dataclass
@@ -171,6 +178,26 @@ def _window_element(name: str, room: str, frame: WallFrame, storey: Storey, widt
                     "glass": checked_mesh(glass, name)}, ["window", "architecture"])
 
 
+def _vehicle_door_element(name: str, v: VehicleDoor, frame: WallFrame, storey: Storey
+                          ) -> Element:
+    """A garage's sectional door, closed: horizontal panels in the wall's outer half (as a
+    sectional door runs behind the opening), and a frame round the opening."""
+    e = storey.elevation
+    outer_face = frame.thickness / 2 - VEHICLE_PANEL
+    n_panels = 4
+    rise = v.height / n_panels
+    panels = [extrude_region(frame.rect(v.width - 0.01, outer_face - VEHICLE_PANEL, outer_face),
+                             e + 0.01 + i * rise, e + (i + 1) * rise - 0.005)
+              for i in range(n_panels)]
+    panel = manifold3d.Manifold.batch_boolean(panels, manifold3d.OpType.Add)
+    outer = _box(frame, v.width + 2 * CASING, frame.thickness + 0.02, e, e + v.height + CASING)
+    inner = _box(frame, v.width, frame.thickness + 0.2, e - 0.01, e + v.height)
+    return Element(name, "vehicle_door", v.room, storey.level,
+                   {"panel": checked_mesh(panel, name),
+                    "casing": checked_mesh(subtract(outer, [inner]), name)},
+                   ["door", "garage_door", "architecture"])
+
+
 def stair_profile(rise: float, run: float, max_riser: float = 0.19,
                   thickness: float = 0.3) -> tuple[np.ndarray, int]:
     """Side profile (s along the flight, z up) of a straight flight climbing `rise` over `run`:
@@ -205,21 +232,45 @@ def _stair_element(st: StairSpec, fp: Floorplan, pitch: float) -> Element:
                    {"flight": mesh}, ["stairs", "architecture"])
 
 
-def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
-    """Guard rails round the floor opening of a flight on the upper storey, open at its head."""
-    upper = next((s for s in fp.storeys if s.level == st.to_level), None)
-    if upper is None:
-        return None
+def stair_circulation(st: StairSpec) -> sg.Polygon:
+    """The floor kept free round a flight on both its storeys: the flight (or its stairwell),
+    STAIR_LANDING at its foot and its head, and a lane as wide as the flight on either side,
+    where one walks between the landings and the staircase room's doors."""
+    p0, up, right, run, width = st.frame()
+    a0, a1, b0, b1 = -STAIR_LANDING, run + STAIR_LANDING, -width, 2 * width
+    return sg.Polygon([p0 + a * up + b * right for a, b in ((a0, b0), (a1, b0), (a1, b1),
+                                                             (a0, b1))])
+
+
+def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The sides of a flight's stairwell on its upper storey that need a guard rail: all but
+    the head (where one steps off) and those lying on the staircase room's outline, where its
+    wall already guards the drop."""
     p = np.asarray(st.polygon, float)  # bl, br, tr, tl
+    sides = [(p[0], p[1]), (p[1], p[2]), (p[3], p[0])]
+    upper = next((s for s in fp.storeys if s.level == st.to_level), None)
+    _, b = fp.stair_rooms(st)
+    if upper is None or b is None:
+        return sides
+    edge = upper.room(b).shape().exterior
+    return [(a, c) for a, c in sides if edge.distance(sg.Point((a + c) / 2)) > 1e-3]
+
+
+def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
+    """Guard rails round the floor opening of a flight on the upper storey (`rail_sides`)."""
+    upper = next((s for s in fp.storeys if s.level == st.to_level), None)
+    sides = rail_sides(st, fp)
+    if upper is None or not sides:
+        return None
     e = upper.elevation
     rails = []
-    for a, b in ((p[0], p[1]), (p[1], p[2]), (p[3], p[0])):
-        line = sg.LineString([a, b])
+    for u, v in sides:
+        line = sg.LineString([u, v])
         rails.append(extrude_region(line.buffer(RAIL_THICKNESS / 2, cap_style="flat"),
                                    e, e + RAIL_HEIGHT))
     solid = manifold3d.Manifold.batch_boolean(rails, manifold3d.OpType.Add)
-    _, b = fp.stair_rooms(st)
-    return Element(f"rail_{st.from_level}_{st.to_level}", "railing", b or "", st.to_level,
+    _, head_room = fp.stair_rooms(st)
+    return Element(f"rail_{st.from_level}_{st.to_level}", "railing", head_room or "", st.to_level,
                    {"rail": checked_mesh(solid, "stair rail")}, ["railing", "architecture"])
 
 
@@ -290,8 +341,7 @@ def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
            if fx is not None else _stair_element(st, fp, pitch)]
     if upper is None:
         return out
-    p = np.asarray(st.polygon, float)  # bl, br, tr, tl: rails on all sides but the head
-    sides = ((p[0], p[1]), (p[1], p[2]), (p[3], p[0]))
+    sides = rail_sides(st, fp)
     rails = [] if seed is None else [
         fixtures.railing(seed, f"rail_{st.from_level}_{st.to_level}_{i}", u, v,
                          upper.elevation) for i, (u, v) in enumerate(sides)]
@@ -388,26 +438,24 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
                         if fx is not None else _door_element(
             DoorSpec("entrance", (en.room, en.room), en.center, en.width, en.height), f,
             storey))
+    for v in fp.vehicle_doors if storey.level == 0 else []:
+        f = exterior_frame(storey, v.room, v.center, t, f"the vehicle door of {v.room!r}")
+        name = f"vehicle_door_{v.room}"
+        cut[v.room].append(_box(f, v.width, 3 * t.exterior, e - 0.01, e + v.height))
+        add_door(v.room, name, f, -f.n, v.width, v.height, SWING_DEPTH, v.width)
+        elements.append(_vehicle_door_element(name, v, f, storey))
     # stairs: flights leave this storey (cut the ceiling) or arrive (cut the floor)
-    floor_holes, ceil_holes = [], []
+    floor_holes: list[sg.Polygon] = []
+    ceil_holes: list[sg.Polygon] = []
     for st in fp.stairs:
-        poly = st.shape()
-        p = np.asarray(st.polygon, float)
-        up = (p[3] - p[0]) / np.linalg.norm(p[3] - p[0])
-        if st.from_level == storey.level:
-            ceil_holes.append(poly)
-            foot = sg.Polygon([p[0] - STAIR_LANDING * up, p[1] - STAIR_LANDING * up, p[2], p[3]])
-            for r in storey.rooms:
-                z = foot.intersection(frees[r.name])
-                if z.area > 1e-6:
-                    zones[r.name].append(largest_polygon(z))
-        if st.to_level == storey.level:
-            floor_holes.append(poly)
-            head = sg.Polygon([p[0], p[1], p[2] + STAIR_LANDING * up, p[3] + STAIR_LANDING * up])
-            for r in storey.rooms:
-                z = head.intersection(frees[r.name])
-                if z.area > 1e-6:
-                    zones[r.name].append(largest_polygon(z))
+        if storey.level not in (st.from_level, st.to_level):
+            continue
+        (ceil_holes if st.from_level == storey.level else floor_holes).append(st.shape())
+        walk = stair_circulation(st)
+        for r in storey.rooms:
+            z = walk.intersection(frees[r.name])
+            if z.area > 1e-6:
+                zones[r.name].append(largest_polygon(z))
     out = {}
     for r in storey.rooms:
         poly = r.shape()

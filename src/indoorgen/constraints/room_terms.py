@@ -43,6 +43,14 @@ STOREY = "storey"
 STAIR_PLACEHOLDER = "stair_placeholder"
 #: Shortest straight shared wall (m) that takes a door (0.8-0.9 m leaf, margins, wall ends).
 MIN_DOOR_WALL = 1.5
+#: Shortest straight exterior wall (m) that takes a garage's 2.4 m vehicle door with margins.
+MIN_VEHICLE_DOOR_WALL = 3.0
+#: A balcony's least share of its outline on the storey's outline, and its shortest straight
+#: outside edge (m): it sits on the edge of the home, not inside it (issue 11).
+MIN_BALCONY_EXTERIOR_SHARE = 0.3
+MIN_BALCONY_FRONT = 2.0
+#: Narrowest a garage may be (m): a car and room to open its door (issue 11 saw a 14 x 2 m one).
+MIN_GARAGE_WIDTH = 3.0
 #: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
 CORNER_TURN_DEG = 20.0
 
@@ -240,6 +248,10 @@ class RoomView:
     def exterior_length(self, o: str) -> float:
         """Length of o's outline on the storey's exterior (m)."""
         return float(self.polygon(o).exterior.intersection(self.contour(self.level(o)).exterior).length)
+
+    def perimeter(self, o: str) -> float:
+        """Length of o's outline (m)."""
+        return self.cached(o, "perimeter", lambda: float(self.polygon(o).exterior.length))
 
     def longest_exterior_wall(self, o: str) -> float:
         """Longest straight exterior wall of o (m)."""
@@ -495,6 +507,7 @@ exterior_length = _term("exterior_length", "Length (m) of the room's outline on 
 longest_exterior_wall = _term("longest_exterior_wall",
                               "Longest straight exterior wall of the room (m): room for a "
                               "window or the front door.")
+perimeter = _term("perimeter", "Length (m) of the room's outline.")
 exterior_corners = _term("exterior_corners", "Corners of the storey outline the room holds.")
 missing_doors = _term("missing_doors", "Graph neighbours the room shares no door-wide wall with.")
 path_directness = _term("path_directness",

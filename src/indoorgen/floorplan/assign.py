@@ -3,8 +3,9 @@
 A depth-first search gives each room of the storey graph its own space so that:
 
 - graph neighbours share a straight wall long enough for a door (MIN_DOOR_WALL, full cells);
-- bedrooms, garages, balconies and the entrance room have a straight exterior wall of the same
-  length (for a window or the front door);
+- bedrooms, garages, balconies and the entrance room have a straight exterior wall of the
+  length `rules.exterior_wall_needed` gives (a window, the front door, a garage's vehicle door,
+  a balcony's open front);
 - the staircase room's space overlaps the staircase placeholder, and other rooms' spaces do not
   lose much to it;
 - every room's space is at least the minimum area of its type.
@@ -22,6 +23,7 @@ import numpy as np
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL
 from indoorgen.floorplan.grid import OUTSIDE, Grid, room_polygon, runs
 from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.floorplan.rules import exterior_wall_needed
 from indoorgen.floorplan.view import polygon_exterior_runs
 from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
 
@@ -87,7 +89,8 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
                     continue
             elif in_stair[s] > 0.3 * cells[s] or area[s] < ROOM_TYPES[t].min_area:
                 continue
-            if (ROOM_TYPES[t].exterior or r in needs_exterior) and ext[s] < k_door:
+            if (ROOM_TYPES[t].exterior or r in needs_exterior) and \
+                    ext[s] * grid.size < exterior_wall_needed(r) - 1e-6:
                 continue
             if len(door_ok[s]) < graph.degree(r):
                 continue  # too few door-wide neighbours for the room's graph neighbours

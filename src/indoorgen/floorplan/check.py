@@ -4,7 +4,8 @@
 a storey overlap or leave gaps in the outline; a room is unreachable from the front door
 through doors, open connections and stairs; a door is narrower than 0.8 m or not in a wall its
 two rooms share; a room is narrower than 1.2 m (a closet than 1 m); bathroom privacy is broken;
-required rooms are missing; a flight is not held by staircase rooms on both its storeys.
+required rooms are missing; a flight is not held by staircase rooms on both its storeys; and
+what `home_problems` lists (stairs, garages, balconies, entrance, bathroom access).
 """
 from __future__ import annotations
 
@@ -13,13 +14,30 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 
-from indoorgen.floorplan.graph import privacy_problems
+from indoorgen.constraints.room_terms import MIN_BALCONY_EXTERIOR_SHARE
+from indoorgen.floorplan.graph import balcony_problems, privacy_problems, zone_problems
 from indoorgen.floorplan.rooms import min_width
+from indoorgen.floorplan.stairs import stair_door_ok, stair_obstacles
 from indoorgen.model.floorplan import Floorplan
 from indoorgen.model.polygons import cross_2d
-from indoorgen.model.room_types import BATHROOM, KITCHEN, LIVING_ROOM, STAIRCASE_ROOM
+from indoorgen.model.room_types import (
+    BALCONY,
+    BATHROOM,
+    GARAGE,
+    HALLWAY,
+    KITCHEN,
+    LIVING_ROOM,
+    STAIRCASE_ROOM,
+)
 
 MIN_DOOR_WIDTH = 0.8
+#: Free landing depth at both ends of a flight (m, issue 11).
+MIN_LANDING = 0.9
+#: What a wall takes off a room's free floor at most (m): half the default exterior wall
+#: (`floorplan.generate.FloorplanConfig.exterior_wall`).
+WALL_HALF = 0.12
+#: What the front door may open into.
+ENTRANCE_TYPES = frozenset({HALLWAY, LIVING_ROOM})
 
 
 def narrow_area(poly: sg.Polygon, width: float) -> float:
@@ -94,15 +112,8 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
                 out.append(f"{r.name} is narrower than {width} m somewhere "
                            f"({narrow_area(p, width):.2f} m^2)")
     out += _door_problems(fp)
-    g = fp.connection_graph()
     if fp.entrance is None:
         out.append("the plan has no entrance")
-    else:
-        reach = nx.node_connected_component(g, fp.entrance.room)
-        for n in g.nodes:
-            if n not in reach:
-                out.append(f"{n} cannot be reached from the entrance")
-    out += privacy_problems(g)
     types = [r.type for _, r in fp.rooms()]
     if counts:
         for t, n in counts.items():
@@ -114,11 +125,72 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
     for t in (BATHROOM, KITCHEN):
         if t not in types and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
-    out += _stair_problems(fp)
+    out += _stair_counts(fp) + home_problems(fp)
     return out
 
 
-def _stair_problems(fp: Floorplan) -> list[str]:
+def home_problems(fp: Floorplan, wall_half: float = WALL_HALF) -> list[str]:
+    """What a person would question in a plan (issue 11), which the generator re-draws a plan
+    for: stairs without free landings or with a staircase door over them or out of the
+    landings' reach; a garage without a vehicle door on an outside wall or a door into the
+    home; a balcony off the edge of the storey or not entered from a living room or bedroom;
+    an entrance not into a hallway or living room; bathroom privacy broken, every bathroom
+    behind a bedroom, a shared room reached only through a bedroom, a room out of reach."""
+    g = fp.connection_graph()
+    out = _stair_problems(fp, wall_half) + _garage_problems(fp, g) + _balcony_problems(fp)
+    types = {r.name: r.type for _, r in fp.rooms()}
+    out += balcony_problems(g, types)
+    entrance = fp.entrance.room if fp.entrance is not None else None
+    out += zone_problems(g, entrance, types)
+    if entrance is not None:
+        reach = nx.node_connected_component(g, entrance)
+        out += [f"{n} cannot be reached from the entrance" for n in g.nodes if n not in reach]
+    if fp.entrance is not None:
+        t = fp.storey_of(fp.entrance.room).room(fp.entrance.room).type
+        if t not in ENTRANCE_TYPES:
+            out.append(f"the front door opens into a {t}, not a hallway or living room")
+    out += privacy_problems(g, entrance, types)
+    return out
+
+
+def _garage_problems(fp: Floorplan, g: nx.Graph) -> list[str]:
+    out = []
+    for s, r in fp.rooms():
+        if r.type != GARAGE:
+            continue
+        doors = [v for v in fp.vehicle_doors if v.room == r.name]
+        if not doors:
+            out.append(f"{r.name} has no vehicle door")
+        ring = s.contour().exterior
+        for v in doors:
+            u = _wall_direction(r.shape(), np.asarray(v.center, float))
+            ends = [np.asarray(v.center) + h * u for h in (-v.width / 2, v.width / 2)] \
+                if u is not None else []
+            if not ends or any(ring.distance(sg.Point(p)) > 1e-3 for p in ends):
+                out.append(f"{r.name}'s vehicle door is not on an outside wall")
+        if r.name not in g or not g.degree(r.name):
+            out.append(f"{r.name} has no door into the home")
+    return out
+
+
+def _balcony_problems(fp: Floorplan) -> list[str]:
+    out = []
+    for s in fp.storeys:
+        ring = s.contour().exterior.buffer(1e-6)
+        for r in s.rooms:
+            if r.type != BALCONY:
+                continue
+            edge = r.shape().exterior
+            if edge.intersection(ring).length < MIN_BALCONY_EXTERIOR_SHARE * edge.length - 1e-6:
+                out.append(f"{r.name} is inside the outline, not on its edge")
+    return out
+
+
+def _stair_problems(fp: Floorplan, wall_half: float) -> list[str]:
+    return _landing_problems(fp, wall_half) + _stair_door_problems(fp, wall_half)
+
+
+def _stair_counts(fp: Floorplan) -> list[str]:
     out = []
     n = len(fp.storeys)
     if n > 1 and len(fp.stairs) != n - 1:
@@ -134,3 +206,57 @@ def _stair_problems(fp: Floorplan) -> list[str]:
                            f"room on storey {lv}")
     return out
 
+
+
+def _landing_problems(fp: Floorplan, wall_half: float) -> list[str]:
+    """Flights without a free landing MIN_LANDING deep (past the walls' inner halves) and
+    as wide as the flight, inside the staircase room, at their foot and their head."""
+    out = []
+    for st in fp.stairs:
+        p = np.asarray(st.polygon, float)
+        up = (p[3] - p[0]) / np.linalg.norm(p[3] - p[0])
+        deep = (MIN_LANDING + wall_half) * up
+        for lv, strip, end in ((st.from_level, sg.Polygon([p[0] - deep, p[1] - deep, p[1], p[0]]),
+                                "foot"),
+                               (st.to_level, sg.Polygon([p[3], p[2], p[2] + deep, p[3] + deep]),
+                                "head")):
+            holder = next((r for r in fp.storeys[lv].rooms
+                           if r.shape().buffer(1e-6).contains(strip)), None)
+            others = [o for o in stair_obstacles(fp.stairs, lv) if o.intersection(strip).area > 1e-6]
+            if holder is None or holder.type != STAIRCASE_ROOM or others:
+                out.append(f"flight {st.from_level}->{st.to_level} has no free {MIN_LANDING} m "
+                           f"landing at its {end} in its staircase room")
+    return out
+
+
+def _stair_door_problems(fp: Floorplan, wall_half: float) -> list[str]:
+    """Doors of staircase rooms opening over a flight or stairwell, or out of an agent's reach
+    from the storey's landings (`floorplan.stairs.stair_door_ok`)."""
+    out = []
+    for s in fp.storeys:
+        if not stair_obstacles(fp.stairs, s.level):
+            continue
+        for r in s.rooms:
+            if r.type != STAIRCASE_ROOM:
+                continue
+            poly = r.shape()
+            for d in s.doors + s.openings:
+                if r.name not in d.rooms:
+                    continue
+                u = _wall_direction(poly, np.asarray(d.center, float))
+                if u is None or not stair_door_ok(poly, fp.stairs, s.level, np.asarray(d.center), u,
+                                                  d.width, wall_half):
+                    out.append(f"{d.name} opens over the stairs or out of reach of their "
+                               "landings")
+    return out
+
+
+def _wall_direction(poly: sg.Polygon, c: np.ndarray) -> np.ndarray | None:
+    """Unit direction of the edge of `poly` through point c (None if c is on no edge)."""
+    pts = np.asarray(poly.exterior.coords)
+    for a, b in zip(pts[:-1], pts[1:], strict=False):
+        d = b - a
+        L = float(np.hypot(*d))
+        if L > 1e-9 and abs(cross_2d(d / L, c - a)) < 1e-3 and -1e-6 <= np.dot(c - a, d) / L <= L + 1e-6:
+            return d / L
+    return None

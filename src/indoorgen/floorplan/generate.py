@@ -22,10 +22,17 @@ import shapely.geometry as sg
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
+from indoorgen.floorplan.check import home_problems
 from indoorgen.floorplan.contour import make_contour, upper_contour, user_contour
 from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
 from indoorgen.floorplan.grid import OUTSIDE, make_grid
-from indoorgen.floorplan.openings import place_doors, place_entrance, place_stairs, place_windows
+from indoorgen.floorplan.openings import (
+    place_doors,
+    place_entrance,
+    place_stairs,
+    place_vehicle_doors,
+    place_windows,
+)
 from indoorgen.floorplan.rooms import parse_room_counts, room_type_of
 from indoorgen.floorplan.rules import room_problems
 from indoorgen.floorplan.solve import FloorplanAnnealConfig, anneal
@@ -38,11 +45,14 @@ from indoorgen.rng import stream
 
 log = logging.getLogger(__name__)
 
-#: The staircase placeholder: two 1 m lanes, 5 m long (a 4 m flight plus landings), in cells.
-STAIR_CELLS = (4, 10)
+#: The staircase placeholder: two 1 m lanes, 6 m long (a 3.8 m flight plus 1.1 m landings at
+#: both ends, `openings.LANDING`), in cells.
+STAIR_CELLS = (4, 12)
 #: Attempts at subdividing and assigning one storey, and at the whole home.
 STOREY_ATTEMPTS = 40
 HOME_ATTEMPTS = 6
+#: Finished plans drawn at most before giving up on `check.home_problems`.
+REDRAWS = 4
 
 
 @dataclass
@@ -179,7 +189,7 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
         rect = _place_stair(rng, grid0)
         if rect is None:
             raise InvalidGeometryError(
-                "the outline has no room for a 2 x 5 m staircase; give a larger area or contour")
+                "the outline has no room for a 2 x 6 m staircase; give a larger area or contour")
         iy0, ix0, iy1, ix1 = rect
         (x0, y0), (x1, y1) = grid0.to_world(ix0, iy0), grid0.to_world(ix1, iy1)
         stair_poly = sg.box(x0, y0, x1, y1)
@@ -212,8 +222,9 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
     return plan
 
 
-def build_plan(seed: int, cfg: FloorplanConfig) -> GridPlan:
-    """An initial plan satisfying the hard rules (before annealing)."""
+def build_plan(seed: int, cfg: FloorplanConfig, redraw: int = 0) -> GridPlan:
+    """An initial plan satisfying the hard rules (before annealing); `redraw` > 0 draws it
+    afresh (other attempt streams) after a finished plan failed `check.home_problems`."""
     if isinstance(cfg.floors, bool) or not isinstance(cfg.floors, (int, np.integer)) or \
             not 1 <= cfg.floors <= 3:
         raise ConfigError(f"--floors {cfg.floors} is out of range; a home has 1 to 3 storeys")
@@ -225,7 +236,7 @@ def build_plan(seed: int, cfg: FloorplanConfig) -> GridPlan:
     user_fixed = bool(counts) or cfg.area is not None or cfg.contour is not None or \
         cfg.graph is not None
     reason = ""
-    for attempt in range(HOME_ATTEMPTS):
+    for attempt in range(redraw * HOME_ATTEMPTS, (redraw + 1) * HOME_ATTEMPTS):
         try:
             return _attempt(seed, attempt, cfg, counts)
         except _Failed as e:
@@ -240,8 +251,6 @@ def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floo
     """Generate a home's floorplan from `seed`. Same seed + config + version => same plan."""
     cfg = config or FloorplanConfig()
     t0 = time.perf_counter()
-    plan = build_plan(seed, cfg)
-    t1 = time.perf_counter()
     program = cfg.program or default_program
     problem = program()
     if not isinstance(problem, Problem):
@@ -250,10 +259,23 @@ def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floo
     acfg = cfg.anneal
     if cfg.program is None:  # the default program's constraints are the solver's own rules
         acfg = dataclasses.replace(acfg, constraints_at_ends_only=True)
-    stats = anneal(plan, problem, stream(seed, "floorplan", "anneal"), acfg)
-    t2 = time.perf_counter()
-    fp = to_floorplan(plan, cfg, stream(seed, "floorplan", "openings"))
-    fp.info.update({"seed": seed, "config": cfg.to_json(), "graph": plan.graph.to_json(),
+    problems: list[str] = []
+    for redraw in range(REDRAWS):
+        tail = (redraw,) if redraw else ()
+        plan = build_plan(seed, cfg, redraw)
+        t1 = time.perf_counter()
+        stats = anneal(plan, problem, stream(seed, "floorplan", "anneal", *tail), acfg)
+        t2 = time.perf_counter()
+        fp = to_floorplan(plan, cfg, stream(seed, "floorplan", "openings", *tail))
+        problems = home_problems(fp, cfg.exterior_wall / 2)
+        if not problems:
+            break
+        log.debug("plan %d re-drawn: %s", redraw, problems[:3])
+    else:
+        raise InvalidGeometryError(f"cannot lay out this seed's home after {REDRAWS} plans: "
+                                   f"{'; '.join(problems[:3])}")
+    fp.info.update({"redraws": redraw, "seed": seed, "config": cfg.to_json(),
+                    "graph": plan.graph.to_json(),
                     "contours": [g.contour for g in plan.grids],
                     "anneal": stats.to_json(), "stats": stats,
                     "timings_s": {"init": round(t1 - t0, 4), "anneal": round(t2 - t1, 4),
@@ -264,10 +286,13 @@ def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floo
 def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator) -> Floorplan:
     """The solved plan as data: room polygons, doors, openings, windows, stairs, entrance."""
     pitch = storey_pitch(cfg)
-    doors, openings = place_doors(plan, rng, cfg.interior_wall, cfg.open_prob, cfg.height)
-    entrance = place_entrance(plan)
     stairs = place_stairs(plan)
-    windows = place_windows(plan, rng, cfg.exterior_wall, entrance, plan.stair_polygon())
+    doors, openings = place_doors(plan, rng, cfg.interior_wall, cfg.open_prob, cfg.height,
+                                  stairs, cfg.exterior_wall / 2)
+    entrance = place_entrance(plan)
+    vehicle_doors = place_vehicle_doors(plan)
+    windows = place_windows(plan, rng, cfg.exterior_wall, entrance, plan.stair_polygon(),
+                            vehicle_doors)
     storeys = []
     for k, names in enumerate(plan.names):
         rooms = []
@@ -279,7 +304,7 @@ def to_floorplan(plan: GridPlan, cfg: FloorplanConfig, rng: np.random.Generator)
                                   [(round(float(x), 6), round(float(y), 6)) for x, y in pts]))
         storeys.append(Storey(k, round(k * pitch, 6), cfg.height, rooms, doors[k], windows[k],
                               openings[k]))
-    return Floorplan(storeys, stairs, entrance)
+    return Floorplan(storeys, stairs, entrance, vehicle_doors=vehicle_doors)
 
 
 __all__ = ["FloorplanConfig", "generate_floorplan", "build_plan", "to_floorplan", "storey_pitch"]

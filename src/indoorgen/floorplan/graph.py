@@ -150,12 +150,14 @@ def grow_storey(rng: np.random.Generator, level: int) -> tuple[nx.Graph, dict[in
     queue = [0]
     while queue and g.number_of_nodes() < 3 * MAX_ROOMS_PER_STOREY:
         i = queue.pop(0)
+        # a balcony is a leaf: the rooms the grammar hangs on it go on its parent instead
+        host = parent[i] if g.nodes[i]["type"] == BALCONY else i
         for child_type, spec in table.get(g.nodes[i]["type"], {}).items():
             for _ in range(_draw_count(rng, spec)):
                 j = g.number_of_nodes()
                 g.add_node(j, type=child_type)
-                g.add_edge(i, j)
-                parent[j] = i
+                g.add_edge(host, j)
+                parent[j] = host
                 queue.append(j)
     _share_hallways(rng, g, parent)
     return g, parent
@@ -169,7 +171,8 @@ def _share_hallways(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int
         if not halls:
             continue
         for c in kids:
-            if g.nodes[c]["type"] in (HALLWAY, KITCHEN) or rng.random() >= HALLWAY_SHARE:
+            if g.nodes[c]["type"] in (HALLWAY, KITCHEN, BALCONY) or \
+                    rng.random() >= HALLWAY_SHARE:
                 continue
             h = halls[int(rng.integers(len(halls)))]
             g.remove_edge(p, c)
@@ -236,14 +239,19 @@ def _repair_counts(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]],
     return True
 
 
-def privacy_problems(home: nx.Graph) -> list[str]:
+def privacy_problems(home: nx.Graph, entrance: str | None = None,
+                     types: dict[str, str] | None = None) -> list[str]:
     """Bathroom privacy (D.1) on a whole-home graph; an empty list when respected.
 
     - an en-suite bathroom (one next to a bedroom) opens onto that bedroom and closets only;
-    - every bedroom reaches a bathroom without walking through another bedroom.
+    - every bedroom reaches a bathroom without walking through another bedroom;
+    - a guest reaches a bathroom from the entrance (``entrance``, default: the graph's first
+      living room) without walking through a bedroom (an en-suite comes on top).
+
+    `types` gives the rooms' types by name (default: read off the names, ``<type>_<k>``).
     """
     out = []
-    types = {n: room_type_of(n) for n in home.nodes}
+    types = types or {n: room_type_of(n) for n in home.nodes}
     for b in sorted(n for n, t in types.items() if t == BATHROOM):
         beds = [n for n in home.neighbors(b) if types[n] == BEDROOM]
         others = [n for n in home.neighbors(b) if types[n] not in (BEDROOM, CLOSET)]
@@ -255,6 +263,43 @@ def privacy_problems(home: nx.Graph) -> list[str]:
         reach = nx.node_connected_component(home.subgraph(allowed), bed)
         if baths and not reach & baths:
             out.append(f"{bed} reaches no bathroom without crossing another bedroom")
+    start = entrance if entrance is not None else next(
+        (n for n in sorted(home.nodes) if types[n] == LIVING_ROOM), None)
+    if baths and start is not None and start in home and types[start] != BEDROOM:
+        shared = home.subgraph(n for n in home.nodes if types[n] != BEDROOM)
+        if not nx.node_connected_component(shared, start) & baths:
+            out.append("every bathroom is behind a bedroom")
+    return out
+
+
+#: What may lie behind a bedroom (reached only through it): its en-suite, closet or balcony.
+PRIVATE_ANNEXES = frozenset({BATHROOM, CLOSET, BALCONY})
+
+
+def zone_problems(home: nx.Graph, entrance: str | None = None,
+                  types: dict[str, str] | None = None) -> list[str]:
+    """Rooms of the shared zone (everything but bedrooms and their annexes) that one reaches
+    from the entrance only through a bedroom; `types` as in `privacy_problems`."""
+    types = types or {n: room_type_of(n) for n in home.nodes}
+    if entrance is None or entrance not in home or types[entrance] == BEDROOM:
+        return []
+    shared = home.subgraph(n for n in home.nodes if types[n] != BEDROOM)
+    reach = nx.node_connected_component(shared, entrance)
+    everywhere = nx.node_connected_component(home, entrance)
+    return [f"{n} is reached only through a bedroom" for n in sorted(everywhere - reach)
+            if types[n] not in PRIVATE_ANNEXES and types[n] != BEDROOM]
+
+
+def balcony_problems(home: nx.Graph, types: dict[str, str] | None = None) -> list[str]:
+    """Balconies not entered from a living room or a bedroom only (`types`: room types by
+    name, default: read off the names)."""
+    out = []
+    types = types or {n: room_type_of(n) for n in home.nodes}
+    for b in sorted(n for n in home.nodes if types[n] == BALCONY):
+        others = sorted(n for n in home.neighbors(b) if types[n] not in (LIVING_ROOM, BEDROOM))
+        if others or not home.degree(b):
+            out.append(f"{b} is entered from {others or 'nowhere'}, not a living room or "
+                       "bedroom")
     return out
 
 
@@ -276,7 +321,8 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
     for t in (BATHROOM, KITCHEN):
         if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
-    out += privacy_problems(home)
+    out += privacy_problems(home, hg.entrance)
+    out += balcony_problems(home) + zone_problems(home, hg.entrance)
     if counts:
         have = hg.type_counts()
         for t, n in sorted(counts.items()):

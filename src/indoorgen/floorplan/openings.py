@@ -4,12 +4,14 @@
   near one end (leaving wall for furniture); its width depends on the room it leads into.
 - Living/dining and dining/kitchen pairs are instead joined by an open connection (the whole
   shared wall removed) with probability `open_prob`.
+- A garage's vehicle door goes in the middle of its longest straight exterior wall.
 - The front door goes in the middle of the entrance room's longest straight exterior wall.
 - Rooms that take windows get one to three, on their longest straight exterior walls, with
   the width limits and sill heights of their type, kept clear of the front door and the stairs.
-- Stairs: straight flights in the staircase placeholder, which is two lanes wide; the flight
-  from storey k climbs along lane k mod 2, alternating direction, so flights of a three-storey
-  home stack as a switchback and every flight arrives beside the start of the next.
+- Stairs: straight flights in the staircase placeholder (`stairs.flights`).
+- A staircase room's doors are placed where nothing of a flight or stairwell lies in front of
+  them on the staircase side and an agent of AGENT_RADIUS walks from every landing of that
+  storey to them (`stair_door_ok`): never over a stairwell, never behind its railing.
 """
 from __future__ import annotations
 
@@ -17,17 +19,26 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.floorplan.stairs import flights, stair_door_ok
 from indoorgen.floorplan.view import GridPlan, longest_run
-from indoorgen.model.floorplan import DoorSpec, Entrance, StairSpec, WindowSpec
+from indoorgen.model.floorplan import DoorSpec, Entrance, StairSpec, VehicleDoor, WindowSpec
 from indoorgen.model.polygons import cross_2d
-from indoorgen.model.room_types import DINING_ROOM, KITCHEN, LIVING_ROOM, ROOM_TYPES, STAIRCASE_ROOM
+from indoorgen.model.room_types import (
+    DINING_ROOM,
+    GARAGE,
+    KITCHEN,
+    LIVING_ROOM,
+    ROOM_TYPES,
+    STAIRCASE_ROOM,
+)
 
 #: Clear wall kept between a door or window and the end of its wall run (m).
 END_MARGIN = 0.15
-#: Landing left at each end of a flight inside the placeholder (m).
-LANDING = 0.5
 #: Pairs of types joined by an open connection (no wall) rather than a door, when chosen.
 OPEN_PAIRS = frozenset({frozenset({LIVING_ROOM, DINING_ROOM}), frozenset({DINING_ROOM, KITCHEN})})
+#: A garage's vehicle door (m): a single-car up-and-over or sectional door.
+VEHICLE_DOOR_WIDTH = 2.4
+VEHICLE_DOOR_HEIGHT = 2.1
 #: The front door's width, and every interior door's height (m).
 ENTRANCE_DOOR_WIDTH = 1.0
 DOOR_HEIGHT = 2.05
@@ -66,11 +77,13 @@ def door_width(into: str) -> float:
 
 
 def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob: float,
-                height: float) -> tuple[list[list[DoorSpec]], list[list[DoorSpec]]]:
+                height: float, stairs: list[StairSpec] | None = None, wall_half: float = 0.12
+                ) -> tuple[list[list[DoorSpec]], list[list[DoorSpec]]]:
     """Doors and open connections (full storey `height`) per storey, one per graph edge;
-    `wall` is the interior wall thickness."""
+    `wall` is the interior wall thickness. A staircase room's doors go where `stair_door_ok`
+    holds for `stairs` (`wall_half`: the most a wall takes off a room's free floor)."""
     doors, openings = [], []
-    for g in plan.graph.storeys:
+    for level, g in enumerate(plan.graph.storeys):
         dk, ok = [], []
         depth = {n: len(plan.entry_path(n)) for n in g.nodes}
         for a, b in sorted(tuple(sorted(e)) for e in g.edges):
@@ -82,9 +95,13 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
             inner = b if depth[b] >= depth[a] else a
             pair = frozenset({room_type_of(a), room_type_of(b)})
             if pair in OPEN_PAIRS and rng.random() < open_prob:
-                mid = (p + q) / 2
-                ok.append(DoorSpec(f"opening_{a}_{b}", (a, b), _pt(mid), round(length - wall, 3),
-                                   height))
+                # the walls at its ends stay: an exterior wall's inner half is thicker
+                ring = plan.contour(level).exterior
+                ends = [wall_half if ring.distance(sg.Point(e)) < 1e-6 else wall / 2
+                        for e in (p, q)]
+                mid = p + (ends[0] + (length - ends[1])) / 2 * u
+                ok.append(DoorSpec(f"opening_{a}_{b}", (a, b), _pt(mid),
+                                   round(length - sum(ends), 3), height))
                 continue
             w = door_width(inner)
             lo = wall / 2 + END_MARGIN + w / 2
@@ -92,10 +109,33 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
                 continue
             # centred, or near one end (leaving wall for furniture)
             t = length / 2 if rng.random() < 0.5 else (lo if rng.random() < 0.5 else length - lo)
-            dk.append(DoorSpec(f"door_{a}_{b}", (a, b), _pt(p + t * u), w, DOOR_HEIGHT))
+            centre = p + t * u
+            stair_room = next((r for r in (a, b) if room_type_of(r) == STAIRCASE_ROOM), None)
+            if stair_room is not None and stairs:
+                centre = _stair_door_site(plan, stair_room, runs, centre, w, lo, level, stairs,
+                                          wall_half)
+            dk.append(DoorSpec(f"door_{a}_{b}", (a, b), _pt(centre), w, DOOR_HEIGHT))
         doors.append(dk)
         openings.append(ok)
     return doors, openings
+
+
+def _stair_door_site(plan: GridPlan, room: str, runs, preferred: np.ndarray, width: float,
+                     lo: float, level: int, stairs: list[StairSpec], wall_half: float
+                     ) -> np.ndarray:
+    """The centre of a staircase room's door: `preferred` if `stair_door_ok` holds there, else
+    the first such place along the shared walls (longest first, every 0.25 m), else
+    `preferred` (floorplan.check then reports the plan)."""
+    poly = plan.polygon(room)
+    assert poly is not None  # solved plans hold simple polygons
+    for length, p, q in runs:
+        u = (q - p) / length
+        cands = [preferred] if length == runs[0][0] and p is runs[0][1] else []
+        cands += [p + t * u for t in np.arange(lo, length - lo + 1e-9, 0.25)]
+        for c in cands:
+            if stair_door_ok(poly, stairs, level, c, u, width, wall_half):
+                return c
+    return preferred
 
 
 def place_entrance(plan: GridPlan) -> Entrance | None:
@@ -107,10 +147,24 @@ def place_entrance(plan: GridPlan) -> Entrance | None:
     return Entrance(room, _pt(mid), ENTRANCE_DOOR_WIDTH, 2.1)
 
 
+def place_vehicle_doors(plan: GridPlan) -> list[VehicleDoor]:
+    """A vehicle door for each ground-floor garage, in the middle of its longest straight
+    exterior wall (the plan's rules keep that wall MIN_VEHICLE_DOOR_WALL long)."""
+    out = []
+    for name in plan.names[0]:
+        if room_type_of(name) != GARAGE:
+            continue
+        length, mid = plan.front_door(name)
+        if length >= VEHICLE_DOOR_WIDTH + 2 * END_MARGIN:
+            out.append(VehicleDoor(name, _pt(mid), VEHICLE_DOOR_WIDTH, VEHICLE_DOOR_HEIGHT))
+    return out
+
+
 def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
-                  entrance: Entrance | None, keep_clear: sg.Polygon | None
-                  ) -> list[list[WindowSpec]]:
-    """Windows per storey on the straight exterior walls of rooms whose type takes them."""
+                  entrance: Entrance | None, keep_clear: sg.Polygon | None,
+                  vehicle_doors: list[VehicleDoor] | None = None) -> list[list[WindowSpec]]:
+    """Windows per storey on the straight exterior walls of rooms whose type takes them, clear
+    of the front door, the stairs and the garages' vehicle doors."""
     out = []
     for k, names in enumerate(plan.names):
         wk: list[WindowSpec] = []
@@ -127,6 +181,9 @@ def place_windows(plan: GridPlan, rng: np.random.Generator, wall: float,
                 segs = [(0.0, length)]
                 if entrance is not None and k == 0:
                     segs = _cut(segs, p, u, np.asarray(entrance.center), entrance.width / 2 + 0.3)
+                for v in (vehicle_doors or []) if k == 0 else []:
+                    if v.room == name:
+                        segs = _cut(segs, p, u, np.asarray(v.center), v.width / 2 + 0.3)
                 if keep_clear is not None and room_type_of(name) == STAIRCASE_ROOM:
                     segs = [s for s in segs if keep_clear.distance(
                         sg.LineString([p + s[0] * u, p + s[1] * u])) > 0.3]
@@ -164,31 +221,7 @@ def _cut(segs, p, u, c, half):
 def place_stairs(plan: GridPlan) -> list[StairSpec]:
     """Straight flights in the placeholder, one per pair of consecutive storeys."""
     sp = plan.stair_polygon()
-    if sp is None:
-        return []
-    x0, y0, x1, y1 = sp.bounds
-    along_x = (x1 - x0) >= (y1 - y0)
-    length = (x1 - x0) if along_x else (y1 - y0)
-    width = ((y1 - y0) if along_x else (x1 - x0)) / 2
-    e_long = np.array([1.0, 0.0]) if along_x else np.array([0.0, 1.0])
-    e_side = np.array([0.0, 1.0]) if along_x else np.array([1.0, 0.0])
-    base = np.array([x0, y0])
-    out = []
-    for k in range(len(plan.grids) - 1):
-        lane = k % 2
-        s0, s1 = LANDING, length - LANDING
-        if k % 2 == 1:
-            s0, s1 = s1, s0
-        up = e_long if s1 > s0 else -e_long
-        side0 = base + lane * width * e_side
-        side1 = side0 + width * e_side
-        a, b = side0 + s0 * e_long, side1 + s0 * e_long
-        # order: bottom-left, bottom-right (seen walking up), top-right, top-left
-        right = np.array([up[1], -up[0]])
-        bl, br = (a, b) if np.dot(b - a, right) > 0 else (b, a)
-        tl, tr = bl + (s1 - s0) * e_long, br + (s1 - s0) * e_long
-        out.append(StairSpec(k, k + 1, [_pt(bl), _pt(br), _pt(tr), _pt(tl)]))
-    return out
+    return [] if sp is None else flights(sp, len(plan.grids))
 
 
 def _pt(p) -> tuple[float, float]:

@@ -1,14 +1,15 @@
 """Rooms as the floorplan stage names and counts them: a room is called ``<type>_<k>``, user
 room lists read ``bedroom=2,bathroom=1``, and rooms are at least MIN_WIDTH wide (types that may
-be narrow, closets, MIN_CLOSET_WIDTH). Everything else about a type is in
+be narrow, closets, MIN_CLOSET_WIDTH; garages MIN_GARAGE_WIDTH). Everything else about a type is in
 `indoorgen.model.room_types`.
 """
 from __future__ import annotations
 
 from typing import Any
 
+from indoorgen.constraints.room_terms import MIN_GARAGE_WIDTH
 from indoorgen.errors import ConfigError
-from indoorgen.model.room_types import LIVING_ROOM, ROOM_TYPES, room_type
+from indoorgen.model.room_types import GARAGE, LIVING_ROOM, ROOM_TYPES, room_type
 
 #: Narrowest a room may be (m); types that may be narrow down to MIN_CLOSET_WIDTH.
 MIN_WIDTH = 1.2
@@ -22,6 +23,8 @@ def room_type_of(name: str) -> str:
 
 def min_width(t: str) -> float:
     """The narrowest a room of type `t` may be (m)."""
+    if t == GARAGE:
+        return MIN_GARAGE_WIDTH
     spec = ROOM_TYPES.get(t)
     return MIN_CLOSET_WIDTH if spec is not None and spec.narrow_ok else MIN_WIDTH
 

@@ -6,17 +6,23 @@ breaks them for a room it touched before the program is even evaluated.
 """
 from __future__ import annotations
 
-from indoorgen.constraints.room_terms import MIN_DOOR_WALL
+from indoorgen.constraints.room_terms import (
+    MIN_BALCONY_EXTERIOR_SHARE,
+    MIN_BALCONY_FRONT,
+    MIN_DOOR_WALL,
+    MIN_VEHICLE_DOOR_WALL,
+)
 from indoorgen.floorplan.rooms import min_width, room_type_of
 from indoorgen.floorplan.view import GridPlan
-from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
+from indoorgen.model.room_types import BALCONY, GARAGE, ROOM_TYPES, STAIRCASE_ROOM
 
 
 def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
-    `min_width` wide, at least its type's minimum area, and the staircase room holding the
-    whole staircase placeholder."""
+    `min_width` wide, at least its type's minimum area, a balcony on the storey's edge, and the
+    staircase room holding the whole staircase placeholder with a door-wide wall clear of its
+    flights and stairwells for each graph neighbour."""
     t = room_type_of(o)
     if plan.outline_points(o) is None:
         return [f"{o} is not a simple polygon"]
@@ -26,15 +32,28 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
         out.append(f"{o} is smaller than {spec.min_area} m^2")
     if t == STAIRCASE_ROOM and plan.stair_coverage(o) < 0.999:
         out.append(f"{o} does not hold the stairs")
+    if t == STAIRCASE_ROOM and plan.stair_missing_doors(o):
+        out.append(f"{o} has no door-wide wall clear of the stairs with a graph neighbour")
     if (spec.exterior or o == plan.graph.entrance) and \
-            plan.longest_exterior_wall(o) < MIN_DOOR_WALL - 1e-9:
-        out.append(f"{o} has no outside wall")
+            plan.longest_exterior_wall(o) < exterior_wall_needed(o) - 1e-9:
+        out.append(f"{o} has no outside wall long enough")
+    if t == BALCONY and plan.exterior_length(o) < \
+            MIN_BALCONY_EXTERIOR_SHARE * plan.perimeter(o) - 1e-9:
+        out.append(f"{o} is not on the edge of the storey")
     width = min_width(t)
     if plan.narrow_area(o, width) > 0.01:
         out.append(f"{o} is narrower than {width} m")
     if plan.missing_doors(o):
         out.append(f"{o} lacks a door-wide wall with a graph neighbour")
     return out
+
+
+def exterior_wall_needed(o: str) -> float:
+    """The straight outside wall room `o` needs (m) if its type or the front door asks for
+    one: a garage's vehicle door, a balcony's open front, else a door or window."""
+    t = room_type_of(o)
+    return MIN_VEHICLE_DOOR_WALL if t == GARAGE else MIN_BALCONY_FRONT if t == BALCONY else \
+        MIN_DOOR_WALL
 
 
 def breaks_rules(plan: GridPlan, rooms) -> bool:

@@ -19,6 +19,7 @@ from indoorgen.constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
 from indoorgen.floorplan.graph import HomeGraph
 from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
 from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.floorplan.stairs import flight_mask, flights
 from indoorgen.model.room_types import ROOM_TYPES
 
 _TURN = math.radians(20.0)
@@ -119,6 +120,7 @@ class GridPlan(RoomView):
         for k, g in enumerate(graph.storeys):
             entry = graph.storey_entry(k)
             self._paths.update(nx.single_source_shortest_path(g, entry))
+        self._flight_cells: dict[tuple, np.ndarray] = {}
         self._typical_total = [math.fsum(ROOM_TYPES[room_type_of(n)].typical_area
                                          for n in names)
                                for names in self.names]
@@ -467,6 +469,46 @@ class GridPlan(RoomView):
         need = MIN_DOOR_WALL - 1e-6
         return float(sum(1 for n in self.neighbours(o)
                          if walls.get(self.index[n][1], (0.0,))[0] < need))
+
+    def flight_cells(self, level: int) -> np.ndarray | None:
+        """Cells of storey `level` under its flights and over its stairwells (None without
+        stairs); cached while the staircase placeholder stays put."""
+        sp = self.stair_polygon()
+        if sp is None:
+            return None
+        key = (self.stair_rect, level)
+        if key not in self._flight_cells:
+            self._flight_cells[key] = flight_mask(self.grids[level], flights(
+                sp, len(self.grids)), level)
+        return self._flight_cells[key]
+
+    def stair_missing_doors(self, o: str) -> float:
+        """For staircase room o: its graph neighbours it shares no door-wide straight wall with
+        whose two cells in front, on o's side, are clear of flights and stairwells (where the
+        door may open, `stairs.stair_door_ok`)."""
+        k, i = self.index[o]
+        blocked = self.flight_cells(k)
+        if blocked is None:
+            return self.missing_doors(o)
+        g = self.grids[k]
+        lab = self.labels[k]
+        mine = (lab == i) & g.full
+        other = np.where(g.full & (lab != i), lab, OUTSIDE)
+        best: dict[int, int] = {}
+        for axis in (0, 1):
+            m, oth, b = (mine, other, blocked) if axis == 0 else (mine.T, other.T, blocked.T)
+            pad = np.zeros((1, b.shape[1]), bool)
+            back = ~b & ~np.vstack([pad, b[:-1]])  # a cell and the one before it are clear
+            ahead = ~b & ~np.vstack([b[1:], pad])  # a cell and the one after it are clear
+            # the line between rows r and r+1: o below with the door opening back into it,
+            # or o above with the door opening ahead into it
+            line = np.where(m[:-1] & back[:-1], oth[1:],
+                            np.where(m[1:] & ahead[1:], oth[:-1], OUTSIDE))
+            for length, _, _, lab_j, _ in value_runs(line):
+                best[lab_j] = max(best.get(lab_j, 0), length)
+        need = MIN_DOOR_WALL - 1e-6
+        return float(sum(1 for n in self.neighbours(o)
+                         if best.get(self.index[n][1], 0) * g.size < need))
 
     def path_directness(self, o: str) -> float:
         """How direct the walk from the storey's entry point to o through the doors on its graph

@@ -97,6 +97,17 @@ class Entrance:
 
 
 @dataclass
+class VehicleDoor:
+    """A garage's vehicle door: an opening `width` wide in an exterior wall of ground-floor room
+    `room` (a garage), centred at `center`."""
+
+    room: str
+    center: Point
+    width: float = 2.4
+    height: float = 2.1
+
+
+@dataclass
 class Storey:
     """Storey `level` (0: the ground floor): its floor's `elevation` and ceiling `height` above
     it (m), its rooms and the doors, windows and open connections between them."""
@@ -130,6 +141,8 @@ class Floorplan:
     stairs: list[StairSpec] = field(default_factory=list)
     entrance: Entrance | None = None
     info: dict[str, Any] = field(default_factory=dict)
+    #: garages' vehicle doors (ground floor)
+    vehicle_doors: list[VehicleDoor] = field(default_factory=list)
 
     def rooms(self) -> list[tuple[Storey, RoomSpec]]:
         """Every room with its storey, storey by storey."""

@@ -10,7 +10,10 @@ read it). The schema::
                   "openings": [{"name": ..., "rooms": [a, b], "center": [x, y], "width": w,
                                 "height": h}]}],
      "stairs": [{"from_level": 0, "to_level": 1, "polygon": [[x, y], ...]}],
-     "entrance": {"room": ..., "center": [x, y]}}
+     "entrance": {"room": ..., "center": [x, y]},
+     "vehicle_doors": [{"room": garage, "center": [x, y], "width": w, "height": h}]}
+
+`vehicle_doors` (garages' doors to the outside, on exterior walls) is left out when there are none.
 
 Room polygons are counter-clockwise partition polygons (walls are centred on their edges); a
 door's or opening's centre lies on the wall the two rooms share, a window's on an exterior wall
@@ -33,7 +36,16 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import ConfigError, InvalidGeometryError
-from indoorgen.model.floorplan import DoorSpec, Entrance, Floorplan, RoomSpec, StairSpec, Storey, WindowSpec
+from indoorgen.model.floorplan import (
+    DoorSpec,
+    Entrance,
+    Floorplan,
+    RoomSpec,
+    StairSpec,
+    Storey,
+    VehicleDoor,
+    WindowSpec,
+)
 from indoorgen.model.room_types import room_type
 
 
@@ -64,7 +76,9 @@ def to_json(fp: Floorplan) -> dict[str, Any]:
         "entrance": ({"room": fp.entrance.room,
                       "center": [_r(c) for c in fp.entrance.center]}
                      if fp.entrance is not None else None),
-    }
+    } | ({"vehicle_doors": [{"room": v.room, "center": [_r(c) for c in v.center],
+                             "width": _r(v.width), "height": _r(v.height)}
+                            for v in fp.vehicle_doors]} if fp.vehicle_doors else {})
 
 
 def _door(d: DoorSpec) -> dict[str, Any]:
@@ -189,7 +203,12 @@ def from_json(d: dict[str, Any]) -> Floorplan:
     if e is not None:
         r = _Reader("entrance")
         entrance = Entrance(r.get(e, "room", str), r.point(r.get(e, "center"), "center"))
-    fp = Floorplan(storeys, stairs, entrance)
+    vehicle_doors = []
+    for i, v in enumerate(rd.get(d, "vehicle_doors", list, [])):
+        r = _Reader(f"vehicle_doors[{i}]")
+        vehicle_doors.append(VehicleDoor(r.get(v, "room", str), r.point(r.get(v, "center"), "center"),
+                                         r.get(v, "width", float), r.get(v, "height", float)))
+    fp = Floorplan(storeys, stairs, entrance, vehicle_doors=vehicle_doors)
     check_predefined(fp)
     return fp
 
@@ -242,6 +261,10 @@ def check_predefined(fp: Floorplan) -> None:
                 st.to_level not in levels:
             raise ConfigError(f"floorplan.json: a stair from {st.from_level} to {st.to_level} "
                               "must join a storey to the next one")
+    for v in fp.vehicle_doors:
+        if v.room not in {r.name for r in fp.storeys[0].rooms}:
+            raise ConfigError(f"floorplan.json: vehicle door room {v.room!r} is not on the "
+                              "ground floor")
     if fp.entrance is not None and fp.entrance.room not in {r.name for r in fp.storeys[0].rooms}:
         raise ConfigError(f"floorplan.json: entrance room {fp.entrance.room!r} is not on the "
                           "ground floor")

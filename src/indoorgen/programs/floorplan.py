@@ -8,6 +8,11 @@ from collections.abc import Callable
 
 from indoorgen.constraints import ObjSet, Problem, Scalar, scene
 from indoorgen.constraints.room_terms import (
+    MIN_BALCONY_EXTERIOR_SHARE,
+    MIN_BALCONY_FRONT,
+    MIN_DOOR_WALL,
+    MIN_GARAGE_WIDTH,
+    MIN_VEHICLE_DOOR_WALL,
     STOREY,
     aspect_ratio,
     convexity,
@@ -22,6 +27,7 @@ from indoorgen.constraints.room_terms import (
     outline_corners,
     outline_length,
     path_directness,
+    perimeter,
     ratio_mismatch,
     room_area,
     rooms_of,
@@ -57,11 +63,17 @@ def floorplan() -> Problem:
     return Problem(
         constraints={
             "graph neighbours share a door-wide wall": rooms.all(lambda r: missing_doors(r) == 0),
-            "bedrooms, garages and balconies have an outside wall": rooms_of(
-                rooms, "bedroom", "garage", "balcony").all(
-                lambda r: longest_exterior_wall(r) >= 1.5),
+            "bedrooms have an outside wall": rooms_of(rooms, "bedroom").all(
+                lambda r: longest_exterior_wall(r) >= MIN_DOOR_WALL),
+            "garages have an outside wall for the vehicle door": rooms_of(rooms, "garage").all(
+                lambda r: longest_exterior_wall(r) >= MIN_VEHICLE_DOOR_WALL),
+            "balconies lie on the edge of the storey": rooms_of(rooms, "balcony").all(
+                lambda r: (longest_exterior_wall(r) >= MIN_BALCONY_FRONT)
+                & (exterior_length(r) >= MIN_BALCONY_EXTERIOR_SHARE * perimeter(r))),
+            "garages at least 3 m wide": rooms_of(rooms, "garage").all(
+                lambda r: narrow_area(r, MIN_GARAGE_WIDTH) <= 0.01),
             "the entrance has an outside wall for the front door": rooms["entrance"].all(
-                lambda r: longest_exterior_wall(r) >= 1.5),
+                lambda r: longest_exterior_wall(r) >= MIN_DOOR_WALL),
             "rooms at least 1.2 m wide": rooms.excluding("closet").all(
                 lambda r: narrow_area(r, 1.2) <= 0.01),
             "closets at least 1 m wide": rooms_of(rooms, "closet").all(
