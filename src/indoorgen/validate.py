@@ -36,10 +36,10 @@ from indoorgen.errors import ConfigError
 from indoorgen.model.boxes import overlapping_pairs
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Semantics
+from indoorgen.model.walkable import band_outlines
 from indoorgen.programs import ROOM_PROGRAMS
 from indoorgen.quality.layout import quality_report
 from indoorgen.quality.navigation import navigation_report
-from indoorgen.quality.occupancy import band_outlines
 from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
