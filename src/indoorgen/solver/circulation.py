@@ -14,8 +14,9 @@ another. The *targets* are
 - each large object whose front matters (`model.walkable.access_points`): its front point, or
   for a bed either side point, within `FRONT_TOLERANCE`.
 
-The violation is the number of targets outside the component that serves the most of them, so
-0 means every door, landing and front can be reached from every other. Doors or landings that
+The violation is the number of targets outside the component that serves the most of them
+(weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
+front can be reached from every other. Doors or landings that
 even the empty room cannot serve (an architectural fault no furniture can fix) are left out and
 logged.
 
@@ -61,6 +62,10 @@ log = logging.getLogger(__name__)
 
 #: The name of the circulation constraint in every room's problem.
 CIRCULATION = "circulation"
+#: What one unreachable target adds to the room's violation: more than one missing object, so
+#: the annealer never trades a walkway for a count (a bed that cuts the room is not worth the
+#: bed; it waits for a pose that leaves the way through).
+CIRCULATION_WEIGHT = 2.0
 #: A keep-out zone this close (m) to a door's edge is that door's zone, not a stair landing.
 DOOR_ZONE_GAP = 0.05
 #: Stages whose objects have fronts the agent must reach (the navigation measure's "large").
@@ -163,13 +168,14 @@ def room_floor(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CEL
 
 
 def standing(state: State, room: str) -> list[str]:
-    """The room's objects that stand on its floor or hang on its walls (not those resting on
-    other objects), by name: what can block the agent."""
+    """The room's objects with a placement on the room itself (on its floor, against a wall:
+    a dining chair stands on the floor though pulled up to its table), by name: what can
+    block the agent. Things resting only on other objects lie within them."""
     out = []
     for stage in ("large", "medium", "small"):
         for n in state.members(room, stage):
             ob = state.objects[n]
-            if all(p.parent in state.rooms for p in ob.placements):
+            if any(p.parent in state.rooms for p in ob.placements):
                 out.append(n)
     return sorted(out)
 
@@ -241,8 +247,8 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
 
 
 class Circulation(Constraint):
-    """Violated by the number of doors, landings and large objects' fronts a walking agent of
-    `radius` cannot reach from the rest in room `room` (see the module). Keeps, per solver
+    """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
+    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the module). Keeps, per solver
     state it is evaluated on, the room's caches (they go when the state goes)."""
 
     def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
@@ -260,14 +266,14 @@ class Circulation(Constraint):
         return walkway(state, self.room, self.radius, self.cell, cache)
 
     def compute(self, ev: EvalContext, env: Env) -> float:
-        """The count of unreachable targets in the room's current arrangement."""
+        """The weighted count of unreachable targets in the room's current arrangement."""
         state = ev.view
         if not isinstance(state, State):
             raise TypeError(f"circulation needs the solver's State, got {type(state).__name__}")
         ev.watch_membership()
         ev.watch(n for stage in ("large", "medium", "small")
                  for n in state.members(self.room, stage))
-        return float(self.walkway(state).violation)
+        return CIRCULATION_WEIGHT * self.walkway(state).violation
 
     def label(self) -> str:
         """`circulation(room)`."""
