@@ -2,11 +2,11 @@
 other door and to the front of every large object.
 
 The room's floor is rasterised at `model.walkable.CELL` (the floor slab's top, so a stairwell is
-not floor) and eroded by the agent's radius; the cells within the radius of any collision piece
-of a standing object that reaches into the agent's height band (`model.walkable.BAND`; each
-piece's bounding box, so never more lenient than the navigation measure's hulls) are taken out,
-and the rest is split into 4-connected components: the centres an agent can reach from one
-another. The *targets* are
+not floor), keeping the cells whose centre lies `clearance` (the agent's radius and a cell) from
+its edge; the cells as near any collision piece of a standing object that reaches into the
+agent's height band (`model.walkable.BAND`; each piece's bounding box, so never more lenient
+than the navigation measure's hulls) are taken out, and the rest is split into 4-connected
+components: the centres an agent can reach from one another. The *targets* are
 
 - each door and open connection: the strip in front of it, `APPROACH` beyond the agent's radius
   deep (the navigation measure's test of a door);
@@ -52,7 +52,6 @@ from indoorgen.model.walkable import (
     approach_strip,
     band_boxes,
     door_segment,
-    erode,
     paint,
     patch_values,
 )
@@ -152,14 +151,21 @@ def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str]]:
     return len(missed), missed
 
 
+def clearance(radius: float, cell: float) -> float:
+    """How near a wall or an object's box an agent's centre may come in this term: its radius
+    and a cell, measured exactly from each cell's centre. The navigation measure erodes its own
+    raster (which may lie up to half a cell past an edge) by the radius and half a cell, so a
+    cell this term allows is allowed there on any alignment of its grid, and a path one cell
+    wide here is not lost to the measure's different cells."""
+    return radius + cell
+
+
 def room_floor(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CELL) -> RoomFloor:
     """The fixed part of a room's circulation, with the doors and landings the empty room can
     serve as targets (the others are reported, not counted)."""
-    walkable = floor_polygon(shape)
     grid = Grid.covering(sg.Polygon(shape.room.polygon).bounds, cell)
-    floor = grid.rasterise([walkable])
     targets = static_targets(shape, grid, radius)
-    centres = erode(floor, radius, cell)
+    centres = grid.rasterise([floor_polygon(shape).buffer(-clearance(radius, cell))])
     _, missed = _best(targets, ndimage.label(centres)[0])
     if missed:
         log.warning("room %s: %s cannot be reached even in the empty room", shape.room.name,
@@ -186,11 +192,10 @@ def _pose_key(ob: ObjState) -> tuple[Any, ...]:
 
 class _RoomCache:
     """A room's fixed floor, each standing object's raster by pose, and the last result.
-    `margin`: how near an object's box an agent's centre may not come (its radius and half a
-    cell, so this is never more lenient than eroding the rasterised boxes)."""
+    `margin`: how near an object's box an agent's centre may come (`clearance`)."""
 
     def __init__(self, fixed: RoomFloor, radius: float, cell: float):
-        self.fixed, self.radius, self.margin = fixed, radius, radius + cell / 2
+        self.fixed, self.radius, self.margin = fixed, radius, clearance(radius, cell)
         self.patches: dict[str, tuple[tuple[Any, ...], list[Patch], Target | None]] = {}
         self.last: tuple[tuple[Any, ...], Walkway] | None = None
         self.evaluations = 0
