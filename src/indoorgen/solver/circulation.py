@@ -253,8 +253,9 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
 
 class Circulation(Constraint):
     """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
-    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the module). Keeps, per solver
-    state it is evaluated on, the room's caches (they go when the state goes)."""
+    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the
+    module). Keeps, per solver state it is evaluated on, the room's caches (they go when the
+    state goes)."""
 
     def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
         super().__init__()
