@@ -40,6 +40,7 @@ from indoorgen.quality.navigation import navigation_report, write_nav_images
 from indoorgen.render.plan import draw_plan
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
+from indoorgen.solver.circulation import circulation_report
 from indoorgen.solver.full_mesh import full_mesh_check
 from indoorgen.solver.placement import planar
 from indoorgen.solver.stages import solve
@@ -257,7 +258,9 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
                               for s in ("large", "medium", "small")},
         "removed_by_full_mesh_check": removed,
         "rooms": {r: {"violations": res.violations, "n_violated": res.n_violated,
-                      "scores": res.scores, "loss": res.loss} for r, res in results.items()},
+                      "scores": res.scores, "loss": res.loss,
+                      "circulation": circulation_report(evaluators[r].problem, state, r)}
+                  for r, res in results.items()},
     }
     return Generated(sc, geometry, state, cache, results, report)
 

@@ -7,7 +7,8 @@ then checks with manifold3d booleans and plain geometry:
 - every object rests on or hangs from its declared parent surface within 5 mm;
 - every door's clearance zone is free of objects;
 - dining chairs face the table they are pulled up to;
-- the room's constraint program, evaluated from scratch, has no hard violation.
+- the room's constraint program, evaluated from scratch, has no hard violation (its circulation
+  constraint included, as the solver adds it: `solver.circulation`).
 
 `ok` is that physical and program validity. The layout-quality rules (`quality.layout`) are
 reported beside it as `quality` and `quality_passed`: a scene can be physically valid and still
@@ -36,10 +37,11 @@ from indoorgen.errors import ConfigError
 from indoorgen.model.boxes import overlapping_pairs
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Semantics
+from indoorgen.model.walkable import band_outlines
 from indoorgen.programs import ROOM_PROGRAMS
 from indoorgen.quality.layout import quality_report
 from indoorgen.quality.navigation import navigation_report
-from indoorgen.quality.occupancy import band_outlines
+from indoorgen.solver.circulation import with_circulation
 from indoorgen.solver.state import state_from_scene
 
 PENETRATION_TOL = 0.001
@@ -173,14 +175,16 @@ def _footprint_below(obj: SceneObject, asset: Asset, floor_z: float) -> Any:
 
 
 def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
-    """Each room's built-in program evaluated fully (a fresh evaluator) on the saved scene."""
+    """Each room's built-in program, with its circulation constraint, evaluated fully (a fresh
+    evaluator) on the saved scene."""
     state = state_from_scene(scene, rooms, AssetCache())
     out = {}
     for rn, room in scene.rooms.items():
         prog = ROOM_PROGRAMS.get(room.room_type)
         if prog is None:
             continue
-        res = Evaluator(prog(scene_set()[Semantics.Room].named(rn)), state).evaluate()
+        problem = with_circulation(prog(scene_set()[Semantics.Room].named(rn)), rn)
+        res = Evaluator(problem, state).evaluate()
         out[rn] = {k: v for k, v in res.violations.items() if v > 1e-9}
     return out
 

@@ -13,7 +13,7 @@ body sweeps from every reachable centre, so an empty room counts as reached but 
 - a room is reachable when a reachable centre lies on its floor;
 - a door when reachable centres lie in front of it on each side it opens into (`APPROACH` beyond
   the agent's radius) and, between two rooms, in its passage through the wall;
-- a large object whose front matters (`FRONT_TAGS`) when a reachable centre lies within
+- a large object whose front matters (`model.walkable.FRONT_TAGS`) when a reachable centre lies within
   `FRONT_TOLERANCE` of its front point, `agent_radius + FRONT_GAP` in front of its front face;
   a bed (`BED_TAGS`) when one of its two side points is (a bed against a wall is reached from
   its other side).
@@ -40,30 +40,18 @@ from indoorgen.assets.cache import AssetCache
 from indoorgen.model.floorplan import Floorplan, StairSpec
 from indoorgen.model.floorplan_io import from_json
 from indoorgen.model.scene import Room, Scene, SceneObject
-from indoorgen.model.tags import Semantics
-from indoorgen.quality.occupancy import (
-    DoorSite,
-    StoreyOccupancy,
+from indoorgen.model.walkable import (
+    AGENT_RADIUS,
+    APPROACH,
+    CELL,
+    FRONT_TOLERANCE,
     band_outlines,
     cover,
     erode,
-    storey_occupancy,
 )
+from indoorgen.model.walkable import access_points as local_access_points
+from indoorgen.quality.occupancy import DoorSite, StoreyOccupancy, storey_occupancy
 
-#: Depth beyond the agent's radius of the strips in front of doors and at stair ends (m).
-APPROACH = 0.3
-#: Gap between an object's front face and the agent's edge at its front point (m).
-FRONT_GAP = 0.1
-#: A front point counts as reached when a reachable centre lies this close (m).
-FRONT_TOLERANCE = 0.1
-#: Large objects used from the front: seating, storage, appliances, fixtures, desks.
-FRONT_TAGS = frozenset(t.value for t in (
-    Semantics.Sofa, Semantics.SectionalSofa, Semantics.Armchair, Semantics.Wardrobe,
-    Semantics.Dresser, Semantics.Bookcase, Semantics.Appliance, Semantics.KitchenCabinet,
-    Semantics.KitchenSink, Semantics.KitchenIsland, Semantics.Vanity, Semantics.BathroomSink,
-    Semantics.Toilet, Semantics.Bathtub, Semantics.Shower, Semantics.Desk))
-#: Large objects used from their sides.
-BED_TAGS = frozenset(t.value for t in (Semantics.Bed, Semantics.BunkBed))
 #: Robot radius of the community navigability figure (m).
 ROBOT_RADIUS = 0.2
 
@@ -123,7 +111,7 @@ def _railings(architecture: Architecture | None, level: int, elevation: float
 
 
 def occupancies(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
-                architecture: Architecture | None = None, *, cell: float = 0.05
+                architecture: Architecture | None = None, *, cell: float = CELL
                 ) -> dict[int, StoreyOccupancy]:
     """Every storey's occupancy grid, by level."""
     room_map = _room_map(scene, rooms)
@@ -168,8 +156,8 @@ def _labels_in(o: StoreyOccupancy, labels: np.ndarray, geom: sg.Polygon) -> set[
 
 
 def reach(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
-          architecture: Architecture | None = None, *, agent_radius: float = 0.25,
-          cell: float = 0.05) -> Reach:
+          architecture: Architecture | None = None, *, agent_radius: float = AGENT_RADIUS,
+          cell: float = CELL) -> Reach:
     """Flood every storey from the entrance for an agent of `agent_radius`, through stairs."""
     occ = occupancies(scene, rooms, cache, architecture, cell=cell)
     centres = {lv: erode(o.free, agent_radius, cell) for lv, o in occ.items()}
@@ -216,14 +204,14 @@ def _door_ok(sr: StoreyReach, site: DoorSite, radius: float) -> bool:
 
 def access_points(ob: SceneObject, cache: AssetCache, radius: float) -> list[np.ndarray]:
     """World XY points an agent of `radius` must reach to use `ob` (any one of them suffices):
-    the front point, or for a bed its two side points; [] when its front does not matter."""
-    tags = set(ob.tags)
-    if ob.stage != "large" or not tags & (FRONT_TAGS | BED_TAGS):
+    the front point, or for a bed its two side points; [] when its front does not matter (or it
+    is not a large object)."""
+    if ob.stage != "large":
         return []
-    (x0, y0, _), (x1, y1, _) = cache.placeholder(ob.generator, ob.params).mesh.bounds
-    gap = radius + FRONT_GAP
-    xc, yc = (x0 + x1) / 2, (y0 + y1) / 2
-    local = [(xc, y1 + gap), (xc, y0 - gap)] if tags & BED_TAGS else [(x1 + gap, yc)]
+    local = local_access_points(ob.tags, cache.placeholder(ob.generator, ob.params).mesh.bounds,
+                                radius)
+    if not local:
+        return []
     world = ob.pose.apply(np.array([[x, y, 0.0] for x, y in local]))
     return [w[:2] for w in world]
 
@@ -233,8 +221,8 @@ def _r4(x: float) -> float:
 
 
 def navigation_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
-                      architecture: Architecture | None = None, *, agent_radius: float = 0.25,
-                      cell: float = 0.05) -> dict[str, Any]:
+                      architecture: Architecture | None = None, *, agent_radius: float = AGENT_RADIUS,
+                      cell: float = CELL) -> dict[str, Any]:
     """The `navigation` section of report.json: per storey and overall, the share of free floor
     an agent of `agent_radius` reaches from the entrance; rooms, doors and large objects it
     cannot reach; `passed` when every room is reachable."""
@@ -305,7 +293,7 @@ def _picture(sr: StoreyReach) -> np.ndarray:
 
 def write_nav_images(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
                      architecture: Architecture | None, out_dir: Path, *,
-                     agent_radius: float = 0.25) -> list[Path]:
+                     agent_radius: float = AGENT_RADIUS) -> list[Path]:
     """Write `nav_<storey>.png` per storey into `out_dir` (free floor reached or not, agent
     centres, obstacles, the entrance marked) and return their paths."""
     rc = reach(scene, rooms, cache, architecture, agent_radius=agent_radius)

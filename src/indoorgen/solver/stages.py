@@ -1,5 +1,6 @@
 """The staged solve (Infinigen Indoors, algorithm 1): per room, anneal the large objects, then the
-medium, then the small; each stage sees earlier stages' objects as fixed."""
+medium, then the small; each stage sees earlier stages' objects as fixed. Every room's program
+gets the circulation constraint here (`solver.circulation`), so every room keeps a walkway."""
 from __future__ import annotations
 
 import logging
@@ -12,6 +13,7 @@ from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
+from indoorgen.solver.circulation import with_circulation
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
@@ -35,8 +37,10 @@ def make_namer() -> Callable[[str], str]:
 def solve(state: State, problems: dict[str, Problem], seed: int, *,
           config: AnnealConfig | None = None, steps: dict[str, int] | None = None,
           progress: bool = False) -> tuple[list[StageStats], dict[str, Evaluator]]:
-    """Solve every room's problem in turn, stage by stage, mutating `state`."""
+    """Solve every room's problem, with its circulation constraint added, in turn, stage by
+    stage, mutating `state`. The evaluators returned evaluate those extended problems."""
     config = config or AnnealConfig()
+    problems = {room: with_circulation(p, room) for room, p in problems.items()}
     steps = {**DEFAULT_STEPS, **(steps or {})}
     namer = make_namer()
     stats: list[StageStats] = []

@@ -1,0 +1,300 @@
+"""Circulation as a hard constraint: in every room, a walking agent gets from each door to every
+other door and to the front of every large object.
+
+The room's floor is rasterised at `model.walkable.CELL` (the floor slab's top, so a stairwell is
+not floor), keeping the cells whose centre lies `clearance` (the agent's radius and a cell) from
+its edge; the cells as near any collision piece of a standing object that reaches into the
+agent's height band (`model.walkable.BAND`; each piece's bounding box, so never more lenient
+than the navigation measure's hulls) are taken out, and the rest is split into 4-connected
+components: the centres an agent can reach from one another. The *targets* are
+
+- each door and open connection: the strip in front of it, `APPROACH` beyond the agent's radius
+  deep (the navigation measure's test of a door);
+- each stair landing (a keep-out zone that belongs to no door);
+- each large object whose front matters (`model.walkable.access_points`): its front point, or
+  for a bed either side point, within `FRONT_TOLERANCE`.
+
+The violation is the number of targets outside the component that serves the most of them
+(weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
+front can be reached from every other. Doors or landings that
+even the empty room cannot serve (an architectural fault no furniture can fix) are left out and
+logged.
+
+`Circulation` is the constraint node; `with_circulation` adds it to a room's problem (the stage
+runner does so for every room). Each evaluation is cached on the solver state by the poses of
+the room's standing objects, and each object's raster by its pose, so a move that touches
+nothing on the floor costs a key comparison and one that moves a chair re-rasterises one chair.
+"""
+from __future__ import annotations
+
+import logging
+import weakref
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import shapely
+import shapely.geometry as sg
+from scipy import ndimage
+
+from indoorgen.constraints.logic import Constraint
+from indoorgen.constraints.node import Env, EvalContext
+from indoorgen.constraints.problem import Problem
+from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.walkable import (
+    AGENT_RADIUS,
+    APPROACH,
+    CELL,
+    FRONT_TOLERANCE,
+    Grid,
+    Patch,
+    access_points,
+    approach_strip,
+    band_boxes,
+    door_segment,
+    paint,
+    patch_values,
+)
+from indoorgen.solver.state import ObjState, RoomShape, State
+
+log = logging.getLogger(__name__)
+
+#: The name of the circulation constraint in every room's problem.
+CIRCULATION = "circulation"
+#: What one unreachable target adds to the room's violation: more than one missing object, so
+#: the annealer never trades a walkway for a count (a bed that cuts the room is not worth the
+#: bed; it waits for a pose that leaves the way through).
+CIRCULATION_WEIGHT = 2.0
+#: A keep-out zone this close (m) to a door's edge is that door's zone, not a stair landing.
+DOOR_ZONE_GAP = 0.05
+#: Stages whose objects have fronts the agent must reach (the navigation measure's "large").
+FRONT_STAGES = frozenset({"large"})
+
+
+@dataclass
+class Target:
+    """Somewhere the agent must get to: a name for reports and the cells (any one suffices)."""
+
+    name: str
+    patches: list[Patch]
+
+
+@dataclass
+class RoomFloor:
+    """What does not change while a room is furnished: its grid, the centres an agent can
+    occupy in the empty room, the doors and landings to connect, and those the empty room
+    cannot serve."""
+
+    grid: Grid
+    centres: np.ndarray
+    targets: list[Target]
+    unservable: list[str]
+
+
+@dataclass
+class Walkway:
+    """One evaluation of a room's circulation: the violation and the targets it counts."""
+
+    violation: int
+    unreachable: list[str]
+    unservable: list[str] = field(default_factory=list)
+
+    def to_json(self) -> dict[str, Any]:
+        """The room's `circulation` record in report.json."""
+        return {"violation": self.violation, "unreachable": list(self.unreachable),
+                "unservable_by_architecture": list(self.unservable)}
+
+
+def floor_polygon(shape: RoomShape) -> sg.base.BaseGeometry:
+    """The room's walkable floor: its polygon, less any hole in its floor slab (a stairwell)."""
+    poly = sg.Polygon(shape.room.polygon)
+    slab = getattr(shape, "floor", None)
+    if slab is None:
+        return poly
+    top = np.asarray(slab.face_normals)[:, 2] > 0.99
+    if not top.any():
+        return poly
+    tris = np.asarray(slab.vertices)[np.asarray(slab.faces)[top]][:, :, :2]
+    surface = shapely.union_all(shapely.polygons(tris)).buffer(1e-6)
+    return poly.intersection(surface)
+
+
+def static_targets(shape: RoomShape, grid: Grid, radius: float) -> list[Target]:
+    """The room's doors and open connections (the strip in front of each) and its stair
+    landings (keep-out zones beside no door)."""
+    room = shape.room
+    poly = np.asarray(room.polygon, float)
+    out, mids = [], []
+    for d in room.doors:
+        seg, inward = door_segment(poly, d.wall, d.offset, d.width)
+        mids.append(sg.Point(seg.mean(axis=0)))
+        out.append(Target(f"door {d.name}", grid.patches([approach_strip(seg, inward,
+                                                                          radius + APPROACH)])))
+    landings = [z for z in shape.door_zones
+                if not z.is_empty and all(z.distance(m) > DOOR_ZONE_GAP for m in mids)]
+    out += [Target(f"stair landing {k}", grid.patches([z])) for k, z in enumerate(landings)]
+    return out
+
+
+def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str]]:
+    """The component serving most targets: the count of the others, and their names."""
+    hit = [{int(v) for p in t.patches for v in np.unique(patch_values(labels, p)) if v}
+           for t in targets]
+    counts: dict[int, int] = {}
+    for h in hit:
+        for lab in h:
+            counts[lab] = counts.get(lab, 0) + 1
+    if not counts:
+        return len(targets), [t.name for t in targets]
+    best = min(counts, key=lambda lab: (-counts[lab], lab))
+    missed = [t.name for t, h in zip(targets, hit, strict=True) if best not in h]
+    return len(missed), missed
+
+
+def clearance(radius: float, cell: float) -> float:
+    """How near a wall or an object's box an agent's centre may come in this term: its radius
+    and a cell, measured exactly from each cell's centre. The navigation measure erodes its own
+    raster (which may lie up to half a cell past an edge) by the radius and half a cell, so a
+    cell this term allows is allowed there on any alignment of its grid, and a path one cell
+    wide here is not lost to the measure's different cells."""
+    return radius + cell
+
+
+def room_floor(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CELL) -> RoomFloor:
+    """The fixed part of a room's circulation, with the doors and landings the empty room can
+    serve as targets (the others are reported, not counted)."""
+    grid = Grid.covering(sg.Polygon(shape.room.polygon).bounds, cell)
+    targets = static_targets(shape, grid, radius)
+    centres = grid.rasterise([floor_polygon(shape).buffer(-clearance(radius, cell))])
+    _, missed = _best(targets, ndimage.label(centres)[0])
+    if missed:
+        log.warning("room %s: %s cannot be reached even in the empty room", shape.room.name,
+                    ", ".join(missed))
+    return RoomFloor(grid, centres, [t for t in targets if t.name not in missed], missed)
+
+
+def standing(state: State, room: str) -> list[str]:
+    """The room's objects with a placement on the room itself (on its floor, against a wall:
+    a dining chair stands on the floor though pulled up to its table), by name: what can
+    block the agent. Things resting only on other objects lie within them."""
+    out = []
+    for stage in ("large", "medium", "small"):
+        for n in state.members(room, stage):
+            ob = state.objects[n]
+            if any(p.parent in state.rooms for p in ob.placements):
+                out.append(n)
+    return sorted(out)
+
+
+def _pose_key(ob: ObjState) -> tuple[Any, ...]:
+    return (id(ob.asset), *np.round(ob.position, 6).tolist(), round(float(ob.yaw), 6))
+
+
+class _RoomCache:
+    """A room's fixed floor, each standing object's raster by pose, and the last result.
+    `margin`: how near an object's box an agent's centre may come (`clearance`)."""
+
+    def __init__(self, fixed: RoomFloor, radius: float, cell: float):
+        self.fixed, self.radius, self.margin = fixed, radius, clearance(radius, cell)
+        self.patches: dict[str, tuple[tuple[Any, ...], list[Patch], Target | None]] = {}
+        self.last: tuple[tuple[Any, ...], Walkway] | None = None
+        self.evaluations = 0
+
+    def object_patches(self, ob: ObjState, floor_z: float) -> tuple[list[Patch], Target | None]:
+        """The centres `ob` keeps the agent from at its pose (within the agent's radius of its
+        collision pieces' boxes that reach into the band) and, for a large object whose front
+        matters, the cells in front of it (both cached by pose)."""
+        key = _pose_key(ob)
+        got = self.patches.get(ob.name)
+        if got is not None and got[0] == key:
+            return got[1], got[2]
+        assert ob.boxes is not None  # the state sets them when the object is added
+        rotation = yaw_matrix(ob.yaw)[:2, :2]
+        position = np.asarray(ob.position[:2], float)
+        boxes = band_boxes(ob.boxes, float(ob.position[2]) - floor_z)
+        patches = self.fixed.grid.near_boxes(boxes, rotation, position, self.margin)
+        front = None
+        if ob.stage in FRONT_STAGES:
+            local = access_points([getattr(t, "value", t) for t in ob.tags],
+                                  ob.asset.mesh.bounds, self.radius)
+            if local:
+                discs = [self.fixed.grid.disc(rotation @ p + position, FRONT_TOLERANCE)
+                         for p in local]
+                front = Target(f"front of {ob.name}", [d for d in discs if d is not None])
+        self.patches[ob.name] = (key, patches, front)
+        return patches, front
+
+
+def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float = CELL,
+            cache: _RoomCache | None = None) -> Walkway:
+    """The circulation of `room` in the state's current arrangement (`cache`: what an earlier
+    evaluation of this room and state kept)."""
+    cache = cache or _RoomCache(room_floor(state.rooms[room], radius, cell), radius, cell)
+    names = standing(state, room)
+    key = tuple(_pose_key(state.objects[n]) + (n,) for n in names)
+    if cache.last is not None and cache.last[0] == key:
+        return cache.last[1]
+    cache.evaluations += 1
+    fixed = cache.fixed
+    floor_z = float(getattr(state.rooms[room], "elevation", 0.0))
+    blocked = np.zeros(fixed.grid.shape, bool)
+    targets = list(fixed.targets)
+    for n in names:
+        patches, front = cache.object_patches(state.objects[n], floor_z)
+        paint(blocked, patches)
+        if front is not None:
+            targets.append(front)
+    labels = ndimage.label(fixed.centres & ~blocked)[0]
+    count, missed = _best(targets, labels)
+    result = Walkway(count, missed, list(fixed.unservable))
+    cache.last = (key, result)
+    return result
+
+
+class Circulation(Constraint):
+    """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
+    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the
+    module). Keeps, per solver state it is evaluated on, the room's caches (they go when the
+    state goes)."""
+
+    def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
+        super().__init__()
+        self.room, self.radius, self.cell = room, radius, cell
+        self._caches: weakref.WeakKeyDictionary[State, _RoomCache] = weakref.WeakKeyDictionary()
+
+    def walkway(self, state: State) -> Walkway:
+        """The room's circulation in the state's current arrangement, from cache if unchanged."""
+        cache = self._caches.get(state)
+        if cache is None:
+            cache = self._caches[state] = _RoomCache(
+                room_floor(state.rooms[self.room], self.radius, self.cell), self.radius,
+                self.cell)
+        return walkway(state, self.room, self.radius, self.cell, cache)
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The weighted count of unreachable targets in the room's current arrangement."""
+        state = ev.view
+        if not isinstance(state, State):
+            raise TypeError(f"circulation needs the solver's State, got {type(state).__name__}")
+        ev.watch_membership()
+        ev.watch(n for stage in ("large", "medium", "small")
+                 for n in state.members(self.room, stage))
+        return CIRCULATION_WEIGHT * self.walkway(state).violation
+
+    def label(self) -> str:
+        """`circulation(room)`."""
+        return f"circulation({self.room})"
+
+
+def with_circulation(problem: Problem, room: str) -> Problem:
+    """`problem` with the room's circulation constraint added (named `CIRCULATION`)."""
+    return problem + Problem({CIRCULATION: Circulation(room)})
+
+
+def circulation_report(problem: Problem, state: State, room: str) -> dict[str, Any] | None:
+    """The `circulation` record of `room` (see `Walkway.to_json`) if `problem` holds the
+    circulation constraint, else None."""
+    node = problem.constraints.get(CIRCULATION)
+    if not isinstance(node, Circulation):
+        return None
+    return node.walkway(state).to_json()
