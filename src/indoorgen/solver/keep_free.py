@@ -1,0 +1,139 @@
+"""Space that must stay free, as convex solids the solver collides: each moving part's sweep to
+its open limit, a toilet's side and front clearances, and the zone before each window.
+
+An object's *keep-free* pieces (sweeps, use zones) travel with it like its own solid pieces, but
+they only meet walls and other objects' solid pieces: two cabinets may open into the same aisle,
+and what rests on or in an object may sit where its drawers slide. A window's zone is a fixed
+piece that only keeps out what the report's window rule names: tall furniture and anything hung
+on the wall.
+"""
+from __future__ import annotations
+
+import numpy as np
+import shapely.geometry as sg
+import trimesh
+
+from indoorgen.assets import Asset
+from indoorgen.assets.protocol import Joint
+from indoorgen.model.tags import Semantics
+
+#: NKBA Bathroom Planning Guideline 11 / IRC R307: a toilet's centreline >= 15 in (0.38 m) from a
+#: side wall or obstacle, >= 21 in (0.53 m) clear in front
+TOILET_SIDE = 0.38
+TOILET_FRONT = 0.53
+#: the toilet's clear space spans these heights over its bottom (m): obstacles to sitting stand
+#: lower; a roll holder beside it hangs higher (its bottom at 0.62 m)
+TOILET_ZONE = (0.05, 0.55)
+#: the clear space is this much wider and deeper than the guideline (m), so touching counts
+CLEAR_MARGIN = 0.005
+#: free depth before the fronts of storage and appliances (ergonomic clearance: 0.6 m to open a
+#: door or drawer and stand before it; NKBA kitchen guideline: 0.9 m before the fridge, range
+#: and dishwasher, whose doors fold down or swing wide)
+FRONT_CLEAR = 0.6
+FRONT_CLEAR_WIDE = 0.9
+WIDE_FRONTS = (Semantics.Fridge, Semantics.Range, Semantics.Dishwasher)
+#: the solver keeps the front clear (over its width, inset `FRONT_INSET` each side, between
+#: these heights over its bottom, where objects obstruct standing and opening: the report's
+#: `quality.context` obstacle band) before these: kitchen appliances and base cabinets
+FRONT_ZONE = (0.05, 1.2)
+FRONT_INSET = 0.02
+#: windows keep out floor objects taller than this (m) and anything hung on their wall (curtains
+#: aside), over this depth either side of the opening (m)
+WINDOW_TALL = 1.0
+WINDOW_DEPTH = 0.3
+#: a sweep volume is inset this much on each side (m): an opened part may touch a wall or an
+#: object (the report allows 5 mm), and a part built flush on the floor must not hit the floor
+SWEEP_INSET = 0.004
+#: a revolute joint about a vertical axis this far inside its link's plan box (a fraction of the
+#: half-size) spins in place, like a chair's swivel: it sweeps nothing beyond the object itself
+TURNTABLE = 0.5
+
+
+def open_limit(j: Joint) -> float:
+    """The joint's open limit: the end of its range with the larger travel."""
+    return j.upper if abs(j.upper) >= abs(j.lower) else j.lower
+
+
+def _turntable(j: Joint, pts: np.ndarray) -> bool:
+    """Does a revolute joint spin its link in place (vertical axis well inside the link)?"""
+    axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
+    if j.kind != "revolute" or abs(axis[2]) < 0.99:
+        return False
+    lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+    centre, half = (lo + hi) / 2, np.maximum((hi - lo) / 2, 1e-9)
+    return bool((np.abs(np.asarray(j.origin, float)[:2] - centre) <= TURNTABLE * half).all())
+
+
+def _inset(pts: np.ndarray, inset: float) -> np.ndarray:
+    """Points pulled towards their box's centre so the box shrinks by `inset` on every side."""
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    centre, half = (lo + hi) / 2, (hi - lo) / 2
+    scale = np.where(half > 2 * inset, (half - inset) / np.maximum(half, 1e-12), 1.0)
+    return centre + (pts - centre) * scale
+
+
+def sweep_volumes(joints: list[Joint], link_boxes: dict[str, np.ndarray]) -> list[trimesh.Trimesh]:
+    """One convex volume (asset frame) per joint: the hull of its moving link's box
+    (`link_boxes`: link -> (2, 3) box at the closed pose) at the open limit, and half-way for a
+    door, a lid or a flap, so the arc is covered."""
+    out = []
+    for j in joints:
+        box = link_boxes.get(j.child)
+        if box is None:
+            continue
+        pts = trimesh.bounds.corners(box)
+        if _turntable(j, pts):
+            continue
+        limit = open_limit(j)
+        values = (limit,) if j.kind == "prismatic" else (limit / 2, limit)
+        moved = np.vstack([trimesh.transform_points(pts, j.transform(v)) for v in values])
+        out.append(trimesh.convex.convex_hull(_inset(moved, SWEEP_INSET)))
+    return out
+
+
+def _box(lo: tuple[float, float, float], hi: tuple[float, float, float]) -> trimesh.Trimesh:
+    return trimesh.creation.box(bounds=np.array([lo, hi]))
+
+
+def use_zones(tags: frozenset, bounds: np.ndarray) -> list[trimesh.Trimesh]:
+    """The clear space an object needs to be used (asset frame, from its bounding box `bounds`
+    (2, 3)): a toilet's, `TOILET_SIDE` either side of its centreline over its depth and
+    `TOILET_FRONT` before it; before a fridge, range or dishwasher `FRONT_CLEAR_WIDE`, before a
+    kitchen base cabinet `FRONT_CLEAR`."""
+    lo, hi = np.asarray(bounds, float)
+    if Semantics.Toilet in tags:
+        cy, side = (lo[1] + hi[1]) / 2, TOILET_SIDE + CLEAR_MARGIN
+        return [_box((lo[0] + 0.02, cy - side, lo[2] + TOILET_ZONE[0]),  # the wall behind is
+                     (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,     # not beside it
+                      lo[2] + TOILET_ZONE[1]))]
+    wide = any(t in tags for t in WIDE_FRONTS)
+    if wide or (Semantics.KitchenCabinet in tags and Semantics.WallCabinet not in tags):
+        depth = (FRONT_CLEAR_WIDE if wide else FRONT_CLEAR) + CLEAR_MARGIN
+        return [_box((hi[0], lo[1] + FRONT_INSET, lo[2] + FRONT_ZONE[0]),
+                     (hi[0] + depth, hi[1] - FRONT_INSET, lo[2] + FRONT_ZONE[1]))]
+    return []
+
+
+def keep_free_volumes(asset: Asset, tags: frozenset,
+                      link_boxes: dict[str, np.ndarray]) -> list[trimesh.Trimesh]:
+    """Every keep-free volume of an asset in its own frame: its joints' sweeps (from its moving
+    links' boxes) and its use zones."""
+    return sweep_volumes(asset.joints, link_boxes) + use_zones(tags, asset.mesh.bounds)
+
+
+def window_zone(bounds: np.ndarray) -> tuple[sg.Polygon, int]:
+    """A window's keep-out zone in plan (its opening's box `bounds` (2, 3) widened
+    `WINDOW_DEPTH` either side of the wall) and its long axis (0: x, 1: y). Walls of homes are
+    axis-aligned."""
+    (x0, y0, _), (x1, y1, _) = np.asarray(bounds, float)
+    if x1 - x0 >= y1 - y0:
+        return sg.box(x0, y0 - WINDOW_DEPTH, x1, y1 + WINDOW_DEPTH), 0
+    return sg.box(x0 - WINDOW_DEPTH, y0, x1 + WINDOW_DEPTH, y1), 1
+
+
+def window_volume(bounds: np.ndarray) -> trimesh.Trimesh:
+    """A window's keep-out zone as a solid: its plan zone over the opening's heights."""
+    zone, _ = window_zone(bounds)
+    z0, z1 = float(bounds[0][2]), float(bounds[1][2])
+    x0, y0, x1, y1 = zone.bounds
+    return trimesh.creation.box(bounds=np.array([(x0, y0, z0), (x1, y1, z1)]))
