@@ -9,9 +9,11 @@ on the wall.
 """
 from __future__ import annotations
 
+import fcl
 import numpy as np
 import shapely.geometry as sg
 import trimesh
+from scipy.spatial import ConvexHull
 
 from indoorgen.assets import Asset
 from indoorgen.assets.protocol import Joint
@@ -44,6 +46,8 @@ WINDOW_DEPTH = 0.3
 #: a sweep volume is inset this much on each side (m): an opened part may touch a wall or an
 #: object (the report allows 5 mm), and a part built flush on the floor must not hit the floor
 SWEEP_INSET = 0.004
+#: the thinnest a moving link's box is taken to be (m), so its sweep is a solid
+MIN_THICKNESS = 0.01
 #: a revolute joint about a vertical axis this far inside its link's plan box (a fraction of the
 #: half-size) spins in place, like a chair's swivel: it sweeps nothing beyond the object itself
 TURNTABLE = 0.5
@@ -72,8 +76,9 @@ def _inset(pts: np.ndarray, inset: float) -> np.ndarray:
     return centre + (pts - centre) * scale
 
 
-def sweep_volumes(joints: list[Joint], link_boxes: dict[str, np.ndarray]) -> list[trimesh.Trimesh]:
-    """One convex volume (asset frame) per joint: the hull of its moving link's box
+def sweep_volumes(joints: list[Joint], link_boxes: dict[str, np.ndarray]) -> list[np.ndarray]:
+    """One convex volume (asset frame, as the points it is the hull of) per joint: its moving
+    link's box
     (`link_boxes`: link -> (2, 3) box at the closed pose) at the open limit, and half-way for a
     door, a lid or a flap, so the arc is covered."""
     out = []
@@ -81,22 +86,25 @@ def sweep_volumes(joints: list[Joint], link_boxes: dict[str, np.ndarray]) -> lis
         box = link_boxes.get(j.child)
         if box is None:
             continue
-        pts = trimesh.bounds.corners(box)
+        lo, hi = np.asarray(box, float)
+        pad = np.maximum(MIN_THICKNESS - (hi - lo), 0.0) / 2  # a flat link still has a volume
+        pts = trimesh.bounds.corners(np.array([lo - pad, hi + pad]))
         if _turntable(j, pts):
             continue
         limit = open_limit(j)
         values = (limit,) if j.kind == "prismatic" else (limit / 2, limit)
         moved = np.vstack([trimesh.transform_points(pts, j.transform(v)) for v in values])
-        out.append(trimesh.convex.convex_hull(_inset(moved, SWEEP_INSET)))
+        out.append(_inset(moved, SWEEP_INSET))
     return out
 
 
-def _box(lo: tuple[float, float, float], hi: tuple[float, float, float]) -> trimesh.Trimesh:
-    return trimesh.creation.box(bounds=np.array([lo, hi]))
+def _box(lo: tuple[float, float, float], hi: tuple[float, float, float]) -> np.ndarray:
+    return trimesh.bounds.corners(np.array([lo, hi]))
 
 
-def use_zones(tags: frozenset, bounds: np.ndarray) -> list[trimesh.Trimesh]:
-    """The clear space an object needs to be used (asset frame, from its bounding box `bounds`
+def use_zones(tags: frozenset, bounds: np.ndarray) -> list[np.ndarray]:
+    """The clear space an object needs to be used (asset frame, as the corners of a box; from
+    its bounding box `bounds`
     (2, 3)): a toilet's, `TOILET_SIDE` either side of its centreline over its depth and
     `TOILET_FRONT` before it; before a fridge, range or dishwasher `FRONT_CLEAR_WIDE`, before a
     kitchen base cabinet `FRONT_CLEAR`."""
@@ -114,11 +122,33 @@ def use_zones(tags: frozenset, bounds: np.ndarray) -> list[trimesh.Trimesh]:
     return []
 
 
-def keep_free_volumes(asset: Asset, tags: frozenset,
-                      link_boxes: dict[str, np.ndarray]) -> list[trimesh.Trimesh]:
-    """Every keep-free volume of an asset in its own frame: its joints' sweeps (from its moving
-    links' boxes) and its use zones."""
-    return sweep_volumes(asset.joints, link_boxes) + use_zones(tags, asset.mesh.bounds)
+def keep_free_volumes(asset: Asset, tags: frozenset, link_boxes: dict[str, np.ndarray]
+                      ) -> tuple[list[fcl.Convex], np.ndarray]:
+    """Every keep-free volume of an asset in its own frame, as fcl solids with their boxes
+    (k, 2, 3): its joints' sweeps (from its moving links' boxes) and its use zones."""
+    sweeps = sweep_volumes(asset.joints, link_boxes)
+    # one hull round all the sweeps: the space before a run of fronts, which a person opening
+    # them stands in anyway (and one solid where a run would have a dozen)
+    clouds = ([np.vstack(sweeps)] if sweeps else []) + use_zones(tags, asset.mesh.bounds)
+    boxes = np.array([[c.min(axis=0), c.max(axis=0)] for c in clouds], float).reshape(-1, 2, 3)
+    return [hull_solid(c) for c in clouds], boxes
+
+
+def hull_solid(points: np.ndarray) -> fcl.Convex:
+    """The convex hull of `points` as an fcl solid (scipy's Qhull, faces turned outwards; many
+    times quicker than a trimesh hull for the few points of a sweep)."""
+    hull = ConvexHull(points)
+    used = np.unique(hull.simplices)
+    index = np.full(len(points), -1)
+    index[used] = np.arange(len(used))
+    faces = hull.simplices.copy()
+    v = points[faces]
+    normal = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    flip = np.einsum("ij,ij->i", normal, hull.equations[:, :3]) < 0
+    faces[flip] = faces[flip][:, ::-1]
+    faces = index[faces]
+    flat = np.hstack([np.full((len(faces), 1), 3), faces]).ravel()
+    return fcl.Convex(np.asarray(points[used], float), len(faces), flat)
 
 
 def window_zone(bounds: np.ndarray) -> tuple[sg.Polygon, int]:

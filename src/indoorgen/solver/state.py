@@ -281,9 +281,7 @@ class State:
             fac = get_factory(ob.generator)
             links = fac.link_boxes(ob.params) if isinstance(fac, PartsFactory) and ob.asset.joints \
                 else {}
-            vols = keep_free_volumes(ob.asset, ob.tags, links)
-            got = self._free[key] = ([convex_shape(v) for v in vols],
-                                     np.array([v.bounds for v in vols], float).reshape(-1, 2, 3))
+            got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, links)
         return got
 
     def _register(self, ob: ObjState) -> None:
