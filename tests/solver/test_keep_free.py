@@ -11,6 +11,7 @@ from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics as S
 from indoorgen.solver.broadphase import SOLID, WINDOW_ZONE, Broadphase, world_boxes
 from indoorgen.solver.keep_free import (
+    FRONT_CLEAR,
     FRONT_CLEAR_WIDE,
     TOILET_FRONT,
     TOILET_SIDE,
@@ -61,23 +62,27 @@ def test_a_swivel_spins_in_place_and_sweeps_nothing():
 
 def test_a_toilets_clear_space_follows_the_guideline():
     bounds = np.array([[-0.35, -0.2, 0.0], [0.35, 0.2, 0.75]])
-    (zone,) = use_zones(frozenset({S.Toilet}), bounds)
+    (zone,) = use_zones(frozenset({S.Toilet}), bounds, "large")
     lo, hi = zone.min(axis=0), zone.max(axis=0)
     assert lo[1] <= -TOILET_SIDE and hi[1] >= TOILET_SIDE  # either side of the centreline
     assert hi[0] >= 0.35 + TOILET_FRONT                      # before it
     assert lo[0] > -0.35                                     # not into the wall behind
-    assert use_zones(frozenset({S.Sofa}), bounds) == []
+    assert use_zones(frozenset({S.Sofa}), bounds, "large") == []
 
 
 def test_a_ranges_front_is_kept_clear_for_its_door():
     bounds = np.array([[-0.3, -0.38, 0.0], [0.3, 0.38, 0.95]])
-    (zone,) = use_zones(frozenset({S.Range, S.Appliance}), bounds)
+    (zone,) = use_zones(frozenset({S.Range, S.Appliance}), bounds, "large")
     assert zone[:, 0].min() >= 0.3 - 1e-9 and zone[:, 0].max() >= 0.3 + FRONT_CLEAR_WIDE
+    (zone,) = use_zones(frozenset({S.Storage, S.Bookcase}), bounds, "large")
+    assert zone[:, 0].max() >= 0.3 + FRONT_CLEAR and zone[:, 0].max() < 0.3 + FRONT_CLEAR_WIDE
+    assert use_zones(frozenset({S.Storage, S.Box}), bounds, "large") == []
+    assert use_zones(frozenset({S.Appliance, S.Microwave}), bounds, "medium") == []
 
 
 def test_keep_free_volumes_are_solids_with_their_boxes():
     fac, params, asset = _asset("countertop_run", 2)
-    shapes, boxes = keep_free_volumes(asset, fac.tags, fac.link_boxes(params))
+    shapes, boxes = keep_free_volumes(asset, fac.tags, fac.size_class, fac.link_boxes(params))
     assert len(shapes) == len(boxes) == 2  # the fronts' sweeps (one hull) and the clear front
     for s, b in zip(shapes, boxes, strict=True):
         inside = fcl.CollisionObject(fcl.Sphere(0.001), fcl.Transform((b[0] + b[1]) / 2))
@@ -139,12 +144,13 @@ def test_keep_free_pieces_meet_walls_and_unrelated_solids_only():
     pieces, boxes, free = _with_free([2.0, 1.5, 0.5], [1.0, 0.3, 0.5])
     bp.add("cabinet", pieces, boxes, free)
     assert not bp.collides("cabinet") and not bp.collides("other")
-    # a solid in a sweep collides, from either side, unless the two are related
+    # a solid in a sweep collides, from either side, unless the sweep's owner carries it
     vase, vb = _box([0.2, 0.2, 0.2], [1.0, 0.0, 0.5])
     bp.add("vase", vase, vb)
     assert bp.collides("vase") and bp.collides("other")
-    assert not bp.collides("vase", related=lambda o: o in ("other", "cabinet"))
-    assert not bp.collides("other", related=lambda o: o == "vase")
+    assert not bp.collides("vase", carries=lambda a, b: b == "vase")
+    assert not bp.collides("other", carries=lambda a, b: (a, b) == ("other", "vase"))
+    assert bp.collides("other", carries=lambda a, b: (a, b) == ("vase", "other"))
     bp.remove("vase")
     # a window zone keeps out only what the window rule names
     tall, tb = _box([0.4, 0.4, 2.0], [-3.0, 0.0, 1.0])

@@ -32,6 +32,7 @@ from indoorgen.solver.keep_free import (
     WIDE_FRONTS,
     WINDOW_TALL,
     open_limit,
+    spins_in_place,
     window_zone,
 )
 
@@ -117,7 +118,8 @@ def _open_link(asset: Asset, j: Joint, p: Placed) -> np.ndarray:
 def joint_sweep(ctx: Context) -> list[Check]:
     """Every furniture door, drawer and lid opened to its limit stays clear of the walls (its
     plan outline inside the room) and of the room's other objects (placeholder pieces, fcl);
-    value: the deepest intrusion (m), detail: into the walls and into objects."""
+    value: the deepest intrusion (m), detail: into the walls and into objects. A part that
+    spins in place (a chair's swivel) has no open limit and is not checked."""
     out = []
     for p in ctx.placed.values():
         fac = get_factory(p.obj.generator)
@@ -129,6 +131,9 @@ def joint_sweep(ctx: Context) -> list[Check]:
                   and not q.has(S.FloorCovering)]
         outline = ctx.outlines[p.obj.room]
         for j in asset.joints:
+            idx = np.unique(asset.mesh.faces[asset.link_faces(j.child)])
+            if spins_in_place(j, asset.mesh.vertices[idx]):
+                continue  # a swivel has no open pose: any turn of it is as good as its rest
             pts = _open_link(asset, j, p)
             wall = max((outline.exterior.distance(sg.Point(x, y)) for x, y in pts[:, :2]
                         if not outline.contains(sg.Point(x, y))), default=0.0)

@@ -9,7 +9,7 @@ vectorised comparisons, then runs `fcl.collide` on the piece pairs whose boxes o
 
 Not every pair of pieces may collide. An object's *keep-free* pieces (`solver.keep_free`: a
 drawer's sweep, a toilet's clear space) meet walls and other objects' solid pieces only, and not
-the pieces of objects `related` to it (what rests on it, or what it rests on). Fixed pieces are
+the pieces of what the object carries (what rests on or in it). Fixed pieces are
 of a `kind`: solid architecture, door keep-out zones (solid pieces only) and window keep-out
 zones (solid pieces of objects the window rule names only).
 """
@@ -98,10 +98,11 @@ class Broadphase:
         self._union[self._row[name]] = _keys(_union_box(boxes)[None])[0]
 
     def collides(self, name: str, *, windows: bool = False,
-                 related: Callable[[str], bool] | None = None) -> bool:
+                 carries: Callable[[str, str], bool] | None = None) -> bool:
         """Does a piece of object `name` overlap a piece it may not: of the architecture (window
         zones only if `windows`), or of another object (keep-free pieces only against solid
-        ones, and not of objects `related` to it)?"""
+        ones, and not against what the keep-free piece's owner carries: `carries(a, b)`, does
+        `b` rest on or in `a`, as a drawer's contents do)?"""
         pieces, boxes, keys, free = self._pieces[name]
         if not pieces:
             return False
@@ -115,22 +116,19 @@ class Broadphase:
             mask = None if kind == SOLID or not has_free else ~free
             if self._any_hit(pieces, keys, mask, self._static[j], self._static_keys[j], request):
                 return True
-        known: dict[str, bool] = {}
+        held = _Memo(carries)
         for i in _overlapping(self._union, own):
             other = self._names[i]
             if other == name:
                 continue
             other_pieces, _, other_keys, other_free = self._pieces[other]
             for k in _overlapping(other_keys, own):
-                may_skip = other_free[k] or has_free
-                if may_skip and related is not None and other not in known:
-                    known[other] = related(other)
-                if other_free[k]:  # their keep-free piece: only against my solid pieces
-                    if known.get(other, False):
+                if other_free[k]:  # their keep-free piece: only my solid pieces, if not theirs
+                    if held(other, name):
                         continue
                     mask = ~free
-                else:  # their solid piece: my keep-free pieces too, unless we are related
-                    mask = ~free if has_free and known.get(other, False) else None
+                else:  # their solid piece: my keep-free pieces too, unless I carry them
+                    mask = ~free if has_free and held(name, other) else None
                 if self._any_hit(pieces, keys, mask, other_pieces[k], other_keys[k], request):
                     return True
         return False
@@ -147,6 +145,20 @@ class Broadphase:
             if fcl.collide(pieces[k], other, request, fcl.CollisionResult()) > 0:
                 return True
         return False
+
+
+class _Memo:
+    """`carries(a, b)` asked once per pair during one query (False without a `carries`)."""
+
+    def __init__(self, carries: Callable[[str, str], bool] | None) -> None:
+        self._carries = carries
+        self._known: dict[tuple[str, str], bool] = {}
+
+    def __call__(self, a: str, b: str) -> bool:
+        got = self._known.get((a, b))
+        if got is None:
+            got = self._known[(a, b)] = self._carries is not None and self._carries(a, b)
+        return got
 
 
 def _union_box(boxes: np.ndarray) -> np.ndarray:

@@ -34,11 +34,13 @@ CLEAR_MARGIN = 0.005
 FRONT_CLEAR = 0.6
 FRONT_CLEAR_WIDE = 0.9
 WIDE_FRONTS = (Semantics.Fridge, Semantics.Range, Semantics.Dishwasher)
-#: the solver keeps the front clear (over its width, inset `FRONT_INSET` each side, between
-#: these heights over its bottom, where objects obstruct standing and opening: the report's
-#: `quality.context` obstacle band) before these: kitchen appliances and base cabinets
+#: the solver keeps the front clear over its width, inset `FRONT_INSET` each side, between these
+#: heights over its bottom (where objects obstruct standing and opening: the report's
+#: `quality.context` obstacle band)
 FRONT_ZONE = (0.05, 1.2)
 FRONT_INSET = 0.02
+#: storage with no front to keep clear
+UNFRONTED = (Semantics.Box, Semantics.WallMounted, Semantics.SmallObject)
 #: windows keep out floor objects taller than this (m) and anything hung on their wall (curtains
 #: aside), over this depth either side of the opening (m)
 WINDOW_TALL = 1.0
@@ -58,8 +60,9 @@ def open_limit(j: Joint) -> float:
     return j.upper if abs(j.upper) >= abs(j.lower) else j.lower
 
 
-def _turntable(j: Joint, pts: np.ndarray) -> bool:
-    """Does a revolute joint spin its link in place (vertical axis well inside the link)?"""
+def spins_in_place(j: Joint, pts: np.ndarray) -> bool:
+    """Does a revolute joint spin its link (points `pts`) in place, about a vertical axis well
+    inside it (a chair's swivel)? Such a part has no open pose to keep free."""
     axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
     if j.kind != "revolute" or abs(axis[2]) < 0.99:
         return False
@@ -89,7 +92,7 @@ def sweep_volumes(joints: list[Joint], link_boxes: dict[str, np.ndarray]) -> lis
         lo, hi = np.asarray(box, float)
         pad = np.maximum(MIN_THICKNESS - (hi - lo), 0.0) / 2  # a flat link still has a volume
         pts = trimesh.bounds.corners(np.array([lo - pad, hi + pad]))
-        if _turntable(j, pts):
+        if spins_in_place(j, pts):
             continue
         limit = open_limit(j)
         values = (limit,) if j.kind == "prismatic" else (limit / 2, limit)
@@ -102,34 +105,35 @@ def _box(lo: tuple[float, float, float], hi: tuple[float, float, float]) -> np.n
     return trimesh.bounds.corners(np.array([lo, hi]))
 
 
-def use_zones(tags: frozenset, bounds: np.ndarray) -> list[np.ndarray]:
+def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.ndarray]:
     """The clear space an object needs to be used (asset frame, as the corners of a box; from
-    its bounding box `bounds`
-    (2, 3)): a toilet's, `TOILET_SIDE` either side of its centreline over its depth and
-    `TOILET_FRONT` before it; before a fridge, range or dishwasher `FRONT_CLEAR_WIDE`, before a
-    kitchen base cabinet `FRONT_CLEAR`."""
+    its bounding box `bounds` (2, 3)): a toilet's, `TOILET_SIDE` either side of its centreline
+    over its depth and `TOILET_FRONT` before it; before floor-standing (`size_class` "large")
+    storage and appliances `FRONT_CLEAR`, or `FRONT_CLEAR_WIDE` for a fridge, range or
+    dishwasher (boxes, wall-mounted and small things aside)."""
     lo, hi = np.asarray(bounds, float)
     if Semantics.Toilet in tags:
         cy, side = (lo[1] + hi[1]) / 2, TOILET_SIDE + CLEAR_MARGIN
         return [_box((lo[0] + 0.02, cy - side, lo[2] + TOILET_ZONE[0]),  # the wall behind is
                      (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,     # not beside it
                       lo[2] + TOILET_ZONE[1]))]
+    fronted = Semantics.Storage in tags or Semantics.Appliance in tags
+    if not fronted or size_class != "large" or any(t in tags for t in UNFRONTED):
+        return []
     wide = any(t in tags for t in WIDE_FRONTS)
-    if wide or (Semantics.KitchenCabinet in tags and Semantics.WallCabinet not in tags):
-        depth = (FRONT_CLEAR_WIDE if wide else FRONT_CLEAR) + CLEAR_MARGIN
-        return [_box((hi[0], lo[1] + FRONT_INSET, lo[2] + FRONT_ZONE[0]),
-                     (hi[0] + depth, hi[1] - FRONT_INSET, lo[2] + FRONT_ZONE[1]))]
-    return []
+    depth = (FRONT_CLEAR_WIDE if wide else FRONT_CLEAR) + CLEAR_MARGIN
+    return [_box((hi[0], lo[1] + FRONT_INSET, lo[2] + FRONT_ZONE[0]),
+                 (hi[0] + depth, hi[1] - FRONT_INSET, lo[2] + FRONT_ZONE[1]))]
 
 
-def keep_free_volumes(asset: Asset, tags: frozenset, link_boxes: dict[str, np.ndarray]
-                      ) -> tuple[list[fcl.Convex], np.ndarray]:
+def keep_free_volumes(asset: Asset, tags: frozenset, size_class: str,
+                      link_boxes: dict[str, np.ndarray]) -> tuple[list[fcl.Convex], np.ndarray]:
     """Every keep-free volume of an asset in its own frame, as fcl solids with their boxes
     (k, 2, 3): its joints' sweeps (from its moving links' boxes) and its use zones."""
     sweeps = sweep_volumes(asset.joints, link_boxes)
     # one hull round all the sweeps: the space before a run of fronts, which a person opening
     # them stands in anyway (and one solid where a run would have a dozen)
-    clouds = ([np.vstack(sweeps)] if sweeps else []) + use_zones(tags, asset.mesh.bounds)
+    clouds = ([np.vstack(sweeps)] if sweeps else []) + use_zones(tags, asset.mesh.bounds, size_class)
     boxes = np.array([[c.min(axis=0), c.max(axis=0)] for c in clouds], float).reshape(-1, 2, 3)
     return [hull_solid(c) for c in clouds], boxes
 

@@ -281,7 +281,7 @@ class State:
             fac = get_factory(ob.generator)
             links = fac.link_boxes(ob.params) if isinstance(fac, PartsFactory) and ob.asset.joints \
                 else {}
-            got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, links)
+            got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, fac.size_class, links)
         return got
 
     def _register(self, ob: ObjState) -> None:
@@ -378,11 +378,21 @@ class State:
         zones if it is tall or wall-hung? Or do its keep-free pieces (the sweeps of its moving
         parts, its clear space) reach into a wall or into an object not resting on or under it?"""
         ob = self.objects[name]
-
-        def related(other: str) -> bool:
-            return other in self.descendants(name) or name in self.descendants(other)
         return self.broadphase[ob.room].collides(name, windows=self._window_bound(ob),
-                                                 related=related)
+                                                 carries=self._carries)
+
+    def _carries(self, a: str, b: str) -> bool:
+        """Does `b` rest on or in `a`, directly or through others?"""
+        seen, todo = set(), [b]
+        while todo:
+            n = todo.pop()
+            for p in self.objects[n].placements if n in self.objects else ():
+                if p.parent == a:
+                    return True
+                if p.parent not in seen and p.parent in self.objects:
+                    seen.add(p.parent)
+                    todo.append(p.parent)
+        return False
 
     def _window_bound(self, ob: ObjState) -> bool:
         """Must the object keep out of window zones: furniture standing on the floor taller than
