@@ -81,6 +81,8 @@ class ObjState:
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
     #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
     boxes: np.ndarray | None = None
+    #: are its keep-free pieces still to be built (`State.collides` builds them)?
+    free_pending: bool = False
 
 
 class State:
@@ -272,22 +274,31 @@ class State:
         assert ob.boxes is not None  # set by _register before any pose change
         return world_boxes(ob.boxes, yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
-    def _keep_free(self, ob: ObjState) -> tuple[list[fcl.Convex], np.ndarray]:
+    def _keep_free(self, ob: ObjState, build: bool = True
+                   ) -> tuple[list[fcl.Convex], np.ndarray] | None:
         """The object's keep-free volumes (joint sweeps, use zones) as fcl solids with their
-        local boxes, built once per (generator, params)."""
+        local boxes, built once per (generator, params); None if `build` is False and they are
+        not built yet and costly (a moving link's box needs the detailed parts)."""
         key = params_key(ob.generator, ob.params)
         got = self._free.get(key)
         if got is None:
             fac = get_factory(ob.generator)
-            links = fac.link_boxes(ob.params) if isinstance(fac, PartsFactory) and ob.asset.joints \
-                else {}
+            costly = isinstance(fac, PartsFactory) and bool(ob.asset.joints)
+            if costly and not build:
+                return None
+            links = fac.link_boxes(ob.params) if costly else {}
             got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, fac.size_class, links)
         return got
 
-    def _register(self, ob: ObjState) -> None:
+    def _register(self, ob: ObjState, build: bool = False) -> None:
+        """Put the object's pieces in its room's broadphase: its solid pieces, and its keep-free
+        pieces if built (else `collides` builds them once the solid pieces are found clear:
+        most poses an add tries collide anyway)."""
         tf = self._transform(ob)
         solid = self.cache.placeholder_convex(ob.generator, ob.params)
-        free, free_boxes = self._keep_free(ob)
+        got = self._keep_free(ob, build)
+        ob.free_pending = got is None
+        free, free_boxes = got if got is not None else ([], np.zeros((0, 2, 3)))
         ob.cobjs = [fcl.CollisionObject(shape, tf) for shape in [*solid, *free]]
         ob.boxes = np.concatenate([self.cache.placeholder_boxes(ob.generator, ob.params),
                                    free_boxes])
@@ -378,8 +389,13 @@ class State:
         zones if it is tall or wall-hung? Or do its keep-free pieces (the sweeps of its moving
         parts, its clear space) reach into a wall or into an object not resting on or under it?"""
         ob = self.objects[name]
-        return self.broadphase[ob.room].collides(name, windows=self._window_bound(ob),
-                                                 carries=self._carries)
+        bp, windows = self.broadphase[ob.room], self._window_bound(ob)
+        if ob.free_pending:
+            if bp.collides(name, windows=windows, carries=self._carries):
+                return True
+            self._unregister(ob)
+            self._register(ob, build=True)
+        return bp.collides(name, windows=windows, carries=self._carries)
 
     def _carries(self, a: str, b: str) -> bool:
         """Does `b` rest on or in `a`, directly or through others?"""
