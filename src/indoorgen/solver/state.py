@@ -24,7 +24,7 @@ from indoorgen.constraints.bounds import Context
 from indoorgen.constraints.relations import Relation, parse_relation
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Room, Scene
-from indoorgen.model.tags import Semantics
+from indoorgen.model.tags import Semantics, Subpart
 from indoorgen.solver.broadphase import DOOR_ZONE, SOLID, WINDOW_ZONE, Broadphase, world_boxes
 from indoorgen.solver.keep_free import WINDOW_TALL, keep_free_volumes, window_volume
 
@@ -398,11 +398,14 @@ class State:
         return bp.collides(name, windows=windows, carries=self._carries)
 
     def _carries(self, a: str, b: str) -> bool:
-        """Does `b` rest on or in `a`, directly or through others?"""
+        """Does `b` rest on, in or from `a` (by its bottom: a cup on a shelf, a wall cabinet over
+        a counter; not a chair pulled up to a desk), directly or through others?"""
         seen, todo = set(), [b]
         while todo:
             n = todo.pop()
             for p in self.objects[n].placements if n in self.objects else ():
+                if getattr(p.relation, "child", None) != Subpart.Bottom:
+                    continue
                 if p.parent == a:
                     return True
                 if p.parent not in seen and p.parent in self.objects:
