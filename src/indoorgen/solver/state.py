@@ -286,7 +286,7 @@ class State:
             costly = isinstance(fac, PartsFactory) and bool(ob.asset.joints)
             if costly and not build:
                 return None
-            links = fac.link_boxes(ob.params) if costly else {}
+            links = fac.link_boxes(ob.params) if isinstance(fac, PartsFactory) and costly else {}
             got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, fac.size_class, links)
         return got
 
