@@ -419,9 +419,9 @@ class State:
         if not ob.placements or ob.placements[0].parent != ob.room:
             return False
         surface = ob.placements[0].parent_surface
-        if surface == "floor":
-            b = ob.asset.mesh.bounds
-            return float(b[1][2] - b[0][2]) > WINDOW_TALL
+        if surface == "floor":  # its top over the floor, as the rule measures it
+            top = float(ob.position[2] + ob.asset.mesh.bounds[1][2]) - self.floor_z(ob.name)
+            return top > WINDOW_TALL
         return surface.startswith("wall_") and Semantics.Curtain not in ob.tags
 
 
