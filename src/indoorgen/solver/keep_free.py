@@ -1,5 +1,6 @@
 """Space that must stay free, as convex solids the solver collides: each moving part's sweep to
-its open limit, a toilet's side and front clearances, and the zone before each window.
+its open limit, a toilet's side and front clearances, the fronts of storage and appliances, and
+the zone before each window; and the clearances the quality report measures them against.
 
 An object's *keep-free* pieces (sweeps, use zones) travel with it like its own solid pieces, but
 they only meet walls and other objects' solid pieces: two cabinets may open into the same aisle,
@@ -34,11 +35,12 @@ CLEAR_MARGIN = 0.005
 FRONT_CLEAR = 0.6
 FRONT_CLEAR_WIDE = 0.9
 WIDE_FRONTS = (Semantics.Fridge, Semantics.Range, Semantics.Dishwasher)
-#: the solver keeps the front clear over its width, inset `FRONT_INSET` each side, between these
-#: heights over its bottom (where objects obstruct standing and opening: the report's
-#: `quality.context` obstacle band)
-FRONT_ZONE = (0.05, 1.2)
-FRONT_INSET = 0.02
+#: obstacles to walking and opening are the parts of objects between these heights above the
+#: floor (m): rugs lie lower, wall cabinets and shelves above a counter hang higher (the
+#: solver keeps fronts clear over this band; the report measures obstacles in it)
+OBSTACLE_BAND = (0.05, 1.2)
+#: margin kept off both sides of a front (m), so touching neighbours don't count
+BAND_MARGIN = 0.02
 #: storage with no front to keep clear
 UNFRONTED = (Semantics.Box, Semantics.WallMounted, Semantics.SmallObject)
 #: windows keep out floor objects taller than this (m) and anything hung on their wall (curtains
@@ -114,16 +116,16 @@ def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.n
     lo, hi = np.asarray(bounds, float)
     if Semantics.Toilet in tags:
         cy, side = (lo[1] + hi[1]) / 2, TOILET_SIDE + CLEAR_MARGIN
-        return [_box((lo[0] + 0.02, cy - side, lo[2] + TOILET_ZONE[0]),  # the wall behind is
-                     (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,     # not beside it
+        return [_box((lo[0] + BAND_MARGIN, cy - side, lo[2] + TOILET_ZONE[0]),  # the wall behind
+                     (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,  # is not beside it
                       lo[2] + TOILET_ZONE[1]))]
     fronted = Semantics.Storage in tags or Semantics.Appliance in tags
     if not fronted or size_class != "large" or any(t in tags for t in UNFRONTED):
         return []
     wide = any(t in tags for t in WIDE_FRONTS)
     depth = (FRONT_CLEAR_WIDE if wide else FRONT_CLEAR) + CLEAR_MARGIN
-    return [_box((hi[0], lo[1] + FRONT_INSET, lo[2] + FRONT_ZONE[0]),
-                 (hi[0] + depth, hi[1] - FRONT_INSET, lo[2] + FRONT_ZONE[1]))]
+    return [_box((hi[0], lo[1] + BAND_MARGIN, lo[2] + OBSTACLE_BAND[0]),
+                 (hi[0] + depth, hi[1] - BAND_MARGIN, lo[2] + OBSTACLE_BAND[1]))]
 
 
 def keep_free_volumes(asset: Asset, tags: frozenset, size_class: str,
