@@ -9,7 +9,18 @@ import trimesh
 from indoorgen.assets.cache import convex_shape, mesh_bvh
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics as S
-from indoorgen.solver.broadphase import SOLID, WINDOW_ZONE, Broadphase, world_boxes
+from indoorgen.solver.broadphase import (
+    PIECE_SOLID,
+    PIECE_SWEEP,
+    PIECE_ZONE,
+    SOLID,
+    WINDOW_ZONE,
+    YIELD_ALL,
+    YIELD_NONE,
+    YIELD_ZONES,
+    Broadphase,
+    world_boxes,
+)
 from indoorgen.solver.keep_free import (
     FRONT_CLEAR,
     FRONT_CLEAR_WIDE,
@@ -82,8 +93,10 @@ def test_a_ranges_front_is_kept_clear_for_its_door():
 
 def test_keep_free_volumes_are_solids_with_their_boxes():
     fac, params, asset = _asset("countertop_run", 2)
-    shapes, boxes = keep_free_volumes(asset, fac.tags, fac.size_class, fac.link_boxes(params))
+    shapes, boxes, kinds = keep_free_volumes(asset, fac.tags, fac.size_class,
+                                             fac.link_boxes(params))
     assert len(shapes) == len(boxes) == 2  # the fronts' sweeps (one hull) and the clear front
+    assert list(kinds) == [PIECE_SWEEP, PIECE_ZONE]
     for s, b in zip(shapes, boxes, strict=True):
         inside = fcl.CollisionObject(fcl.Sphere(0.001), fcl.Transform((b[0] + b[1]) / 2))
         assert fcl.collide(fcl.CollisionObject(s, fcl.Transform()), inside,
@@ -118,10 +131,10 @@ def _box(size, at) -> tuple[list[fcl.CollisionObject], np.ndarray]:
     return [obj], world_boxes(np.array([m.bounds]), np.eye(3), np.asarray(at, float))
 
 
-def _with_free(solid_at, free_at):
+def _with_free(solid_at, free_at, kind=PIECE_SWEEP):
     a, ab = _box([0.5, 0.5, 0.5], solid_at)
     f, fb = _box([0.5, 0.5, 0.5], free_at)
-    return a + f, np.vstack([ab, fb]), np.array([False, True])
+    return a + f, np.vstack([ab, fb]), np.array([PIECE_SOLID, kind])
 
 
 def test_keep_free_pieces_meet_walls_and_unrelated_solids_only():
@@ -152,6 +165,15 @@ def test_keep_free_pieces_meet_walls_and_unrelated_solids_only():
     assert not bp.collides("other", carries=lambda a, b: (a, b) == ("other", "vase"))
     assert bp.collides("other", carries=lambda a, b: (a, b) == ("vase", "other"))
     bp.remove("vase")
+    # a cup may stand in a front's clear zone, not in a door's sweep; a rug lies in either
+    zoned, zb, zk = _with_free([0.0, -1.5, 0.5], [1.0, -1.5, 0.5], PIECE_ZONE)
+    bp.add("cabinet2", zoned, zb, zk)
+    for at, yields, hit in (([1.0, -1.5, 0.5], YIELD_ZONES, False), ([1.0, 0.0, 0.5], YIELD_ZONES, True),
+                            ([1.0, 0.0, 0.5], YIELD_ALL, False), ([1.0, -1.5, 0.5], YIELD_NONE, True)):
+        cup, cb = _box([0.1, 0.1, 0.1], at)
+        bp.add("cup", cup, cb, yields=yields)
+        assert bp.collides("cup") == hit and bp.collides("cabinet2") == (hit and at[1] < -1)
+        bp.remove("cup")
     # a window zone keeps out only what the window rule names
     tall, tb = _box([0.4, 0.4, 2.0], [-3.0, 0.0, 1.0])
     bp.add("wardrobe", tall, tb)

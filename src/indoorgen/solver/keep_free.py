@@ -19,6 +19,7 @@ from scipy.spatial import ConvexHull
 from indoorgen.assets import Asset
 from indoorgen.assets.protocol import Joint
 from indoorgen.model.tags import Semantics
+from indoorgen.solver.broadphase import PIECE_SWEEP, PIECE_ZONE, YIELD_ALL, YIELD_NONE, YIELD_ZONES
 
 #: NKBA Bathroom Planning Guideline 11 / IRC R307: a toilet's centreline >= 15 in (0.38 m) from a
 #: side wall or obstacle, >= 21 in (0.53 m) clear in front
@@ -129,15 +130,27 @@ def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.n
 
 
 def keep_free_volumes(asset: Asset, tags: frozenset, size_class: str,
-                      link_boxes: dict[str, np.ndarray]) -> tuple[list[fcl.Convex], np.ndarray]:
+                      link_boxes: dict[str, np.ndarray]
+                      ) -> tuple[list[fcl.Convex], np.ndarray, np.ndarray]:
     """Every keep-free volume of an asset in its own frame, as fcl solids with their boxes
-    (k, 2, 3): its joints' sweeps (from its moving links' boxes) and its use zones."""
+    (k, 2, 3) and kinds (`PIECE_SWEEP`, `PIECE_ZONE`): its joints' sweeps (from its moving
+    links' boxes) and its use zones."""
     sweeps = sweep_volumes(asset.joints, link_boxes)
     # one hull round all the sweeps: the space before a run of fronts, which a person opening
     # them stands in anyway (and one solid where a run would have a dozen)
-    clouds = ([np.vstack(sweeps)] if sweeps else []) + use_zones(tags, asset.mesh.bounds, size_class)
+    swept = [np.vstack(sweeps)] if sweeps else []
+    clouds = swept + use_zones(tags, asset.mesh.bounds, size_class)
     boxes = np.array([[c.min(axis=0), c.max(axis=0)] for c in clouds], float).reshape(-1, 2, 3)
-    return [hull_solid(c) for c in clouds], boxes
+    kinds = np.array([PIECE_SWEEP] * len(swept) + [PIECE_ZONE] * (len(clouds) - len(swept)), int)
+    return [hull_solid(c) for c in clouds], boxes, kinds
+
+
+def yields(tags: frozenset) -> int:
+    """What an object's solid pieces yield to others' keep-free pieces, as the quality rules
+    count obstacles: a rug to everything, a small object to use zones, anything else nothing."""
+    if Semantics.FloorCovering in tags:
+        return YIELD_ALL
+    return YIELD_ZONES if Semantics.SmallObject in tags else YIELD_NONE
 
 
 def hull_solid(points: np.ndarray) -> fcl.Convex:

@@ -25,8 +25,15 @@ from indoorgen.constraints.relations import Relation, parse_relation
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Room, Scene
 from indoorgen.model.tags import Semantics, Subpart
-from indoorgen.solver.broadphase import DOOR_ZONE, SOLID, WINDOW_ZONE, Broadphase, world_boxes
-from indoorgen.solver.keep_free import WINDOW_TALL, keep_free_volumes, window_volume
+from indoorgen.solver.broadphase import (
+    DOOR_ZONE,
+    PIECE_SOLID,
+    SOLID,
+    WINDOW_ZONE,
+    Broadphase,
+    world_boxes,
+)
+from indoorgen.solver.keep_free import WINDOW_TALL, keep_free_volumes, window_volume, yields
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
@@ -121,8 +128,8 @@ class State:
         self.broadphase: dict[str, Broadphase] = {
             room: Broadphase(self.static, np.array(static_boxes).reshape(-1, 6), np.array(kinds, int))
             for room in rooms}
-        # (generator, params) -> keep-free volumes as fcl solids and their local boxes
-        self._free: dict[tuple, tuple[list[fcl.Convex], np.ndarray]] = {}
+        # (generator, params) -> keep-free volumes as fcl solids, their local boxes and kinds
+        self._free: dict[tuple, tuple[list[fcl.Convex], np.ndarray, np.ndarray]] = {}
 
     # -- ObjectView ------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
@@ -275,7 +282,7 @@ class State:
         return world_boxes(ob.boxes, yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
     def _keep_free(self, ob: ObjState, build: bool = True
-                   ) -> tuple[list[fcl.Convex], np.ndarray] | None:
+                   ) -> tuple[list[fcl.Convex], np.ndarray, np.ndarray] | None:
         """The object's keep-free volumes (joint sweeps, use zones) as fcl solids with their
         local boxes, built once per (generator, params); None if `build` is False and they are
         not built yet and costly (a moving link's box needs the detailed parts)."""
@@ -298,12 +305,13 @@ class State:
         solid = self.cache.placeholder_convex(ob.generator, ob.params)
         got = self._keep_free(ob, build)
         ob.free_pending = got is None
-        free, free_boxes = got if got is not None else ([], np.zeros((0, 2, 3)))
+        free, free_boxes, free_kinds = got if got is not None else \
+            ([], np.zeros((0, 2, 3)), np.zeros(0, int))
         ob.cobjs = [fcl.CollisionObject(shape, tf) for shape in [*solid, *free]]
         ob.boxes = np.concatenate([self.cache.placeholder_boxes(ob.generator, ob.params),
                                    free_boxes])
-        mask = np.arange(len(ob.cobjs)) >= len(solid)
-        self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob), mask)
+        kinds = np.concatenate([np.full(len(solid), PIECE_SOLID), free_kinds])
+        self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob), kinds, yields(ob.tags))
 
     def _unregister(self, ob: ObjState) -> None:
         self.broadphase[ob.room].remove(ob.name)
