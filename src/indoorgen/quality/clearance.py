@@ -25,6 +25,7 @@ from indoorgen.quality.context import (
     rule,
 )
 from indoorgen.solver.keep_free import (
+    ACCESSORIES,
     FRONT_CLEAR,
     FRONT_CLEAR_WIDE,
     TOILET_FRONT,
@@ -36,8 +37,6 @@ from indoorgen.solver.keep_free import (
     window_zone,
 )
 
-#: small wall accessories a toilet may have beside it (not obstacles to sitting)
-ACCESSORIES = (S.ToiletRollHolder, S.TowelBar, S.TowelRing, S.RobeHook)
 #: an opened moving part may touch (not enter) a wall or object by this much (m)
 SWEEP_TOL = 0.005
 

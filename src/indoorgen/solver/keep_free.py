@@ -25,9 +25,9 @@ from indoorgen.solver.broadphase import PIECE_SWEEP, PIECE_ZONE, YIELD_ALL, YIEL
 #: side wall or obstacle, >= 21 in (0.53 m) clear in front
 TOILET_SIDE = 0.38
 TOILET_FRONT = 0.53
-#: the toilet's clear space spans these heights over its bottom (m): obstacles to sitting stand
-#: lower; a roll holder beside it hangs higher (its bottom at 0.62 m)
-TOILET_ZONE = (0.05, 0.55)
+#: small wall accessories a toilet may have beside it (not obstacles to sitting)
+ACCESSORIES = (Semantics.ToiletRollHolder, Semantics.TowelBar, Semantics.TowelRing,
+               Semantics.RobeHook)
 #: the clear space is this much wider and deeper than the guideline (m), so touching counts
 CLEAR_MARGIN = 0.005
 #: free depth before the fronts of storage and appliances (ergonomic clearance: 0.6 m to open a
@@ -117,9 +117,9 @@ def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.n
     lo, hi = np.asarray(bounds, float)
     if Semantics.Toilet in tags:
         cy, side = (lo[1] + hi[1]) / 2, TOILET_SIDE + CLEAR_MARGIN
-        return [_box((lo[0] + BAND_MARGIN, cy - side, lo[2] + TOILET_ZONE[0]),  # the wall behind
-                     (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,  # is not beside it
-                      lo[2] + TOILET_ZONE[1]))]
+        return [_box((lo[0] + BAND_MARGIN, cy - side, lo[2] + OBSTACLE_BAND[0]),  # the wall
+                     (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,  # behind is not beside it
+                      lo[2] + OBSTACLE_BAND[1]))]
     fronted = Semantics.Storage in tags or Semantics.Appliance in tags
     if not fronted or size_class != "large" or any(t in tags for t in UNFRONTED):
         return []
@@ -147,10 +147,13 @@ def keep_free_volumes(asset: Asset, tags: frozenset, size_class: str,
 
 def yields(tags: frozenset) -> int:
     """What an object's solid pieces yield to others' keep-free pieces, as the quality rules
-    count obstacles: a rug to everything, a small object to use zones, anything else nothing."""
+    count obstacles: a rug to everything; a small object, or a wall accessory that belongs
+    beside a toilet or basin, to use zones; anything else nothing."""
     if Semantics.FloorCovering in tags:
         return YIELD_ALL
-    return YIELD_ZONES if Semantics.SmallObject in tags else YIELD_NONE
+    if Semantics.SmallObject in tags or any(t in tags for t in ACCESSORIES):
+        return YIELD_ZONES
+    return YIELD_NONE
 
 
 def hull_solid(points: np.ndarray) -> fcl.Convex:
