@@ -6,7 +6,7 @@ import pytest
 
 from indoorgen.assets import factories_with, factory_names
 from indoorgen.constraints import Problem, scene
-from indoorgen.constraints.bounds import context_of, find_bounds
+from indoorgen.constraints.bounds import STAGE_ORDER, context_of, find_bounds, term_stage
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.node import Node
 from indoorgen.errors import UnknownRoomTypeError
@@ -68,3 +68,19 @@ def test_program_evaluates_on_an_empty_room(room_type):
 def test_unknown_room_type_lists_the_valid_ones():
     with pytest.raises(UnknownRoomTypeError, match="bedroom"):
         get_program("ballroom")
+
+
+@pytest.mark.parametrize("room_type", sorted(ROOM_PROGRAMS))
+def test_every_count_is_enforced_in_the_stage_that_adds_its_objects(room_type):
+    """A count whose objects are added in one stage but which only counts from a later one is
+    never met (its objects can no longer be added): a wall accessory's set chained wall-first,
+    then pinned to a height over the floor, once was."""
+    view, room = _empty_room()
+    problem = get_program(room_type)(room)
+    ev = Evaluator(problem, view)
+    rooms = frozenset({"r"})
+    for b in find_bounds(problem, ev):
+        if not all(ps and set(ps) <= rooms for _, ps in b.parents):
+            continue  # placed on objects: none exist in an empty room to judge the stage by
+        active = term_stage(problem.constraints[b.name])
+        assert STAGE_ORDER[active] <= STAGE_ORDER[b.stage(rooms)], (b.name, active, b.stage(rooms))

@@ -106,7 +106,7 @@ def assert_consistent(state: State) -> None:
         assert set(bp._pieces) == mine == set(bp._names)
         for n in mine:
             ob = state.objects[n]
-            pieces, boxes, _ = bp._pieces[n]
+            pieces, boxes, _, _ = bp._pieces[n]
             r = yaw_matrix(ob.yaw)
             np.testing.assert_allclose(boxes, world_boxes(ob.boxes, r, ob.position), atol=1e-12)
             for c in pieces:

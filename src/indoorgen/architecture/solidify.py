@@ -122,6 +122,8 @@ class HomeRoomGeometry(RoomGeometry):
     storey: int = 0
     elevation: float = 0.0
     plan_polygon: sg.Polygon | None = None
+    #: each window's world box (2, 3: min, max corners): the solver keeps a zone before it free
+    windows: list[np.ndarray] = field(default_factory=list)
 
     def door_zone_meshes(self, height: float = 2.0) -> list[trimesh.Trimesh]:
         """Keep-out zones extruded from the room's floor to `height` above it."""
@@ -375,6 +377,7 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
     cut: dict[str, list[manifold3d.Manifold]] = {r.name: [] for r in storey.rooms}
     zones: dict[str, list[sg.Polygon]] = {r.name: [] for r in storey.rooms}
     doors: dict[str, list[Door]] = {r.name: [] for r in storey.rooms}
+    windows: dict[str, list[np.ndarray]] = {r.name: [] for r in storey.rooms}
     frees = {r.name: free_polygon(r.shape(), wall_fp) for r in storey.rooms}
 
     def add_door(room: str, name: str, frame: WallFrame, side: np.ndarray, width: float,
@@ -424,6 +427,7 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
                                    ["window", "architecture"]) if fx is not None
                         else _window_element(w.name, w.room, f, storey, w.width, w.height,
                                              w.sill))
+        windows[w.room].append(element_bounds(elements[-1]))
     if fp.entrance is not None and storey.level == 0:
         en = fp.entrance
         f = entrance_frame(storey, en, t)
@@ -482,8 +486,14 @@ def _solidify_storey(fp: Floorplan, storey: Storey, t: WallThickness, depth: dic
         out[r.name] = HomeRoomGeometry(
             room, checked_mesh(floor, f"{r.name} floor"), checked_mesh(ceiling, f"{r.name} ceiling"),
             [checked_mesh(wall, f"{r.name} walls")], surfaces, zones[r.name],
-            storey=storey.level, elevation=e, plan_polygon=poly)
+            storey=storey.level, elevation=e, plan_polygon=poly, windows=windows[r.name])
     return out
+
+
+def element_bounds(e: Element) -> np.ndarray:
+    """The world box (2, 3: min, max corners) round all of an element's meshes."""
+    return np.array([np.min([m.bounds[0] for m in e.meshes.values()], axis=0),
+                     np.max([m.bounds[1] for m in e.meshes.values()], axis=0)])
 
 
 def _opening(fx: fixtures.Fixture | None, width: float, height: float) -> tuple[float, float]:

@@ -94,15 +94,34 @@ class PartsFactory(AssetFactory):
                      slots=slots, closed=self.closed)
 
     def placeholder(self, params: dict[str, Any]) -> Asset:
-        """The cheap asset: its parts concatenated, and each part's convex hull as a solid
-        collision piece (the solver collides these, so an object inside another is caught)."""
+        """The cheap asset: its parts concatenated, each part's convex hull as a solid
+        collision piece (the solver collides these, so an object inside another is caught) named
+        by its link, and the joints (so the solver can keep each moving part's sweep free)."""
         p = self.resolve(params)
         cheap, offset, ext = self._layout(p)
         mesh, fs, slots = concat(cheap, self.slots)
         asset = self._asset(p, mesh, fs, slots, offset, ext)
+        asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
                            for link, h in convex_pieces(cheap, max_pieces=24)]
         return asset
+
+    def link_boxes(self, params: dict[str, Any]) -> dict[str, np.ndarray]:
+        """The bounding box (2, 3: min, max corners) of each moving link's detailed parts, in the
+        asset's frame at the closed pose: what a door, drawer or lid sweeps when it opens (the
+        placeholder's pieces are all `base`), without building the whole asset."""
+        p = self.resolve(params)
+        _, offset, _ = self._layout(p)
+        out: dict[str, np.ndarray] = {}
+        for part in self.parts(p, True):
+            if part.link == "base" or part.solid.is_empty():
+                continue
+            bb = np.asarray(part.solid.bounding_box(), float)
+            box = np.array([bb[:3], bb[3:]]) + offset
+            old = out.get(part.link)
+            out[part.link] = box if old is None else np.array(
+                [np.minimum(old[0], box[0]), np.maximum(old[1], box[1])])
+        return out
 
     def create(self, params: dict[str, Any]) -> Asset:
         """The detailed asset: one watertight shell per link, UVs, joints and convex pieces."""

@@ -25,3 +25,15 @@ fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
 def ceiling_lights(room: ObjSet) -> ObjSet:
     """The lights hanging from `room`'s ceiling (every room program counts them)."""
     return scene()[Semantics.CeilingMounted, Semantics.Lighting].related_to(room, on_ceiling)
+
+
+def mounted_at(height: float) -> StableAgainst:
+    """Hung with its bottom `height` metres above the room's floor: with `on_wall`, a wall
+    accessory at the mounting height a standard names (the height is the relation's, not luck)."""
+    return StableAgainst(Subpart.Bottom, Subpart.Floor, margin=height)
+
+
+def hung_above(gap: float, parent: Subpart = Subpart.SupportSurface) -> StableAgainst:
+    """Hanging with its bottom `gap` metres above a parent's `parent` surface, its centre over
+    it: with `on_wall`, a wall cabinet over a counter, a hood over a range, a mirror over a basin."""
+    return StableAgainst(Subpart.Bottom, parent, margin=gap, overhang=False)

@@ -8,6 +8,7 @@ import numpy as np
 import shapely.geometry as sg
 import trimesh
 
+from indoorgen.architecture.solidify import element_bounds
 from indoorgen.assets.cache import convex_shape
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.parts_factory import PartsFactory
@@ -23,25 +24,21 @@ from indoorgen.quality.context import (
     on_floor,
     rule,
 )
+from indoorgen.solver.keep_free import (
+    ACCESSORIES,
+    FRONT_CLEAR,
+    FRONT_CLEAR_WIDE,
+    TOILET_FRONT,
+    TOILET_SIDE,
+    WIDE_FRONTS,
+    WINDOW_TALL,
+    open_limit,
+    spins_in_place,
+    window_zone,
+)
 
-#: free depth before the fronts of storage and appliances (ergonomic clearance: 0.6 m to open a
-#: door or drawer and stand before it; NKBA kitchen guideline: 0.9 m before the fridge, range
-#: and dishwasher, whose doors fold down or swing wide)
-FRONT_CLEAR = 0.6
-FRONT_CLEAR_WIDE = 0.9
-WIDE_FRONTS = (S.Fridge, S.Range, S.Dishwasher)
-#: NKBA Bathroom Planning Guideline 11 / IRC R307: toilet centreline >= 15 in (0.38 m) from a
-#: side wall or obstacle, >= 21 in (0.53 m) clear in front
-TOILET_SIDE = 0.38
-TOILET_FRONT = 0.53
-#: small wall accessories a toilet may have beside it (not obstacles to sitting)
-ACCESSORIES = (S.ToiletRollHolder, S.TowelBar, S.TowelRing, S.RobeHook)
 #: an opened moving part may touch (not enter) a wall or object by this much (m)
 SWEEP_TOL = 0.005
-#: windows keep out floor objects taller than this (m) and anything hung on their wall, over
-#: this depth into the room (m)
-WINDOW_TALL = 1.0
-WINDOW_DEPTH = 0.3
 
 
 @rule("front_clearance")
@@ -111,8 +108,7 @@ def _depth(a: fcl.CollisionObject, b: fcl.CollisionObject) -> float:
 
 def _open_link(asset: Asset, j: Joint, p: Placed) -> np.ndarray:
     """World vertices of a joint's moving link at its open limit (the end of larger travel)."""
-    limit = j.upper if abs(j.upper) >= abs(j.lower) else j.lower
-    posed = asset.posed({j.name: limit})
+    posed = asset.posed({j.name: open_limit(j)})
     idx = np.unique(asset.mesh.faces[asset.link_faces(j.child)])
     return p.obj.pose.apply(posed.vertices[idx])
 
@@ -121,7 +117,8 @@ def _open_link(asset: Asset, j: Joint, p: Placed) -> np.ndarray:
 def joint_sweep(ctx: Context) -> list[Check]:
     """Every furniture door, drawer and lid opened to its limit stays clear of the walls (its
     plan outline inside the room) and of the room's other objects (placeholder pieces, fcl);
-    value: the deepest intrusion (m), detail: into the walls and into objects."""
+    value: the deepest intrusion (m), detail: into the walls and into objects. A part that
+    spins in place (a chair's swivel) has no open limit and is not checked."""
     out = []
     for p in ctx.placed.values():
         fac = get_factory(p.obj.generator)
@@ -133,6 +130,9 @@ def joint_sweep(ctx: Context) -> list[Check]:
                   and not q.has(S.FloorCovering)]
         outline = ctx.outlines[p.obj.room]
         for j in asset.joints:
+            idx = np.unique(asset.mesh.faces[asset.link_faces(j.child)])
+            if spins_in_place(j, asset.mesh.vertices[idx]):
+                continue  # a swivel has no open pose: any turn of it is as good as its rest
             pts = _open_link(asset, j, p)
             wall = max((outline.exterior.distance(sg.Point(x, y)) for x, y in pts[:, :2]
                         if not outline.contains(sg.Point(x, y))), default=0.0)
@@ -155,15 +155,6 @@ def joint_sweep(ctx: Context) -> list[Check]:
     return out
 
 
-def _window_zone(bounds: np.ndarray) -> tuple[sg.Polygon, int]:
-    """A window's keep-out zone in plan (its opening widened `WINDOW_DEPTH` either side of the
-    wall) and its long axis (0: x, 1: y). Walls of homes are axis-aligned."""
-    (x0, y0, _), (x1, y1, _) = bounds
-    if x1 - x0 >= y1 - y0:
-        return sg.box(x0, y0 - WINDOW_DEPTH, x1, y1 + WINDOW_DEPTH), 0
-    return sg.box(x0 - WINDOW_DEPTH, y0, x1 + WINDOW_DEPTH, y1), 1
-
-
 @rule("windows_keep_out")
 def windows_keep_out(ctx: Context) -> list[Check]:
     """No floor object taller than 1.0 m and nothing hung on the wall (curtains aside) stands
@@ -175,9 +166,8 @@ def windows_keep_out(ctx: Context) -> list[Check]:
     for e in sorted(ctx.architecture.elements, key=lambda e: e.name):
         if e.kind != "window" or e.room not in ctx.scene.rooms:
             continue
-        bounds = np.array([np.min([m.bounds[0] for m in e.meshes.values()], axis=0),
-                           np.max([m.bounds[1] for m in e.meshes.values()], axis=0)])
-        zone, axis = _window_zone(bounds)
+        bounds = element_bounds(e)
+        zone, axis = window_zone(bounds)
         z0, z1 = bounds[0][2], bounds[1][2]
         hits: list[tuple[str, float]] = []
         for q in ctx.in_room(e.room):

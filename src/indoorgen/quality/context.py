@@ -21,14 +21,13 @@ from indoorgen.assets.protocol import Asset
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
+from indoorgen.solver.keep_free import BAND_MARGIN, OBSTACLE_BAND
 
 #: how far a free-depth probe looks before it reports "open" (m); larger than any limit checked
 PROBE_DEPTH = 3.0
-#: margin kept off both ends of a probe band so touching neighbours don't count (m)
-BAND_MARGIN = 0.02
 #: obstacles to walking and opening are the parts of objects between these heights above the
-#: floor (m): rugs lie lower, wall cabinets and shelves above a counter hang higher
-OBSTACLE_LOW, OBSTACLE_HIGH = 0.05, 1.2
+#: floor (m): the solver's (`solver.keep_free.OBSTACLE_BAND`), which keeps fronts clear over it
+OBSTACLE_LOW, OBSTACLE_HIGH = OBSTACLE_BAND
 
 
 @dataclass(frozen=True)

@@ -18,13 +18,22 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets import Asset, Surface, get_factory
-from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh
+from indoorgen.assets.cache import AssetCache, convex_shape, mesh_bvh, params_key
+from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.constraints.bounds import Context
 from indoorgen.constraints.relations import Relation, parse_relation
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Room, Scene
-from indoorgen.model.tags import Semantics
-from indoorgen.solver.broadphase import Broadphase, world_boxes
+from indoorgen.model.tags import Semantics, Subpart
+from indoorgen.solver.broadphase import (
+    DOOR_ZONE,
+    PIECE_SOLID,
+    SOLID,
+    WINDOW_ZONE,
+    Broadphase,
+    world_boxes,
+)
+from indoorgen.solver.keep_free import WINDOW_TALL, keep_free_volumes, window_volume, yields
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
@@ -32,7 +41,8 @@ DOOR_ZONE_HEIGHT = 2.0
 
 class RoomShape(Protocol):
     """What the solver reads of one room's architecture (the floorplan's room geometry provides
-    it; a home's rooms also carry an `elevation`, the height of their floor)."""
+    it; a home's rooms also carry an `elevation`, the height of their floor, and `windows`, each
+    window's world box (2, 3), before which the solver keeps a zone free)."""
 
     room: Room
     surfaces: list[Surface]
@@ -78,6 +88,8 @@ class ObjState:
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
     #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
     boxes: np.ndarray | None = None
+    #: are its keep-free pieces still to be built (`State.collides` builds them)?
+    free_pending: bool = False
 
 
 class State:
@@ -97,18 +109,27 @@ class State:
         # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
         # room's objects and the (shared) architecture; this keeps each query small in a home
         self.static: list[fcl.CollisionObject] = []
-        static_boxes = []
+        static_boxes, kinds = [], []
+
+        def fixed(shape: fcl.CollisionGeometry, mesh: trimesh.Trimesh, kind: int) -> None:
+            self.static.append(fcl.CollisionObject(shape, fcl.Transform()))
+            static_boxes.append(np.asarray(mesh.bounds, float).ravel())
+            kinds.append(kind)
         for g in rooms.values():
             for m in g.collision_meshes():
-                self.static.append(fcl.CollisionObject(mesh_bvh(m), fcl.Transform()))
-                static_boxes.append(np.asarray(m.bounds, float).ravel())
+                fixed(mesh_bvh(m), m, SOLID)
             for zone in g.door_zones:  # solid keep-out prisms: nothing may stand inside them
                 z0 = float(getattr(g, "elevation", 0.0))  # a home's upper storeys stand higher
                 for piece in keep_out_prisms(zone, z0, z0 + DOOR_ZONE_HEIGHT):
-                    self.static.append(fcl.CollisionObject(convex_shape(piece), fcl.Transform()))
-                    static_boxes.append(np.asarray(piece.bounds, float).ravel())
+                    fixed(convex_shape(piece), piece, DOOR_ZONE)
+            for bounds in getattr(g, "windows", ()):  # a home's rooms know their windows
+                piece = window_volume(bounds)
+                fixed(convex_shape(piece), piece, WINDOW_ZONE)
         self.broadphase: dict[str, Broadphase] = {
-            room: Broadphase(self.static, np.array(static_boxes).reshape(-1, 6)) for room in rooms}
+            room: Broadphase(self.static, np.array(static_boxes).reshape(-1, 6), np.array(kinds, int))
+            for room in rooms}
+        # (generator, params) -> keep-free volumes as fcl solids, their local boxes and kinds
+        self._free: dict[tuple, tuple[list[fcl.Convex], np.ndarray, np.ndarray]] = {}
 
     # -- ObjectView ------------------------------------------------------------------------
     def all_ids(self) -> frozenset[str]:
@@ -260,12 +281,37 @@ class State:
         assert ob.boxes is not None  # set by _register before any pose change
         return world_boxes(ob.boxes, yaw_matrix(ob.yaw), np.asarray(ob.position, float))
 
-    def _register(self, ob: ObjState) -> None:
+    def _keep_free(self, ob: ObjState, build: bool = True
+                   ) -> tuple[list[fcl.Convex], np.ndarray, np.ndarray] | None:
+        """The object's keep-free volumes (joint sweeps, use zones) as fcl solids with their
+        local boxes, built once per (generator, params); None if `build` is False and they are
+        not built yet and costly (a moving link's box needs the detailed parts)."""
+        key = params_key(ob.generator, ob.params)
+        got = self._free.get(key)
+        if got is None:
+            fac = get_factory(ob.generator)
+            costly = isinstance(fac, PartsFactory) and bool(ob.asset.joints)
+            if costly and not build:
+                return None
+            links = fac.link_boxes(ob.params) if isinstance(fac, PartsFactory) and costly else {}
+            got = self._free[key] = keep_free_volumes(ob.asset, ob.tags, fac.size_class, links)
+        return got
+
+    def _register(self, ob: ObjState, build: bool = False) -> None:
+        """Put the object's pieces in its room's broadphase: its solid pieces, and its keep-free
+        pieces if built (else `collides` builds them once the solid pieces are found clear:
+        most poses an add tries collide anyway)."""
         tf = self._transform(ob)
-        ob.cobjs = [fcl.CollisionObject(shape, tf)
-                    for shape in self.cache.placeholder_convex(ob.generator, ob.params)]
-        ob.boxes = self.cache.placeholder_boxes(ob.generator, ob.params)
-        self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob))
+        solid = self.cache.placeholder_convex(ob.generator, ob.params)
+        got = self._keep_free(ob, build)
+        ob.free_pending = got is None
+        free, free_boxes, free_kinds = got if got is not None else \
+            ([], np.zeros((0, 2, 3)), np.zeros(0, int))
+        ob.cobjs = [fcl.CollisionObject(shape, tf) for shape in [*solid, *free]]
+        ob.boxes = np.concatenate([self.cache.placeholder_boxes(ob.generator, ob.params),
+                                   free_boxes])
+        kinds = np.concatenate([np.full(len(solid), PIECE_SOLID), free_kinds])
+        self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob), kinds, yields(ob.tags))
 
     def _unregister(self, ob: ObjState) -> None:
         self.broadphase[ob.room].remove(ob.name)
@@ -347,8 +393,44 @@ class State:
 
     def collides(self, name: str) -> bool:
         """Does object `name`'s placeholder (its solid convex pieces) overlap anything else:
-        other objects of its room, walls, floor, ceiling, door keep-out zones?"""
-        return self.broadphase[self.objects[name].room].collides(name)
+        other objects of its room, walls, floor, ceiling, door keep-out zones, window keep-out
+        zones if it is tall or wall-hung? Or do its keep-free pieces (the sweeps of its moving
+        parts, its clear space) reach into a wall or into an object not resting on or under it?"""
+        ob = self.objects[name]
+        bp, windows = self.broadphase[ob.room], self._window_bound(ob)
+        if ob.free_pending:
+            if bp.collides(name, windows=windows, carries=self._carries):
+                return True
+            self._unregister(ob)
+            self._register(ob, build=True)
+        return bp.collides(name, windows=windows, carries=self._carries)
+
+    def _carries(self, a: str, b: str) -> bool:
+        """Does `b` rest on, in or from `a` (by its bottom: a cup on a shelf, a wall cabinet over
+        a counter; not a chair pulled up to a desk), directly or through others?"""
+        seen, todo = set(), [b]
+        while todo:
+            n = todo.pop()
+            for p in self.objects[n].placements if n in self.objects else ():
+                if getattr(p.relation, "child", None) != Subpart.Bottom:
+                    continue
+                if p.parent == a:
+                    return True
+                if p.parent not in seen and p.parent in self.objects:
+                    seen.add(p.parent)
+                    todo.append(p.parent)
+        return False
+
+    def _window_bound(self, ob: ObjState) -> bool:
+        """Must the object keep out of window zones: furniture standing on the floor taller than
+        `WINDOW_TALL`, or anything hung on a wall but a curtain (the report's window rule)?"""
+        if not ob.placements or ob.placements[0].parent != ob.room:
+            return False
+        surface = ob.placements[0].parent_surface
+        if surface == "floor":  # its top over the floor, as the rule measures it
+            top = float(ob.position[2] + ob.asset.mesh.bounds[1][2]) - self.floor_z(ob.name)
+            return top > WINDOW_TALL
+        return surface.startswith("wall_") and Semantics.Curtain not in ob.tags
 
 
 def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trimesh]:

@@ -11,6 +11,10 @@ from indoorgen.programs.relations import (
     on_wall,
 )
 
+#: books' centres no higher than this (m): resting on a shelf below eye level (~1.6 m, the reach
+#: rule's limit), where one takes them down every day
+BOOK_REACH = 1.65
+
 
 def office(room: ObjSet) -> Problem:
     """A desk with a chair and a screen, lit; bookcases of books; pictures at eye level."""
@@ -39,6 +43,7 @@ def office(room: ObjSet) -> Problem:
             "shelves free": accessibility_cost(bookcases, floor).minimize(1),
             "square to the walls": angle_alignment_cost(floor, room).minimize(1),
             "books upright": angle_alignment_cost(books, room).minimize(0.5),
+            "books within reach": books.mean(lambda b: height(b).hinge(0.0, BOOK_REACH)).minimize(1),
             "pictures at eye level": scene()[S.WallDecoration].related_to(room, on_wall).mean(
                 lambda a: height(a).hinge(1.3, 1.8)).minimize(1),
         },
