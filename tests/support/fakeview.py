@@ -40,6 +40,9 @@ class FakeView:
     def generator(self, o):
         return "" if o in self.rooms else self.objs[o]["generator"]
 
+    def params(self, o):
+        return {} if o in self.rooms else self.objs[o].get("params", {})
+
     def relations(self, o):
         return [] if o in self.rooms else self.objs[o]["relations"]
 
