@@ -38,6 +38,8 @@ fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
 #: a coffee table before a seat: its back 0.45 m from the seat's front, its centre within the
 #: seat's width (furniture-layout guidance: 0.3-0.6 m; quality's COFFEE_GAP)
 before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)
+#: a rug at the foot of a bed: its back edge 2 cm from the bed's foot, centred on it
+at_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=0.02)
 #: beside: a side 5 cm from a bed's or a seat's side, its centre within that side's depth (a
 #: nightstand at the bed's head, a side table at the sofa's arm)
 beside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.05)

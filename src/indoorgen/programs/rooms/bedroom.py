@@ -1,5 +1,5 @@
 """A bedroom: the bed's head to a wall with free access to both sides, matching nightstands at
-the head with lamps, a wardrobe or dresser with room before it, a rug partly under the bed,
+the head with lamps, a wardrobe or dresser with room before it, a rug at the bed's foot,
 clothes, books and decor; sometimes a desk or a reading chair."""
 from indoorgen.constraints import (
     ObjSet,
@@ -15,6 +15,7 @@ from indoorgen.constraints import (
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
     against_wall,
+    at_foot,
     at_table,
     beside,
     DOOR_SWING,
@@ -45,7 +46,7 @@ def bedroom(room: ObjSet) -> Problem:
     desks = floor[S.Desk].related_to(room, against_wall)
     desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
     reading_chairs = floor[S.Armchair]
-    rugs = floor[S.Rug]
+    rugs = floor[S.Rug].related_to(beds, at_foot)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     mirrors = scene().of_generator("mirror").related_to(room, on_wall)
@@ -86,8 +87,6 @@ def bedroom(room: ObjSet) -> Problem:
                 lambda b: reflectional_asymmetry(nightstands, b)).minimize(2),
             "two nightstands": nightstands.count().maximize(1),
             "bed side free": accessibility_cost(beds, blockers.excluding(S.Nightstand)).minimize(2),
-            "rug under the bed's foot": rugs.mean(
-                lambda r: r.center_distance(beds).hinge(0.5, 1.0)).minimize(1),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
             "a lamp on each nightstand": lamps.count().maximize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),

@@ -1,6 +1,7 @@
 """A living room: a sofa facing the TV across a coffee table, armchairs in line with it, side
-tables with lamps at the arms, a rug under the group, filled bookcases, plants, art over the sofa
-and things on the tables."""
+tables with lamps at the arms, filled bookcases, plants, art over the sofa and things on the
+tables. (No rug yet: the solver keeps floor coverings clear of furniture, so one cannot lie
+under the group, and anywhere else it would take the coffee table's place.)"""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -50,7 +51,6 @@ def living_room(room: ObjSet) -> Problem:
     seating = sofas | armchairs
     lamps = floor[S.FloorLamp]
     table_lamps = scene()[S.TableLamp].related_to(side_tables, on_top)
-    rugs = floor[S.Rug]
     bookcases = floor[S.Bookcase].related_to(room, against_wall)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
@@ -77,7 +77,6 @@ def living_room(room: ObjSet) -> Problem:
             "side tables at the arms": side_tables.count().in_range(0, 2),
             "a lamp on each side table": side_tables.all(
                 lambda t: table_lamps.related_to(t, on_top).count() <= 1),
-            "a rug at most": rugs.count().in_range(0, 1),
             "bookcases": bookcases.count().in_range(1, 2),
             "floor lamps": lamps.count().in_range(1, 2),
             "plants": plants.count().in_range(0, 2),
@@ -95,8 +94,6 @@ def living_room(room: ObjSet) -> Problem:
             "the TV centred on the sofa": sofas.mean(lambda s: s.center_distance(stands)).minimize(3),
             "lamps beside seating": lamps.mean(
                 lambda lamp: lamp.distance(seating).hinge(0.0, 0.3)).minimize(1),
-            "a rug under the group": rugs.mean(
-                lambda r: r.center_distance(coffee_tables).hinge(0.0, 0.3)).minimize(2),
             "side tables at the seat backs": side_tables.mean(
                 lambda t: t.distance(room).hinge(0.0, 0.1)).minimize(0.5),
             "a side table at each arm": seating.mean(lambda s: reflectional_asymmetry(
@@ -113,7 +110,7 @@ def living_room(room: ObjSet) -> Problem:
             "things in the middle": center_of_support_distance(table_things).minimize(0.3),
             "many books": books.count().maximize(0.05),
             "a lived-in room": (table_things.count() + vases.count() + baskets.count() + plants.count()
-                                + table_lamps.count() + rugs.count()).maximize(0.3),
+                                + table_lamps.count()).maximize(0.3),
         },
         matching={"armchairs": armchairs, "side tables": side_tables, "table lamps": table_lamps},
     )
