@@ -56,7 +56,7 @@ def bedroom(room: ObjSet) -> Problem:
     clothes = scene()[S.FoldedClothes].related_to(dressers | beds, on_top)
     decor = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
-        S.Laptop).related_to(surfaces, on_top)
+        S.Electronics).related_to(surfaces, on_top)
     return Problem(
         constraints={
             "a bed": beds.count() == 1,
@@ -71,9 +71,9 @@ def bedroom(room: ObjSet) -> Problem:
             "a lamp per nightstand": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
             "pictures": art.count().in_range(1, 2),
             "a mirror at most": mirrors.count().in_range(0, 1),
-            "books": books.count().in_range(0, 4),
+            "books": books.count().in_range(1, 6),
             "clothes": clothes.count().in_range(0, 3),
-            "decor": decor.count().in_range(1, 5),
+            "decor": decor.count().in_range(2, 8),
             "wardrobe doors free": fronts_free(wardrobes, blockers, room, margin=DOOR_SWING),
             "storage fronts free": fronts_free(dressers | desks | nightstands, blockers, room),
             "the bed's foot free": fronts_free(beds, blockers, room),
@@ -86,6 +86,7 @@ def bedroom(room: ObjSet) -> Problem:
             "nightstands match either side": beds.mean(
                 lambda b: reflectional_asymmetry(nightstands, b)).minimize(2),
             "two nightstands": nightstands.count().maximize(1),
+            "the bed centred on its wall": beds.mean(lambda b: b.center_distance(room)).minimize(0.5),
             "bed side free": accessibility_cost(beds, blockers.excluding(S.Nightstand)).minimize(2),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
             "a lamp on each nightstand": lamps.count().maximize(1),

@@ -26,7 +26,8 @@ from indoorgen.programs.relations import (
 #: free floor around a dining table to pull a chair out and pass behind it (m; ergonomic
 #: guidance: 0.9 m from the table's edge to a wall)
 TABLE_CLEAR = 0.9
-#: a sideboard's height (m): a low cabinet whose top serves the table
+#: a sideboard's height (m): a low cabinet whose top serves the table (and as wide as the
+#: cabinet generator makes one)
 SIDEBOARD_HEIGHT = 0.9
 
 
@@ -37,18 +38,18 @@ def dining_room(room: ObjSet) -> Problem:
     blockers = floor.excluding(S.FloorCovering)
     tables = floor[S.DiningTable]
     chairs = floor[S.DiningChair].related_to(tables, at_table)
-    sideboards = floor.of_generator("cabinet", height=SIDEBOARD_HEIGHT, n_doors=2).related_to(
+    sideboards = floor.of_generator("cabinet", height=SIDEBOARD_HEIGHT, width=1.0, n_doors=2).related_to(
         room, against_wall)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     plates = scene()[S.Plate].related_to(tables, on_top)
     cups = scene()[S.Cup].related_to(tables, on_top)
-    cutlery = scene()[S.Cutlery].related_to(tables, on_top)
+    forks, knives, spoons = (scene()[t].related_to(tables, on_top) for t in (S.Fork, S.Knife, S.Spoon))
     centrepieces = (scene()[S.Vase].related_to(tables, on_top),
                     scene()[S.FruitBowl].related_to(tables, on_top),
                     scene()[S.Candle].related_to(tables, on_top))
     on_sideboard = scene()[S.SmallObject].excluding(S.Food, S.Laptop, S.Cutlery, S.Kitchenware,
-                                                    S.Box).related_to(sideboards, on_top)
+                                                    S.Box, S.Bottle, S.Can, S.Textile).related_to(sideboards, on_top)
     lights = ceiling_lights(room)
     return Problem(
         constraints={
@@ -61,7 +62,7 @@ def dining_room(room: ObjSet) -> Problem:
             "a glass for each place": tables.all(
                 lambda t: cups.related_to(t, on_top).count()
                 <= chairs.related_to(t, at_table).count()),
-            "cutlery": cutlery.count().in_range(0, 16),
+            "cutlery": (forks.count() + knives.count() + spoons.count()).in_range(0, 16),
             "a centrepiece": sum((c.count() for c in centrepieces[1:]),
                                  centrepieces[0].count()).in_range(0, 2),
             "a sideboard": sideboards.count().in_range(1, 1),
@@ -79,15 +80,17 @@ def dining_room(room: ObjSet) -> Problem:
                 lambda t: t.distance(blockers.excluding(S.DiningTable, S.DiningChair) | room)
                 .hinge(TABLE_CLEAR, 9.0)).minimize(3),
             "table centred in the room": tables.mean(
-                lambda t: t.center_distance(room)).minimize(0.5),
+                lambda t: t.center_distance(room)).minimize(2),
             "table square to the room": angle_alignment_cost(tables, room).minimize(4),
             "as many chairs as fit": chairs.count().maximize(0.3),
             "places before the chairs": plates.mean(
                 lambda p: p.distance(chairs).hinge(0.0, 0.12)).minimize(3),
             "glasses by the plates": cups.mean(lambda c: c.distance(plates).hinge(0.0, 0.12)).minimize(1),
-            "cutlery beside the plates": cutlery.mean(
-                lambda c: c.distance(plates).hinge(0.0, 0.06)).minimize(1),
-            "a laid table": (cups.count() + cutlery.count()).maximize(0.3),
+            "cutlery beside the plates": sum(
+                (c.mean(lambda x: x.distance(plates).hinge(0.0, 0.06)) for c in (knives, spoons)),
+                forks.mean(lambda x: x.distance(plates).hinge(0.0, 0.06))).minimize(1),
+            "a laid table": (cups.count() + forks.count() + knives.count()
+                             + spoons.count()).maximize(0.3),
             "centrepiece in the middle": sum(
                 (center_of_support_distance(c) for c in centrepieces[1:]),
                 center_of_support_distance(centrepieces[0])).minimize(1),
@@ -95,7 +98,7 @@ def dining_room(room: ObjSet) -> Problem:
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
             "a light centred over the table": lights.mean(
-                lambda li: li.center_distance(tables).hinge(0.0, 0.2)).minimize(3),
+                lambda li: li.center_distance(tables).hinge(0.0, 0.1)).minimize(6),
             "a furnished room": (on_sideboard.count() + plants.count()
                                  + sum((c.count() for c in centrepieces[1:]),
                                        centrepieces[0].count())).maximize(0.3),
