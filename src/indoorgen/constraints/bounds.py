@@ -88,7 +88,8 @@ def _context_of(node: Node[Any]) -> Context | None:
     tags: set[Tag] = set()
     excluded: set[Tag] = set()
     rels: list[tuple[Relation, Node[frozenset[str]]]] = []
-    generator, params = None, ()
+    generator: str | None = None
+    params: tuple[tuple[str, Any], ...] = ()
     while True:
         if isinstance(node, SceneSet):
             break

@@ -11,7 +11,6 @@ from collections.abc import Callable, Iterable
 
 from indoorgen.constraints.scalars import Scalar
 from indoorgen.constraints.sets import ObjSet
-from indoorgen.errors import ConstraintError
 from indoorgen.constraints.terms import (
     FACES,
     Accessibility,
@@ -25,6 +24,7 @@ from indoorgen.constraints.terms import (
     ReflectionalAsymmetry,
     RotationalAsymmetry,
 )
+from indoorgen.errors import ConstraintError
 
 
 def _per_object(objs: ObjSet, make: Callable[[ObjSet], Scalar]) -> Scalar:

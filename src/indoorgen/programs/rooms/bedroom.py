@@ -14,11 +14,11 @@ from indoorgen.constraints import (
 )
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
+    DOOR_SWING,
     against_wall,
     at_foot,
     at_table,
     beside,
-    DOOR_SWING,
     ceiling_lights,
     fronts_free,
     on_floor,
@@ -42,7 +42,6 @@ def bedroom(room: ObjSet) -> Problem:
     nightstands = floor[S.Nightstand].related_to(room, against_wall).related_to(beds, beside)
     wardrobes = floor[S.Wardrobe].related_to(room, against_wall)
     dressers = floor[S.Dresser].related_to(room, against_wall)
-    clothes_storage = wardrobes | dressers
     desks = floor[S.Desk].related_to(room, against_wall)
     desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
     reading_chairs = floor[S.Armchair]

@@ -12,9 +12,9 @@ from indoorgen.constraints import (
 )
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
+    DOOR_SWING,
     against_wall,
     at_table,
-    DOOR_SWING,
     ceiling_lights,
     fronts_free,
     on_floor,
@@ -48,8 +48,9 @@ def dining_room(room: ObjSet) -> Problem:
     centrepieces = (scene()[S.Vase].related_to(tables, on_top),
                     scene()[S.FruitBowl].related_to(tables, on_top),
                     scene()[S.Candle].related_to(tables, on_top))
-    on_sideboard = scene()[S.SmallObject].excluding(S.Food, S.Laptop, S.Cutlery, S.Kitchenware,
-                                                    S.Box, S.Bottle, S.Can, S.Textile).related_to(sideboards, on_top)
+    on_sideboard = scene()[S.SmallObject].excluding(
+        S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile
+    ).related_to(sideboards, on_top)
     lights = ceiling_lights(room)
     return Problem(
         constraints={

@@ -16,10 +16,10 @@ from indoorgen.constraints import (
 )
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
+    DOOR_SWING,
     against_wall,
     before_seat,
     beside,
-    DOOR_SWING,
     ceiling_lights,
     fronts_free,
     in_line_with,
