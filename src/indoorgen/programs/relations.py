@@ -40,9 +40,12 @@ fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
 before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)
 #: a rug at the foot of a bed: its back edge 2 cm from the bed's foot, centred on it
 at_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=0.02)
-#: beside: a side 5 cm from a bed's or a seat's side, its centre within that side's depth (a
-#: nightstand at the bed's head, a side table at the sofa's arm)
+#: beside: a side 5 cm from a seat's side, its centre within that side's depth (a side table at
+#: the sofa's arm)
 beside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.05)
+#: at the bedside: a side 10 cm from the bed's, its centre within the bed's length (room for a
+#: nightstand's door to swing open past its side; quality's NIGHTSTAND_GAP is 0.15 m)
+at_bedside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.1)
 #: a second seat in line with the first, 0.6 m off its arm (room for a side table between)
 in_line_with = SupportedBy(Subpart.Side, Subpart.Side, margin=0.6)
 #: a screen's front in line with its stand's front, 5 cm back (facing where the stand faces)

@@ -16,9 +16,9 @@ from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
     DOOR_SWING,
     against_wall,
+    at_bedside,
     at_foot,
     at_table,
-    beside,
     ceiling_lights,
     fronts_free,
     on_floor,
@@ -39,7 +39,7 @@ def bedroom(room: ObjSet) -> Problem:
     blockers = floor.excluding(S.FloorCovering)
     # no under-bed drawers: the nightstands at the head would stop them opening
     beds = floor[S.Bed].of_generator("bed", drawers=False).related_to(room, against_wall)
-    nightstands = floor[S.Nightstand].related_to(room, against_wall).related_to(beds, beside)
+    nightstands = floor[S.Nightstand].related_to(room, against_wall).related_to(beds, at_bedside)
     wardrobes = floor[S.Wardrobe].related_to(room, against_wall)
     dressers = floor[S.Dresser].related_to(room, against_wall)
     desks = floor[S.Desk].related_to(room, against_wall)

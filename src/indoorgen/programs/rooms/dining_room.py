@@ -81,7 +81,7 @@ def dining_room(room: ObjSet) -> Problem:
                 lambda t: t.distance(blockers.excluding(S.DiningTable, S.DiningChair) | room)
                 .hinge(TABLE_CLEAR, 9.0)).minimize(3),
             "table centred in the room": tables.mean(
-                lambda t: t.center_distance(room)).minimize(2),
+                lambda t: t.center_distance(room)).minimize(4),
             "table square to the room": angle_alignment_cost(tables, room).minimize(4),
             "as many chairs as fit": chairs.count().maximize(0.3),
             "places before the chairs": plates.mean(
