@@ -88,6 +88,7 @@ def bedroom(room: ObjSet) -> Problem:
             "the bed centred on its wall": beds.mean(lambda b: b.center_distance(room)).minimize(0.5),
             "bed side free": accessibility_cost(beds, blockers.excluding(S.Nightstand)).minimize(2),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
+            "plants by the walls": plants.mean(lambda p: p.distance(room).hinge(0.0, 0.1)).minimize(2),
             "a lamp on each nightstand": lamps.count().maximize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),

@@ -96,6 +96,7 @@ def dining_room(room: ObjSet) -> Problem:
                 (center_of_support_distance(c) for c in centrepieces[1:]),
                 center_of_support_distance(centrepieces[0])).minimize(1),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
+            "plants by the walls": plants.mean(lambda p: p.distance(room).hinge(0.0, 0.1)).minimize(2),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
             "a light centred over the table": lights.mean(

@@ -95,6 +95,8 @@ def living_room(room: ObjSet) -> Problem:
         },
         score_terms={
             "the TV centred on the sofa": sofas.mean(lambda s: s.center_distance(stands)).minimize(3),
+            "the coffee table centred on the sofa": coffee_tables.mean(
+                lambda c: c.center_distance(sofas)).minimize(2),
             "a ceiling light in the middle": lights.mean(
                 lambda li: li.center_distance(room)).minimize(1),
             "lamps beside seating": lamps.mean(
@@ -107,6 +109,7 @@ def living_room(room: ObjSet) -> Problem:
             "nothing but the coffee table before the seating": accessibility_cost(
                 seating, blockers.excluding(S.CoffeeTable)).minimize(1),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
+            "plants by the walls": plants.mean(lambda p: p.distance(room).hinge(0.0, 0.1)).minimize(2),
             "screen in view": accessibility_cost(tvs, blockers).minimize(2),
             "books upright in rows": angle_alignment_cost(books, room).minimize(0.5),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.4, 1.8)).minimize(2),
