@@ -1,6 +1,6 @@
 """Layout-quality benchmark: the `quality` report over generated rooms and homes.
 
-    python benchmarks/quality.py [--seeds 20] [--homes 5]
+    python benchmarks/quality.py [--seeds 20] [--homes 5] [--types living_room,bedroom]
 
 Generates `--seeds` single rooms of each main room type (living, dining, kitchen, bedroom,
 bathroom) and `--homes` one-storey homes, evaluates `quality.layout.quality_report` on each, and
@@ -25,9 +25,9 @@ ROOM_TYPES = ("living_room", "dining_room", "kitchen", "bedroom", "bathroom")
 MEASURES = ("collision_rate", "out_of_bounds_rate")
 
 
-def scenes(seeds: int, homes: int):
+def scenes(seeds: int, homes: int, types: tuple[str, ...] = ROOM_TYPES):
     """(label, Generated) for every room and home benchmarked."""
-    for rt in ROOM_TYPES:
+    for rt in types:
         for seed in range(seeds):
             yield rt, generate(seed, GenerateConfig(room_type=rt))
     for seed in range(homes):
@@ -48,7 +48,10 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=20, help="single rooms per main room type")
     ap.add_argument("--homes", type=int, default=5, help="one-storey homes")
+    ap.add_argument("--types", default=",".join(ROOM_TYPES),
+                    help="comma-separated room types to generate single rooms of")
     a = ap.parse_args()
+    types = tuple(t for t in a.types.split(",") if t)
     checked: Counter[str] = Counter()
     passed: Counter[str] = Counter()
     scenes_failed: Counter[str] = Counter()
@@ -56,7 +59,7 @@ def main() -> None:
     measures: dict[str, list[float]] = defaultdict(list)
     per_type: dict[str, list[tuple[int, float]]] = defaultdict(list)
     times, n, n_passed = [], 0, 0
-    for _, g in scenes(a.seeds, a.homes):
+    for _, g in scenes(a.seeds, a.homes, types):
         t0 = time.perf_counter()
         rep = quality_report(g.scene, g.rooms, g.cache, g.architecture)
         times.append(time.perf_counter() - t0)
@@ -71,7 +74,7 @@ def main() -> None:
             measures[m].append(rep["measures"][m])
         room_stats(g, per_type)
 
-    print(f"{n} scenes ({a.seeds} seeds x {len(ROOM_TYPES)} room types, {a.homes} homes); "
+    print(f"{n} scenes ({a.seeds} seeds x {len(types)} room types, {a.homes} homes); "
           f"{n_passed} pass every hard rule")
     print(f"\n{'rule':32s} {'hard':>4s} {'instances':>9s} {'passed':>7s} {'rate':>6s} {'scenes failed':>13s}")
     for name in sorted(checked):

@@ -103,7 +103,8 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
         if d > PENETRATION_TOL:
             penetrating.append({"a": a, "b": b, "depth_m": round(d, 4)})
 
-    # 2. support: each declared relation's surfaces are parallel, facing, at the margin
+    # 2. support: each declared relation's surfaces are parallel, facing (or, CoPlanar, facing the
+    # same way), at the margin
     unsupported = []
     for n, o in scene.objects.items():
         for r in o.relations:
@@ -120,7 +121,9 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
                     po.pose.rotation(), np.array(po.pose.position))
             gaps = (child.corners() - parent.origin) @ parent.normal - rel.margin
             facing = float(np.dot(child.normal, parent.normal))
-            if facing > -0.999 or np.abs(gaps).max() > SUPPORT_TOL:
+            # StableAgainst surfaces face each other; CoPlanar ones face the same way
+            want = 1.0 if isinstance(rel, CoPlanar) else -1.0
+            if facing * want < 0.999 or np.abs(gaps).max() > SUPPORT_TOL:
                 unsupported.append({"object": n, "relation": r.relation, "parent": r.parent,
                                     "gap_m": round(float(np.abs(gaps).max()), 4),
                                     "facing": round(facing, 4)})

@@ -62,6 +62,9 @@ def test_contexts_and_stages_of_set_chains():
     ctx = context_of(tables)
     assert ctx.tags == {S.Table} and ctx.excluded == {S.Desk} and len(ctx.relations) == 1
     assert context_of(tables | floor[S.Chair]) is None and context_of(r) is None
+    plain_beds = floor.of_generator("bed", drawers=False)
+    assert context_of(plain_beds).generator == "bed"
+    assert context_of(plain_beds).params == (("drawers", False),)
     cups = scene()[S.Cup].related_to(tables, on_top)
     assert static_stage(tables) == "large" and static_stage(cups) == "small"
     assert static_stage(scene()[S.Cup]) is None

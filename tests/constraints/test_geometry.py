@@ -18,8 +18,10 @@ from indoorgen.constraints.geometry import (
     bbox_area,
     bbox_volume,
     center_of_support_distance,
+    facing_angle,
     focus_score,
     freespace_2d,
+    front_free_depth,
     mesh_to_fcl,
     min_distance,
     polygon_distance,
@@ -367,3 +369,22 @@ def test_polygon_distance_and_center_of_support():
     # (1.3, 0.9) -> offset (0.3, 0.4) -> 0.5
     assert center_of_support_distance(np.array([1.3, 0.9, 0.8]), table) == pytest.approx(0.5)
     assert center_of_support_distance(np.zeros(2), Point(0, 0).buffer(1.0)) == pytest.approx(0.0)
+
+
+def test_facing_angle_in_degrees_and_zero_on_the_target():
+    assert facing_angle(np.zeros(2), np.array([1.0, 0.0]), np.array([3.0, 3.0])) \
+        == pytest.approx(45.0)
+    assert facing_angle(np.zeros(3), np.array([1.0, 0.0, 0.0]),
+                                 np.array([-2.0, 0.0, 5.0])) == pytest.approx(180.0)
+    assert facing_angle(np.ones(2), np.array([0.0, 1.0]), np.ones(2)) == 0.0
+
+
+def test_front_free_depth_stops_at_the_first_blocker_in_the_band():
+    edge = (np.array([0.0, -0.5]), np.array([0.0, 0.5]))
+    front = np.array([1.0, 0.0])
+    near = Polygon([(1.0, 0.2), (1.5, 0.2), (1.5, 0.8), (1.0, 0.8)])
+    aside = Polygon([(0.5, 0.6), (0.9, 0.6), (0.9, 0.9), (0.5, 0.9)])
+    wall = LineString([(2.5, -3.0), (2.5, 3.0)])
+    assert front_free_depth(edge, front, [aside, wall], 3.0) == pytest.approx(2.5)
+    assert front_free_depth(edge, front, [aside, wall, near], 3.0) == pytest.approx(1.0)
+    assert front_free_depth(edge, front, [wall], 2.0) == 2.0

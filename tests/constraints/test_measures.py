@@ -11,8 +11,10 @@ from indoorgen.constraints import (
     area,
     center_of_support_distance,
     distance,
+    facing_angle,
     focus_score,
     freespace_2d,
+    front_clearance,
     height,
     min_distance,
     reflectional_asymmetry,
@@ -20,6 +22,7 @@ from indoorgen.constraints import (
     scene,
     volume,
 )
+from indoorgen.errors import ConstraintError
 from indoorgen.model.tags import Semantics as S
 from support.dsl import dining_view, value
 from support.fakeview import FakeView
@@ -114,3 +117,44 @@ def test_center_distance_is_zero_only_when_centred():
     assert value(v, light.center_distance(table)) == pytest.approx(0.7)
     v.add("light2", {S.Lighting}, (2.0, 1.5, 2.3), extents=(0.3, 0.3, 0.4))
     assert value(v, light.center_distance(table)) == pytest.approx(0.0)
+
+
+def _sofa_and_stand(stand_yaw: float, stand_pos=(4.0, 0.0, 0.3)) -> FakeView:
+    v = FakeView()
+    v.add("sofa", {S.Sofa}, (0, 0, 0.4), yaw=0.0, extents=(0.9, 2.0, 0.8))
+    v.add("stand", {S.TVStand}, stand_pos, yaw=stand_yaw, extents=(0.4, 1.5, 0.5))
+    return v
+
+
+def test_facing_angle_is_the_angle_to_the_nearest_target_in_degrees():
+    sofa, stand = scene()[S.Sofa], scene()[S.TVStand]
+    v = _sofa_and_stand(math.pi)
+    assert value(v, facing_angle(sofa, stand)) == pytest.approx(0.0, abs=1e-9)
+    assert value(v, facing_angle(stand, sofa)) == pytest.approx(0.0, abs=1e-9)
+    turned = _sofa_and_stand(math.pi / 2)   # the stand faces sideways: 90 deg off
+    assert value(turned, facing_angle(stand, sofa)) == pytest.approx(90.0)
+    aside = _sofa_and_stand(math.pi, stand_pos=(4.0, 4.0, 0.3))   # 45 deg off the sofa's axis
+    assert value(aside, facing_angle(sofa, stand)) == pytest.approx(45.0)
+    assert value(aside, facing_angle(sofa, scene()[S.Bed])) == 0.0   # no target: no angle
+
+
+def test_front_clearance_measures_free_depth_before_each_face_to_walls_and_blockers():
+    v = FakeView()
+    v.add_room("room", [(0, 0), (5, 0), (5, 4), (0, 4)])
+    # a wardrobe 0.6 m deep, back to the wall x = 0, facing +x; a chair 1.0 m before its front
+    v.add("wardrobe", {S.Wardrobe}, (0.3, 2.0, 1.0), yaw=0.0, extents=(0.6, 1.2, 2.0))
+    v.add("chair", {S.Chair}, (1.85, 2.0, 0.4), yaw=0.0, extents=(0.5, 0.5, 0.8))
+    wardrobe, room = scene()[S.Wardrobe], scene()[S.Room]
+    blockers = scene()[S.Chair] | room
+    assert value(v, front_clearance(wardrobe, blockers)) == pytest.approx(1.0)
+    # the left side (+y) sees the wall at y = 4; the right side (-y) the wall at y = 0
+    assert value(v, front_clearance(wardrobe, blockers, face="left")) == pytest.approx(1.4)
+    assert value(v, front_clearance(wardrobe, blockers, face="right", probe=1.0)) == 1.0
+    v.move("chair", center=(2.0, 3.2, 0.4))   # beside the band: the far wall at x = 5 counts
+    assert value(v, front_clearance(wardrobe, blockers, probe=9.0)) == pytest.approx(4.4)
+    # a negative margin widens the band past the sides (doors swinging out): the chair is in
+    v.move("chair", center=(1.2, 2.9, 0.4))
+    assert value(v, front_clearance(wardrobe, blockers, probe=9.0)) == pytest.approx(4.4)
+    assert value(v, front_clearance(wardrobe, blockers, margin=-0.3)) == pytest.approx(0.35)
+    with pytest.raises(ConstraintError):
+        front_clearance(wardrobe, blockers, face="top")

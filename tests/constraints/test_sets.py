@@ -54,3 +54,14 @@ def test_loop_variables_key_the_cache_of_what_reads_them():
     assert body.free_vars == frozenset() and per_chair.free_vars == frozenset()
     inner = per_chair.children[1]
     assert len(inner.free_vars) == 1 and inner.key_vars == tuple(inner.free_vars)
+
+
+def test_of_generator_with_params_filters_by_them_and_rejects_unknown_params():
+    v = dining_view()
+    v.objs["chair0"].update(generator="bed", params={"drawers": False})
+    v.objs["chair1"].update(generator="bed", params={"drawers": True})
+    plain = scene().of_generator("bed", drawers=False)
+    assert value(v, plain) == frozenset({"chair0"})
+    assert value(v, scene().of_generator("bed")) == frozenset({"chair0", "chair1"})
+    with pytest.raises(ConstraintError, match="no_such_param"):
+        scene().of_generator("bed", no_such_param=1)

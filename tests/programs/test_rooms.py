@@ -11,7 +11,9 @@ from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.node import Node
 from indoorgen.errors import UnknownRoomTypeError
 from indoorgen.model.tags import Semantics as S
+from indoorgen.pipeline import GenerateConfig, generate
 from indoorgen.programs import ROOM_PROGRAMS, get_program
+from indoorgen.quality.layout import quality_report
 from support.fakeview import FakeView
 
 
@@ -84,3 +86,25 @@ def test_every_count_is_enforced_in_the_stage_that_adds_its_objects(room_type):
             continue  # placed on objects: none exist in an empty room to judge the stage by
         active = term_stage(problem.constraints[b.name])
         assert STAGE_ORDER[active] <= STAGE_ORDER[b.stage(rooms)], (b.name, active, b.stage(rooms))
+
+
+#: the arrangement rules each rewritten room program is written to meet (quality/arrangement.py)
+ARRANGED = {
+    "living_room": ("tv_faces_seating", "coffee_table_in_front_of_sofa"),
+    "bedroom": ("nightstand_by_bed", "bed_head_to_wall", "matching_sets"),
+    "dining_room": ("dining_chairs_face_table", "matching_sets"),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("room_type", sorted(ARRANGED))
+def test_furnished_rooms_meet_their_arrangement_rules(room_type):
+    """A user's `generate --room TYPE`: the room holds what its program names, arranged as the
+    quality report's layout rules measure it, with every hard constraint met."""
+    g = generate(2, GenerateConfig(room_type=room_type))
+    assert all(r.violation == 0 for r in g.results.values())
+    rules = quality_report(g.scene, g.rooms, g.cache, g.architecture)["rules"]
+    for name in ARRANGED[room_type] + ("front_clearance", "reach", "joint_sweep"):
+        assert rules[name]["passed"] == rules[name]["checked"], (name, rules[name]["instances"])
+    for name in ARRANGED[room_type]:
+        assert rules[name]["checked"] > 0, name

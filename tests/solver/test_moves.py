@@ -243,3 +243,66 @@ def test_moves_table_names_every_move_function():
     assert set(MOVES) == {"add", "delete", "resample", "reinit", "reassign_plane",
                           "reassign_parent", "translate", "rotate"}
     assert all(fn.__name__ == name for name, fn in MOVES.items())
+
+
+def _chairs_program() -> tuple[Problem, object]:
+    """Chairs on the floor of `ROOM`, declared a matching set."""
+    room = scene()[S.Room].named(ROOM)
+    chairs = scene().related_to(room, on_floor)[S.DiningChair]
+    return Problem(constraints={"chairs": chairs.count().in_range(0, 4)},
+                   matching={"chairs": chairs}), chairs
+
+
+def _design(st, n: str) -> tuple:
+    ob = st.objects[n]
+    return ob.generator, repr(sorted(ob.params.items())), ob.seed
+
+
+def test_add_copies_the_design_of_a_matching_set_member():
+    st = make_state(5.0, 4.0)
+    first = put(st, "dining_chair", floor(), (1.0, 1.0), seed=7, name="first")
+    problem, _ = _chairs_program()
+    added = []
+    ctx = move_context(st, "large", 0, problem)
+    for _ in range(20):
+        out = _apply(ctx, "add")
+        if out is not None:
+            added += out.added
+    assert added, "no chair added"
+    assert {_design(st, n) for n in [first, *added]} == {_design(st, first)}
+    assert_consistent(st)
+
+
+def test_resample_changes_a_matching_set_together_and_undo_restores_every_member():
+    st = make_state(5.0, 4.0)
+    a = put(st, "dining_chair", floor(), (1.0, 1.0), seed=3)
+    b = put(st, "dining_chair", floor(), (3.5, 2.5), seed=3)
+    problem, _ = _chairs_program()
+    before = {n: _design(st, n) for n in (a, b)}
+    for seed in range(20):
+        ctx = move_context(st, "large", seed, problem)
+        out = _apply(ctx, "resample")
+        if out is None:
+            continue
+        assert set(out.changed) == {a, b}
+        assert _design(st, a) == _design(st, b) != before[a]
+        _on_their_planes(st, [a, b])
+        _undo(ctx, out)
+        assert {n: _design(st, n) for n in (a, b)} == before
+        assert_consistent(st)
+        return
+    pytest.fail("no resample applied")
+
+
+def test_add_gives_an_object_the_params_its_context_fixes():
+    st = make_state(5.0, 4.0)
+    room = scene()[S.Room].named(ROOM)
+    beds = scene().related_to(room, on_floor).of_generator("bed", drawers=False)
+    problem = Problem(constraints={"a bed": beds.count() == 1})
+    for seed in range(10):
+        out = _apply(move_context(st, "large", seed, problem), "add")
+        if out is not None:
+            (name,) = out.added
+            assert st.objects[name].params["drawers"] is False
+            return
+    pytest.fail("no bed added")

@@ -19,10 +19,10 @@ class FakeView:
         self.rooms[name] = sg.Polygon(polygon)
 
     def add(self, name, tags, center=(0, 0, 0), yaw=0.0, extents=(1, 1, 1), relations=(),
-            generator="box", support=None):
+            generator="box", support=None, params=None):
         self.objs[name] = dict(tags=frozenset(tags), center=np.array(center, float), yaw=yaw,
                                extents=np.array(extents, float), relations=list(relations),
-                               generator=generator, support=support)
+                               generator=generator, support=support, params=dict(params or {}))
 
     def move(self, name, center=None, yaw=None):
         o = self.objs[name]
@@ -39,6 +39,9 @@ class FakeView:
 
     def generator(self, o):
         return "" if o in self.rooms else self.objs[o]["generator"]
+
+    def params(self, o):
+        return {} if o in self.rooms else self.objs[o]["params"]
 
     def relations(self, o):
         return [] if o in self.rooms else self.objs[o]["relations"]

@@ -13,8 +13,10 @@ from indoorgen.constraints.measures import (
     area,
     center_of_support_distance,
     distance,
+    facing_angle,
     focus_score,
     freespace_2d,
+    front_clearance,
     height,
     min_distance,
     reflectional_asymmetry,
@@ -36,6 +38,7 @@ from indoorgen.constraints.sets import Not, ObjSet, scene
 
 __all__ = ["Constraint", "Not", "ObjSet", "Problem", "Scalar", "ScoreTerm", "accessibility_cost",
            "all_of", "angle_alignment_cost", "area", "center_of_support_distance", "distance",
-           "focus_score", "freespace_2d", "height", "min_distance", "reflectional_asymmetry",
+           "facing_angle", "focus_score", "front_clearance", "freespace_2d", "height",
+           "min_distance", "reflectional_asymmetry",
            "rotational_asymmetry", "scene", "volume", "AnyRelation", "CoPlanar",
            "NegatedRelation", "Relation", "StableAgainst", "SupportedBy", "Touching"]

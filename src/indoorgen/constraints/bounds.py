@@ -37,6 +37,8 @@ class Context:
     excluded: frozenset[Tag]
     relations: tuple[tuple[Relation, Node[frozenset[str]]], ...]
     generator: str | None = None
+    #: params a new member gets (sorted (name, value) pairs; `ObjSet.of_generator`)
+    params: tuple[tuple[str, Any], ...] = ()
 
 
 @dataclass
@@ -86,7 +88,8 @@ def _context_of(node: Node[Any]) -> Context | None:
     tags: set[Tag] = set()
     excluded: set[Tag] = set()
     rels: list[tuple[Relation, Node[frozenset[str]]]] = []
-    generator = None
+    generator: str | None = None
+    params: tuple[tuple[str, Any], ...] = ()
     while True:
         if isinstance(node, SceneSet):
             break
@@ -95,7 +98,7 @@ def _context_of(node: Node[Any]) -> Context | None:
             excluded |= node.exclude
             node = node.children[0]
         elif isinstance(node, FromGenerator):
-            generator = node.name
+            generator, params = node.name, node.params
             node = node.children[0]
         elif isinstance(node, RelatedTo):
             rels.append((node.relation, node.children[1]))
@@ -104,7 +107,8 @@ def _context_of(node: Node[Any]) -> Context | None:
             return None
     if Semantics.Room in tags:
         return None
-    return Context(frozenset(tags), frozenset(excluded), tuple(reversed(rels)), generator)
+    return Context(frozenset(tags), frozenset(excluded), tuple(reversed(rels)), generator,
+                   params)
 
 
 def context_stage(ctx: Context, parents: Parents, room_ids: frozenset[str]) -> str:

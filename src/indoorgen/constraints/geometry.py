@@ -501,3 +501,32 @@ def center_of_support_distance(child_center_xy: np.ndarray, support: Polygon) ->
     c = np.asarray(child_center_xy, dtype=float).reshape(-1)[:2]
     centroid = support.centroid
     return float(math.hypot(c[0] - centroid.x, c[1] - centroid.y))
+
+
+def facing_angle(center: np.ndarray, front: np.ndarray, target: np.ndarray) -> float:
+    """Angle in degrees (0..180) between an object's front and the plan direction from its centre
+    to a target point: 0 when it faces the target, 90 side-on (a sofa and its TV each within
+    ~30 deg: THX / SMPTE viewing-angle guidance). 0 when the centre is on the target."""
+    d = np.asarray(target, float)[:2] - np.asarray(center, float)[:2]
+    f = np.asarray(front, float)[:2]
+    nd, nf = float(np.linalg.norm(d)), float(np.linalg.norm(f))
+    if nd < 1e-9 or nf < 1e-12:
+        return 0.0
+    return math.degrees(math.acos(float(np.clip(np.dot(d, f) / (nd * nf), -1.0, 1.0))))
+
+
+def front_free_depth(front_edge: tuple[np.ndarray, np.ndarray], front: np.ndarray,
+                     blockers: Sequence[BaseGeometry], probe: float) -> float:
+    """Free plan depth before an object's front edge (two world XY points), along its unit
+    `front`, over the edge's width, to the first blocker (footprints, or walls as lines);
+    `probe` when nothing is that close."""
+    a, b = (np.asarray(p, float)[:2] for p in front_edge)
+    f = np.asarray(front, float)[:2]
+    band = Polygon([a, b, b + f * probe, a + f * probe])
+    edge = LineString([a, b])
+    depth = probe
+    for g in blockers:
+        hit = g.intersection(band)
+        if not hit.is_empty:
+            depth = min(depth, float(hit.distance(edge)))
+    return depth

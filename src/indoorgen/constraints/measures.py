@@ -12,15 +12,19 @@ from collections.abc import Callable, Iterable
 from indoorgen.constraints.scalars import Scalar
 from indoorgen.constraints.sets import ObjSet
 from indoorgen.constraints.terms import (
+    FACES,
     Accessibility,
     AngleAlignment,
     CenterOfSupport,
+    FacingAngle,
     Focus,
     Freespace2D,
+    FrontClearance,
     Height,
     ReflectionalAsymmetry,
     RotationalAsymmetry,
 )
+from indoorgen.errors import ConstraintError
 
 
 def _per_object(objs: ObjSet, make: Callable[[ObjSet], Scalar]) -> Scalar:
@@ -38,6 +42,23 @@ def angle_alignment_cost(objs: ObjSet, reference: ObjSet) -> Scalar:
 def focus_score(objs: ObjSet, target: ObjSet) -> Scalar:
     """Sum over objs of how far each one's front turns away from its nearest target (0..1 each)."""
     return _per_object(objs, lambda o: Focus(o, target))
+
+
+def facing_angle(objs: ObjSet, target: ObjSet) -> Scalar:
+    """Sum over objs of the angle (deg) between each front and the direction to its nearest
+    target's centre: `sofas.all(lambda s: facing_angle(s, tv_stands) <= 20)`."""
+    return _per_object(objs, lambda o: FacingAngle(o, target))
+
+
+def front_clearance(objs: ObjSet, blockers: ObjSet, probe: float = 1.5,
+                    margin: float = 0.05, face: str = "front") -> Scalar:
+    """Sum over objs of the free depth (m, at most `probe`) before each one's `face` ("front",
+    "left" or "right" side), over its width less `margin` at either end, to the nearest
+    blocker or wall (a room among the blockers counts as its walls):
+    `wardrobes.all(lambda w: front_clearance(w, floor | room) >= 0.6)`."""
+    if face not in FACES:
+        raise ConstraintError(f"front_clearance face {face!r} is not one of {sorted(FACES)}")
+    return _per_object(objs, lambda o: FrontClearance(o, blockers, probe, margin, face))
 
 
 def accessibility_cost(objs: ObjSet, blockers: ObjSet, fast: bool = True) -> Scalar:

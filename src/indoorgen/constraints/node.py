@@ -37,6 +37,9 @@ class ObjectView(Protocol):
     def generator(self, o: str) -> str:
         """The generator that made `o` ("" for rooms)."""
 
+    def params(self, o: str) -> dict[str, Any]:
+        """The generator params of `o` (empty for rooms)."""
+
     def relations(self, o: str) -> list[tuple[Relation, str]]:
         """`o`'s relations, each with the parent it relates `o` to."""
 

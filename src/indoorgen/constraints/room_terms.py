@@ -150,6 +150,10 @@ class RoomView:
         """Rooms have no generator: ""."""
         return ""
 
+    def params(self, o: str) -> dict[str, Any]:
+        """Rooms have no params: {}."""
+        return {}
+
     def relations(self, o: str) -> list[Any]:
         """Rooms relate to nothing: []."""
         return []

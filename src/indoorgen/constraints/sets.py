@@ -12,7 +12,7 @@ variable (`Var`) to each member in turn, so `tables.all(lambda t: chairs.related
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from typing import TypeVar
+from typing import Any, TypeVar
 
 from indoorgen.assets import get_factory
 from indoorgen.constraints.logic import Constraint, ForAll
@@ -55,10 +55,16 @@ class ObjSet(Node[frozenset[str]]):
         """The members carrying none of `tags`."""
         return self[tuple(Not(t) for t in tags)]
 
-    def of_generator(self, name: str) -> ObjSet:
-        """Members made by generator `name` (checked now: an unknown name is an error)."""
-        get_factory(name)
-        return FromGenerator(self, name)
+    def of_generator(self, name: str, **params: Any) -> ObjSet:
+        """Members made by generator `name` with the given param values (checked now: an
+        unknown generator or param is an error); objects the solver adds here get those values:
+        `floor.of_generator("bed", drawers=False)`."""
+        fac = get_factory(name)
+        unknown = sorted(set(params) - set(fac.params))
+        if unknown:
+            raise ConstraintError(f"generator {name!r} has no params {unknown}; "
+                                  f"it has {sorted(fac.params)}")
+        return FromGenerator(self, name, tuple(sorted(params.items())))
 
     def named(self, name: str) -> ObjSet:
         """The member called `name` (empty if it is not a member)."""
@@ -164,20 +170,27 @@ class Tagged(ObjSet):
 
 
 class FromGenerator(ObjSet):
-    """The members of a set made by one generator."""
+    """The members of a set made by one generator, with some params fixed (`params`: sorted
+    (name, value) pairs)."""
 
-    def __init__(self, child: ObjSet, name: str):
+    def __init__(self, child: ObjSet, name: str, params: tuple[tuple[str, Any], ...] = ()):
         super().__init__(child)
-        self.name = name
+        self.name, self.params = name, params
 
     def compute(self, ev: EvalContext, env: Env) -> frozenset[str]:
-        """The child's members whose generator is `name`."""
+        """The child's members whose generator is `name` and whose params hold `params`."""
         members: frozenset[str] = ev.get(self.children[0], env)
-        return frozenset(o for o in members if ev.view.generator(o) == self.name)
+        out = frozenset(o for o in members if ev.view.generator(o) == self.name)
+        if self.params:
+            ev.watch(out)  # a resample changes params
+            out = frozenset(o for o in out
+                            if all(ev.view.params(o).get(k) == v for k, v in self.params))
+        return out
 
     def label(self) -> str:
-        """`generator(<name>)`."""
-        return f"generator({self.name})"
+        """`generator(<name>, params)`."""
+        fixed = "".join(f", {k}={v!r}" for k, v in self.params)
+        return f"generator({self.name}{fixed})"
 
 
 class Named(ObjSet):

@@ -147,6 +147,55 @@ class Focus(GeometricTerm):
         return total
 
 
+class FacingAngle(GeometricTerm):
+    """Angle (deg) between each member's front and the direction to its nearest target's
+    centre, summed."""
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The sum of `geometry.facing_angle` over the members (a member without a target: 0)."""
+        a, ref = self.members(ev, env)
+        total = 0.0
+        for o in sorted(a):
+            r = _nearest(ev, o, ref)
+            if r is not None:
+                total += geometry.facing_angle(ev.view.center(o), ev.view.front(o),
+                                               ev.view.center(r))
+        return total
+
+
+#: the faces a clearance is measured before: (axis of the extent along the face's normal,
+#: sign along the front (+1) or the side axis (+1: local +Y, the left))
+FACES = {"front": (0, 1.0), "left": (1, 1.0), "right": (1, -1.0)}
+
+
+class FrontClearance(GeometricTerm):
+    """Free plan depth before each member's `face` (front, left or right side) over its width
+    (less `margin` at either end) to the nearest blocker's footprint or wall, at most `probe`;
+    summed."""
+
+    def __init__(self, a: Node[frozenset[str]], b: Node[frozenset[str]], probe: float,
+                 margin: float, face: str = "front"):
+        super().__init__(a, b)
+        self.probe, self.margin, self.face = probe, margin, face
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The sum of `geometry.front_free_depth` over the members."""
+        a, b = self.members(ev, env)
+        v = ev.view
+        axis, sign = FACES[self.face]
+        total = 0.0
+        for o in sorted(a):
+            ext = v.extents(o)
+            f, s = v.front(o)[:2], v.side_axis(o)[:2]
+            normal, along = (f * sign, s) if axis == 0 else (s * sign, f)
+            mid = v.center(o)[:2] + normal * float(ext[axis]) / 2
+            hw = max(float(ext[1 - axis]) / 2 - self.margin, 0.01)
+            edge = (mid - along * hw, mid + along * hw)
+            total += geometry.front_free_depth(edge, normal, [v.outline(y) for y in sorted(b)
+                                                              if y != o], self.probe)
+        return total
+
+
 class Accessibility(GeometricTerm):
     """How much blockers stand in front of a set's members (`fast`: bounding boxes, else
     exact meshes)."""

@@ -1,7 +1,22 @@
-"""Relations every room program uses, named for what they mean in a room, and the ceiling
-lights every room counts."""
-from indoorgen.constraints import ObjSet, StableAgainst, SupportedBy, scene
+"""Relations every room program uses, named for what they mean in a room, the ceiling lights
+every room counts, and the reach and clearance requirements rooms share."""
+from indoorgen.constraints import (
+    Constraint,
+    CoPlanar,
+    ObjSet,
+    StableAgainst,
+    SupportedBy,
+    front_clearance,
+    height,
+    scene,
+)
 from indoorgen.model.tags import Semantics, Subpart
+
+#: the highest an everyday thing rests (m): quality's reach rule (REACH_HEIGHT, standing reach)
+REACH = 1.6
+#: free depth before storage fronts (m): quality's FRONT_CLEAR (0.6 m to open a door or drawer
+#: and stand before it)
+FRONT_FREE = 0.6
 
 #: standing on the room's floor
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
@@ -20,6 +35,21 @@ on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
 #: standing wholly on a surface, nothing overhanging (a TV on its stand, a microwave)
 fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
+#: a coffee table before a seat: its back 0.45 m from the seat's front, its centre within the
+#: seat's width (furniture-layout guidance: 0.3-0.6 m; quality's COFFEE_GAP)
+before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)
+#: a rug at the foot of a bed: its back edge 2 cm from the bed's foot, centred on it
+at_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=0.02)
+#: beside: a side 5 cm from a seat's side, its centre within that side's depth (a side table at
+#: the sofa's arm)
+beside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.05)
+#: at the bedside: a side 10 cm from the bed's, its centre within the bed's length (room for a
+#: nightstand's door to swing open past its side; quality's NIGHTSTAND_GAP is 0.15 m)
+at_bedside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.1)
+#: a second seat in line with the first, 0.6 m off its arm (room for a side table between)
+in_line_with = SupportedBy(Subpart.Side, Subpart.Side, margin=0.6)
+#: a screen's front in line with its stand's front, 5 cm back (facing where the stand faces)
+screen_in_line = CoPlanar(Subpart.Front, Subpart.Front, margin=-0.05)
 
 
 def ceiling_lights(room: ObjSet) -> ObjSet:
@@ -37,3 +67,21 @@ def hung_above(gap: float, parent: Subpart = Subpart.SupportSurface) -> StableAg
     """Hanging with its bottom `gap` metres above a parent's `parent` surface, its centre over
     it: with `on_wall`, a wall cabinet over a counter, a hood over a range, a mirror over a basin."""
     return StableAgainst(Subpart.Bottom, parent, margin=gap, overhang=False)
+
+
+def within_reach(objs: ObjSet) -> Constraint:
+    """Every member's centre at most `REACH` above its floor (laptops on desks, not wardrobes);
+    a centimetre too high weighs as much as an object too few."""
+    return objs.all(lambda o: height(o) * 100 <= REACH * 100)
+
+
+def fronts_free(objs: ObjSet, blockers: ObjSet, room: ObjSet, need: float = FRONT_FREE,
+                margin: float = 0.05) -> Constraint:
+    """Every member keeps `need` metres free before its front (over its width less `margin` at
+    either end; a negative margin widens the band for doors that swing past the sides), to the
+    walls and `blockers`; a centimetre short weighs as much as an object too few."""
+    return objs.all(lambda o: front_clearance(o, blockers | room, margin=margin) * 100 >= need * 100)
+
+
+#: how far a hinged door swings past its carcass's side, opened to its limit (m)
+DOOR_SWING = -0.15

@@ -1,6 +1,10 @@
 """The annealer's moves (Infinigen Indoors, sec. 3.3): add, delete, resample, reinit, reassign a
 plane or a parent, translate, rotate.
 
+Matching sets (`Problem.matching`: the chairs at a table, a bed's nightstands) stay alike: `add`
+copies the design (generator, params and material seed) of a member already placed, and
+`resample` gives the whole set one new shape at once.
+
 Each move is a function of a `MoveContext` that proposes one change to the state and applies it.
 It returns a `MoveOutcome` (what changed, and how to undo it) when the result is geometrically
 valid, or None, having changed nothing, when it is not. `MOVES` names them for the schedule.
@@ -16,7 +20,7 @@ from typing import TypeVar
 import numpy as np
 
 from indoorgen.assets import Asset, Surface, factories_with, get_factory
-from indoorgen.constraints.bounds import Bound, find_bounds
+from indoorgen.constraints.bounds import Bound, Context, find_bounds
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.relations import Relation
@@ -242,6 +246,38 @@ def _replace_placement(ctx: MoveContext, name: str, i: int, new: Placement) -> M
     return MoveOutcome(changed=tuple(moved), undo=undo, relinked=relinked)
 
 
+def _matching_members(ctx: MoveContext) -> list[list[str]]:
+    """The members of each of the problem's matching sets in this room and stage, in name
+    order (sets in name order)."""
+    out = []
+    for _, node in sorted(ctx.problem.matching.items()):
+        members = ctx.ev.value(node)
+        out.append([m for m in sorted(members) if m in ctx.state.objects
+                    and ctx.state.objects[m].room == ctx.room
+                    and ctx.state.objects[m].stage == ctx.stage])
+    return out
+
+
+def _design_to_copy(ctx: MoveContext, context: Context, gens: list[str]) -> ObjState | None:
+    """A placed member of a matching set whose design a new object of `context` takes: the
+    first member (by name) of the first set holding one that fits the context."""
+    for members in _matching_members(ctx):
+        for m in members:
+            ob = ctx.state.objects[m]
+            if ob.generator in gens and context.tags <= ob.tags and not context.excluded & ob.tags:
+                return ob
+    return None
+
+
+def _resample_group(ctx: MoveContext, name: str) -> list[str]:
+    """The objects a resample of `name` changes together: its matching set (in this room and
+    stage), or `name` alone."""
+    for members in _matching_members(ctx):
+        if name in members:
+            return members
+    return [name]
+
+
 # -- the moves -----------------------------------------------------------------------------------
 def add(ctx: MoveContext) -> MoveOutcome | None:
     """Add a new object to a context a bound lets grow (preferring one below its minimum), on
@@ -259,10 +295,15 @@ def add(ctx: MoveContext) -> MoveOutcome | None:
             ctx.unknown_tags.add(b.context.tags)
             log.warning("no generator has tags %s", sorted(map(str, b.context.tags)))
         return None
-    gen = ctx.pick(gens)
-    fac = get_factory(gen)
-    seed = child_seed(ctx.rng)
-    params = fac.sample_params(np.random.default_rng(seed))
+    like = _design_to_copy(ctx, b.context, gens) if ctx.problem.matching else None
+    if like is not None:
+        gen, seed, params = like.generator, like.seed, dict(like.params)
+        fac = get_factory(gen)
+    else:
+        gen = ctx.pick(gens)
+        fac = get_factory(gen)
+        seed = child_seed(ctx.rng)
+        params = {**fac.sample_params(np.random.default_rng(seed)), **dict(b.context.params)}
     asset = ctx.state.cache.placeholder(gen, params)
     placements = _draw_placements(ctx, asset, b.parents)
     if placements is None:
@@ -345,29 +386,42 @@ def reinit(ctx: MoveContext) -> MoveOutcome | None:
 
 
 def resample(ctx: MoveContext) -> MoveOutcome | None:
-    """Give an object new generator params (a new shape) where it stands. Only objects nothing
-    rests on: new params mean new surfaces."""
+    """Give an object new generator params (a new shape) where it stands; a member of a
+    matching set changes with its whole set. Only objects nothing rests on: new params mean new
+    surfaces."""
     st = ctx.state
     picked = _pick_own(ctx, lambda n: not st.children(n))
     if picked is None:
         return None
     name, ob = picked
-    old_params, old_pos, old_yaw = ob.params, ob.position.copy(), ob.yaw
+    group = _resample_group(ctx, name) if ctx.problem.matching else [name]
+    if any(st.children(n) for n in group):
+        return None
+    saved = [(n, st.objects[n].params, st.objects[n].seed, st.objects[n].position.copy(),
+              st.objects[n].yaw) for n in group]
     params = get_factory(ob.generator).sample_params(ctx.rng)
-    st.set_asset(name, params)
+    if ob.context is not None:
+        params.update(ob.context.params)
 
     def undo() -> None:
-        st.set_asset(name, old_params)
-        st.set_pose(name, old_pos, old_yaw)
-    res = snap_object(st, name, ob.position, ob.yaw)
-    if res is None:
+        for n, old_params, old_seed, old_pos, old_yaw in saved:
+            st.objects[n].seed = old_seed
+            st.set_asset(n, old_params)
+            st.set_pose(n, old_pos, old_yaw)
+    for n in group:
+        st.objects[n].seed = ob.seed
+        st.set_asset(n, dict(params))
+    for n in group:
+        member = st.objects[n]
+        res = snap_object(st, n, member.position, member.yaw)
+        if res is None:
+            undo()
+            return None
+        st.set_pose(n, res[0], res[1])
+    if not all(_valid_group(st, [n]) for n in group):
         undo()
         return None
-    st.set_pose(name, res[0], res[1])
-    if not _valid_group(st, [name]):
-        undo()
-        return None
-    return MoveOutcome(changed=(name,), undo=undo)
+    return MoveOutcome(changed=tuple(group), undo=undo)
 
 
 def reassign_plane(ctx: MoveContext) -> MoveOutcome | None:

@@ -144,6 +144,10 @@ class State:
         """The generator that made object `o` ("" for a room)."""
         return "" if o in self.rooms else self.objects[o].generator
 
+    def params(self, o: str) -> dict[str, Any]:
+        """The generator params of object `o` (empty for a room)."""
+        return {} if o in self.rooms else self.objects[o].params
+
     def relations(self, o: str) -> list[tuple[Relation, str]]:
         """(relation, parent) of each of the object's placements (none for a room)."""
         if o in self.rooms:

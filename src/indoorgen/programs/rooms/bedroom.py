@@ -1,55 +1,101 @@
-"""A bedroom: a bed against a wall with nightstands either side, storage for clothes, a rug,
-lamps and pictures, and a few things on the surfaces."""
+"""A bedroom: the bed's head to a wall with free access to both sides, matching nightstands at
+the head with lamps, a wardrobe or dresser with room before it, a rug at the bed's foot,
+clothes, books and decor; sometimes a desk or a reading chair."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
     accessibility_cost,
+    all_of,
     angle_alignment_cost,
+    front_clearance,
     height,
     reflectional_asymmetry,
     scene,
 )
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor, on_top, on_wall
+from indoorgen.programs.relations import (
+    DOOR_SWING,
+    against_wall,
+    at_bedside,
+    at_foot,
+    at_table,
+    ceiling_lights,
+    fronts_free,
+    on_floor,
+    on_top,
+    on_wall,
+    within_reach,
+)
+
+#: free depth beside a bed to get in and make it, and for a nightstand (m): ergonomic guidance
+#: 0.6-0.7 m
+BED_SIDE = 0.6
 
 
 def bedroom(room: ObjSet) -> Problem:
-    """One bed against a wall, nightstands mirroring each other beside it, clothes storage."""
+    """One bed against a wall, matching nightstands at its head, clothes storage, a rug and the
+    things of a lived-in room."""
     floor = scene().related_to(room, on_floor)
-    beds = floor[S.Bed].excluding(S.BunkBed).related_to(room, against_wall)
-    nightstands = floor[S.Nightstand].related_to(room, against_wall)
+    blockers = floor.excluding(S.FloorCovering)
+    # no under-bed drawers: the nightstands at the head would stop them opening
+    beds = floor[S.Bed].of_generator("bed", drawers=False).related_to(room, against_wall)
+    nightstands = floor[S.Nightstand].related_to(room, against_wall).related_to(beds, at_bedside)
     wardrobes = floor[S.Wardrobe].related_to(room, against_wall)
     dressers = floor[S.Dresser].related_to(room, against_wall)
-    clothes_storage = wardrobes | dressers
-    rugs = floor[S.Rug]
+    desks = floor[S.Desk].related_to(room, against_wall)
+    desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
+    reading_chairs = floor[S.Armchair]
+    rugs = floor[S.Rug].related_to(beds, at_foot)
+    plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
-    lights = ceiling_lights(room)
-    lamps = scene()[S.Lighting].excluding(S.CeilingMounted, S.WallMounted, S.FloorLamp).related_to(
-        nightstands, on_top)
-    things = scene()[S.SmallObject].excluding(S.Food, S.Kitchenware, S.Tableware).related_to(
-        nightstands | clothes_storage, on_top)
+    mirrors = scene().of_generator("mirror").related_to(room, on_wall)
+    lamps = scene()[S.TableLamp].related_to(nightstands, on_top)
+    surfaces = nightstands | dressers | desks
+    books = scene()[S.Book].related_to(surfaces, on_top)
+    clothes = scene()[S.FoldedClothes].related_to(dressers | beds, on_top)
+    decor = scene()[S.SmallObject].excluding(
+        S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
+        S.Electronics).related_to(surfaces, on_top)
     return Problem(
         constraints={
             "a bed": beds.count() == 1,
-            "one or two nightstands": nightstands.count().in_range(1, 2),
+            "one or two nightstands at the head": nightstands.count().in_range(1, 2),
             "a wardrobe or a dresser": (wardrobes.count() + dressers.count()).in_range(1, 2),
+            "a desk at most": desks.count().in_range(0, 1),
+            "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
+            "a reading chair at most": reading_chairs.count().in_range(0, 1),
             "a rug at most": rugs.count().in_range(0, 1),
-            "a ceiling light": lights.count() == 1,
-            "lamps on the nightstands": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
+            "a plant at most": plants.count().in_range(0, 1),
+            "a ceiling light": ceiling_lights(room).count() == 1,
+            "a lamp per nightstand": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
             "pictures": art.count().in_range(1, 2),
-            "a few things on the surfaces": things.count().in_range(1, 6),
+            "a mirror at most": mirrors.count().in_range(0, 1),
+            "books": books.count().in_range(1, 6),
+            "clothes": clothes.count().in_range(0, 3),
+            "decor": decor.count().in_range(2, 8),
+            "wardrobe doors free": fronts_free(wardrobes, blockers, room, margin=DOOR_SWING),
+            "storage fronts free": fronts_free(dressers | desks | nightstands, blockers, room),
+            "the bed's foot free": fronts_free(beds, blockers, room),
+            "free access to both sides": beds.all(lambda b: all_of(*(
+                front_clearance(b, blockers.excluding(S.Nightstand) | room, probe=1.0,
+                                face=side) * 100 >= BED_SIDE * 100 for side in ("left", "right")))),
+            "everyday things within reach": within_reach(books | decor),
         },
         score_terms={
-            "nightstands beside the bed": nightstands.mean(
-                lambda n: n.distance(beds).hinge(0.0, 0.1)).minimize(4),
-            "nightstands mirror each other": beds.mean(
-                lambda b: reflectional_asymmetry(nightstands, b)).minimize(1),
-            "bed side free": accessibility_cost(beds, floor.excluding(S.Rug, S.Nightstand)).minimize(2),
-            "storage fronts free": accessibility_cost(clothes_storage, floor.excluding(S.Rug)).minimize(2),
-            "rug under the bed's foot": rugs.mean(lambda r: r.distance(beds).hinge(0.0, 0.3)).minimize(1),
-            "furniture square to the walls": angle_alignment_cost(floor, room).minimize(1),
-            "a lamp per nightstand": lamps.count().maximize(0.5),
+            "nightstands match either side": beds.mean(
+                lambda b: reflectional_asymmetry(nightstands, b)).minimize(2),
+            "two nightstands": nightstands.count().maximize(1),
+            "the bed centred on its wall": beds.mean(lambda b: b.center_distance(room)).minimize(0.5),
+            "bed side free": accessibility_cost(beds, blockers.excluding(S.Nightstand)).minimize(2),
+            "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
+            "plants by the walls": plants.mean(lambda p: p.distance(room).hinge(0.0, 0.1)).minimize(2),
+            "a lamp on each nightstand": lamps.count().maximize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
-            "pictures in view": accessibility_cost(art, floor).minimize(2),
+            "pictures in view": accessibility_cost(art, blockers).minimize(2),
+            "a lived-in room": (books.count() + clothes.count() + decor.count() + rugs.count()
+                                + plants.count() + mirrors.count()).maximize(0.3),
+            "reading chair by a lamp or window": reading_chairs.mean(
+                lambda c: c.distance(room).hinge(0.0, 0.3)).minimize(0.5),
         },
+        matching={"nightstands": nightstands, "bedside lamps": lamps},
     )
