@@ -14,7 +14,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
-from indoorgen.assets.shapes.collision import convex_pieces, free_space_above
+from indoorgen.assets.shapes.collision import convex_pieces, free_space_above, hollowed
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
 from indoorgen.assets.shapes.primitives import Part
 from indoorgen.model.tags import Subpart
@@ -100,9 +100,33 @@ class PartsFactory(AssetFactory):
         cheap, offset, ext = self._layout(p)
         mesh, fs, slots = concat(cheap, self.slots)
         asset = self._asset(p, mesh, fs, slots, offset, ext)
+        # hollow the cheap body where things are put away (a cupboard's shelves)
+        rooms = self._stowage(p, float(ext[2] - offset[2]))
+        pieces = hollowed(cheap, rooms) if rooms else cheap
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
-                           for link, h in convex_pieces(cheap, max_pieces=24)]
+                           for link, h in convex_pieces(pieces, max_pieces=24 + 8 * len(rooms))]
         return asset
+
+    def _stowage(self, p: dict[str, Any], top: float) -> list[list[float]]:
+        """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
+        `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
+        what the solver may fill, so placeholders and simulators leave it free. Small objects
+        (a bowl's inside is open above) have none."""
+        if self.size_class == "small":
+            return []
+        inner = [s for s in self.extra_surfaces(p)
+                 if s.subpart == Subpart.Interior and s.normal[2] > 0.9]
+        if not inner:
+            return []
+        body = [q.solid for q in self.parts(p, True) if q.link == "base" and not q.solid.is_empty()]
+        out = []
+        for s in inner:
+            xy = s.corners()[:, :2]
+            box = free_space_above(body, (*xy.min(axis=0), *xy.max(axis=0)), float(s.origin[2]),
+                                   top)
+            if box is not None:  # from the surface itself: things stand on it 1 mm up
+                out.append([box[0], box[1], float(s.origin[2]), *box[3:]])
+        return out
 
     def create(self, params: dict[str, Any]) -> Asset:
         """The detailed asset: one watertight shell per link, UVs, joints and convex pieces."""
@@ -114,7 +138,8 @@ class PartsFactory(AssetFactory):
         asset.links, asset.face_links = links, face_links
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.corner_uv = box_uv(asset.mesh.vertices, asset.mesh.faces)
-        free = self._free_boxes(asset, parts, offset)
+        free = self._free_boxes(asset, parts, offset) + \
+            self._stowage(p, float(ext[2] - offset[2]))
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
                            for link, h in convex_pieces(parts, decompose=True, keep_free=free)]
         return asset

@@ -1,0 +1,176 @@
+"""What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
+food in the fridge, clothes in wardrobes, lamps and decor on dressers, tableware on dining
+tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to every
+room program, so the room programs only say which furniture stands where.
+
+Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
+sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
+away, so storage fills as far as its shelves have room, and the caps mix the kinds of things
+(no single kind crowds a room). Everyday things stay within reach.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from indoorgen.constraints import Not, ObjSet, Problem, Relation, scene
+from indoorgen.constraints import height as height_of
+from indoorgen.constraints.node import Tag
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
+
+#: the top of the comfortable-reach zone (m) for everyday things (ergonomic storage guidance:
+#: shelves above shoulder height, ~1.6 m, are for what is rarely used; the quality report's
+#: `reach` rule measures the same)
+REACH_HEIGHT = 1.6
+#: the object classes used every day, which must rest within reach
+EVERYDAY = (S.Laptop, S.Remote, S.Tableware, S.Book, S.Kitchenware, S.Food, S.Cup)
+#: the weight of one object put away in the loss (the room programs' own terms weigh 0.5-4)
+FILL_WEIGHT = 0.15
+#: the fullness of `indoorgen generate` without a preset's range: the middle of the default
+DEFAULT_FULLNESS = 1.0
+
+
+@dataclass(frozen=True)
+class Load:
+    """One kind of thing a piece of furniture holds: the tags every such thing carries (and
+    those it must not), where it goes (`on_top` or `inside`) and how many at most per piece
+    of furniture at fullness 1."""
+
+    name: str
+    tags: tuple[Tag, ...]
+    relation: Relation
+    most: int
+    excluded: tuple[Tag, ...] = ()
+    #: the cap never goes below this (a room program asking for at least so many)
+    least: int = 1
+
+    def things(self) -> ObjSet:
+        """Every object of this kind, wherever it is."""
+        return scene()[self.tags + tuple(Not(t) for t in self.excluded)]
+
+
+
+def decor(most: int) -> Load:
+    """Small decor on top (vases, candles, table clocks, little plants; book stacks count as
+    books and balloons belong to parties), `most` per piece of furniture."""
+    return Load("decor", (S.Decor, S.SmallObject), on_top, most, (S.Book, S.Balloon))
+
+
+#: what each kind of furniture holds (the kinds: `holders`)
+HOLDS: dict[str, tuple[Load, ...]] = {
+    "shelving": (
+        # the living room and the office ask for 8 and 6 books per bookcase at least
+        Load("books", (S.Book,), on_top, 12, least=8),
+        decor(4),
+        Load("baskets", (S.Basket,), on_top, 1),
+        Load("boxes", (S.Box,), on_top, 1),
+    ),
+    "base cabinets": (
+        Load("plates", (S.Plate,), inside, 6),
+        Load("bowls", (S.Bowl,), inside, 4, (S.Food,)),
+        Load("pots", (S.Pot,), inside, 2),
+        Load("pans", (S.Pan,), inside, 1),
+        Load("jars", (S.Jar,), inside, 2),
+    ),
+    "wall cabinets": (
+        Load("plates", (S.Plate,), inside, 4),
+        Load("bowls", (S.Bowl,), inside, 3, (S.Food,)),
+        Load("cups and glasses", (S.Cup,), inside, 6),
+        Load("food", (S.Food,), inside, 3, (S.Tableware,)),
+    ),
+    "fridges": (
+        Load("food", (S.Food,), inside, 8, (S.Tableware,)),
+        Load("bottles", (S.Bottle,), inside, 4),
+        Load("jars", (S.Jar,), inside, 2),
+    ),
+    "wardrobes": (
+        Load("folded clothes", (S.FoldedClothes,), inside, 10),
+        Load("boxes", (S.Box,), inside, 2),
+        Load("baskets", (S.Basket,), inside, 1),
+    ),
+    "cupboards": (
+        Load("books", (S.Book,), inside, 4),
+        Load("boxes", (S.Box,), inside, 2),
+        Load("tableware", (S.Tableware,), inside, 6, (S.Food,)),
+        Load("bottles", (S.Bottle,), inside, 2),
+    ),
+    "chests": (
+        Load("a lamp", (S.TableLamp,), on_top, 1),
+        decor(3),
+        Load("books", (S.Book,), on_top, 2),
+        Load("baskets", (S.Basket,), on_top, 1),
+    ),
+    "dining tables": (
+        Load("cutlery", (S.Cutlery,), on_top, 8),
+        Load("glasses", (S.Wineglass,), on_top, 4),
+        Load("bottles", (S.Bottle,), on_top, 2),
+        Load("bowls", (S.Bowl,), on_top, 3),
+        Load("candles", (S.Candle,), on_top, 2),
+    ),
+    "low tables": (
+        Load("books", (S.Book,), on_top, 2),
+        decor(2),
+        Load("a remote", (S.Remote,), on_top, 1),
+        Load("cups", (S.Cup,), on_top, 2),
+    ),
+    "desks": (
+        Load("books", (S.Book,), on_top, 3),
+        Load("a mug", (S.Mug,), on_top, 1),
+        decor(2),
+    ),
+}
+
+
+def holders(room: ObjSet) -> dict[str, ObjSet]:
+    """The room's furniture by what it holds (the keys of `HOLDS`)."""
+    floor = scene().related_to(room, on_floor)
+    walls = scene().related_to(room, on_wall)
+    return {
+        "shelving": floor[S.Bookcase] | floor[S.Shelf].excluding(S.Warehouse, S.ShoeRack, S.Bookcase)
+        | walls[S.WallShelf],
+        "base cabinets": floor[S.KitchenCabinet].excluding(S.WallMounted),
+        "wall cabinets": walls[S.WallCabinet],
+        "fridges": floor[S.Fridge],
+        "wardrobes": floor[S.Wardrobe],
+        "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
+        | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "dining tables": floor[S.DiningTable],
+        "low tables": floor[S.CoffeeTable] | floor[S.SideTable],
+        "desks": floor[S.Desk],
+    }
+
+
+def cap(load: Load, fullness: float) -> int:
+    """The most things of `load`'s kind a piece of furniture holds at `fullness`."""
+    return max(load.least, round(load.most * fullness))
+
+
+def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
+    """What the room's furniture holds, `fullness` times the usual amount at most; everyday
+    things within reach."""
+    constraints, put_away = {}, []
+    for kind, furniture in holders(room).items():
+        for load in HOLDS[kind]:
+            things, most = load.things(), cap(load, fullness)
+            constraints[f"{kind} hold {load.name}"] = furniture.all(
+                lambda f, things=things, rel=load.relation, most=most:
+                    things.related_to(f, rel).count() <= most)
+            put_away.append(things.related_to(furniture, load.relation))
+    held = put_away[0]
+    for s in put_away[1:]:
+        held = held | s
+    constraints["everyday things within reach"] = everyday(room).all(
+        lambda o: height_of(o) <= REACH_HEIGHT)
+    return Problem(constraints, {"things put away": held.count().maximize(FILL_WEIGHT)})
+
+
+def everyday(room: ObjSet) -> ObjSet:
+    """The everyday small things resting on or in anything of `room`."""
+    furniture = scene().related_to(room, on_floor) | scene().related_to(room, on_wall)
+    sets = [scene()[t, S.SmallObject].related_to(furniture, on_top) for t in EVERYDAY]
+    sets += [scene()[t, S.SmallObject].related_to(furniture, inside) for t in EVERYDAY]
+    out = sets[0]
+    for s in sets[1:]:
+        out = out | s
+    return out
