@@ -150,26 +150,30 @@ def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
     """What the room's furniture holds, `fullness` times the usual amount at most; everyday
     things within reach."""
     constraints, put_away = {}, []
+    kinds: dict[tuple[tuple[Tag, ...], tuple[Tag, ...]], ObjSet] = {}  # one set per kind of thing
     for kind, furniture in holders(room).items():
         for load in HOLDS[kind]:
-            things, most = load.things(), cap(load, fullness)
+            things = kinds.setdefault((load.tags, load.excluded), load.things())
+            most = cap(load, fullness)
             constraints[f"{kind} hold {load.name}"] = furniture.all(
                 lambda f, things=things, rel=load.relation, most=most:
                     things.related_to(f, rel).count() <= most)
             put_away.append(things.related_to(furniture, load.relation))
-    held = put_away[0]
-    for s in put_away[1:]:
-        held = held | s
     constraints["everyday things within reach"] = everyday(room).all(
         lambda o: height_of(o) <= REACH_HEIGHT)
-    return Problem(constraints, {"things put away": held.count().maximize(FILL_WEIGHT)})
+    return Problem(constraints, {"things put away": union(put_away).count().maximize(FILL_WEIGHT)})
 
 
 def everyday(room: ObjSet) -> ObjSet:
     """The everyday small things resting on or in anything of `room`."""
     furniture = scene().related_to(room, on_floor) | scene().related_to(room, on_wall)
-    sets = [scene()[t, S.SmallObject].related_to(furniture, on_top) for t in EVERYDAY]
-    sets += [scene()[t, S.SmallObject].related_to(furniture, inside) for t in EVERYDAY]
+    small = scene()[S.SmallObject]
+    held = small.related_to(furniture, on_top) | small.related_to(furniture, inside)
+    return union([held[t] for t in EVERYDAY])
+
+
+def union(sets: list[ObjSet]) -> ObjSet:
+    """The members of any of `sets` (at least one)."""
     out = sets[0]
     for s in sets[1:]:
         out = out | s
