@@ -10,19 +10,20 @@ away, so storage fills as far as its shelves have room, and the caps mix the kin
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
-from indoorgen.constraints import Not, ObjSet, Problem, Relation, scene
+from indoorgen.constraints import Constraint, Not, ObjSet, Problem, Relation, scene
 from indoorgen.constraints import height as height_of
 from indoorgen.constraints.node import Tag
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
 
-#: the top of the comfortable-reach zone (m) for everyday things (ergonomic storage guidance:
-#: shelves above shoulder height, ~1.6 m, are for what is rarely used; the quality report's
-#: `reach` rule measures the same)
+#: everyday objects rest no higher than eye level (~1.6 m, 50th-percentile adult eye height,
+#: the top of the comfortable-reach zone in ergonomic storage guidance); the quality report's
+#: `reach` rule measures the same
 REACH_HEIGHT = 1.6
-#: the object classes used every day, which must rest within reach
+#: object classes used every day (the reach rule's subjects), which must rest within reach
 EVERYDAY = (S.Laptop, S.Remote, S.Tableware, S.Book, S.Kitchenware, S.Food, S.Cup)
 #: the weight of one object put away in the loss (the room programs' own terms weigh 0.5-4)
 FILL_WEIGHT = 0.15
@@ -156,12 +157,16 @@ def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
             things = kinds.setdefault((load.tags, load.excluded), load.things())
             most = cap(load, fullness)
             constraints[f"{kind} hold {load.name}"] = furniture.all(
-                lambda f, things=things, rel=load.relation, most=most:
-                    things.related_to(f, rel).count() <= most)
+                at_most(things, load.relation, most))
             put_away.append(things.related_to(furniture, load.relation))
     constraints["everyday things within reach"] = everyday(room).all(
         lambda o: height_of(o) <= REACH_HEIGHT)
     return Problem(constraints, {"things put away": union(put_away).count().maximize(FILL_WEIGHT)})
+
+
+def at_most(things: ObjSet, relation: Relation, most: int) -> Callable[[ObjSet], Constraint]:
+    """"A piece of furniture holds at most `most` of `things` by `relation`", for `all`."""
+    return lambda piece: things.related_to(piece, relation).count() <= most
 
 
 def everyday(room: ObjSet) -> ObjSet:

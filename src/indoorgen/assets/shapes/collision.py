@@ -218,7 +218,8 @@ def _group_by_position(points: np.ndarray, k: int) -> list[list[int]]:
     return groups
 
 
-def box_minus(box: Sequence[float], holes: Sequence[Sequence[float]]) -> list[list[float]]:
+def box_minus(box: Sequence[float] | np.ndarray, holes: Sequence[Sequence[float]]
+              ) -> list[list[float]]:
     """The axis-aligned box (x0, y0, z0, x1, y1, z1) with the `holes` (boxes alike) taken out, as
     a few boxes: each hole splits what it meets into the slabs below and above it, then beside
     it along y, then before and behind it along x (a cupboard's cheap block becomes its boards
