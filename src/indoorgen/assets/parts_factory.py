@@ -14,7 +14,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
-from indoorgen.assets.shapes.collision import convex_pieces, free_space_above, hollowed
+from indoorgen.assets.shapes.collision import clear_of, convex_pieces, free_space_above, hollowed
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
 from indoorgen.assets.shapes.primitives import Part
 from indoorgen.model.tags import Subpart
@@ -110,22 +110,25 @@ class PartsFactory(AssetFactory):
     def _stowage(self, p: dict[str, Any], top: float) -> list[list[float]]:
         """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
         `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
-        what the solver may fill, so placeholders and simulators leave it free. Small objects
-        (a bowl's inside is open above) have none."""
+        what the solver may fill, clear of every part of every link (a drawer's bin, a door's
+        racks), so placeholders and simulators leave it free. Small objects (a bowl's inside is
+        open above) have none."""
         if self.size_class == "small":
             return []
         inner = [s for s in self.extra_surfaces(p)
                  if s.subpart == Subpart.Interior and s.normal[2] > 0.9]
         if not inner:
             return []
-        body = [q.solid for q in self.parts(p, True) if q.link == "base" and not q.solid.is_empty()]
+        solids = [q.solid for q in self.parts(p, True) if not q.solid.is_empty()]
         out = []
         for s in inner:
             xy = s.corners()[:, :2]
-            box = free_space_above(body, (*xy.min(axis=0), *xy.max(axis=0)), float(s.origin[2]),
-                                   top)
+            box = free_space_above(solids, (*xy.min(axis=0), *xy.max(axis=0)),
+                                   float(s.origin[2]), top)
             if box is not None:  # from the surface itself: things stand on it 1 mm up
-                out.append([box[0], box[1], float(s.origin[2]), *box[3:]])
+                box = clear_of([box[0], box[1], float(s.origin[2]), *box[3:]], solids)
+            if box is not None:
+                out.append(box)
         return out
 
     def create(self, params: dict[str, Any]) -> Asset:

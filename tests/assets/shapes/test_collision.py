@@ -11,6 +11,7 @@ from indoorgen.assets.shapes.collision import (
     SWALLOW_VOLUME,
     box_minus,
     carve_around,
+    clear_of,
     convex_pieces,
     free_space_above,
     hollowed,
@@ -119,3 +120,15 @@ def test_hollowed_cuts_only_box_parts_of_the_body():
     assert len(body) == 6  # floor, top, back, front rim, two sides
     assert sum(q.solid.volume() for q in body) == pytest.approx(
         block.solid.volume() - _vol(hole), rel=1e-6)
+
+
+def test_clear_of_keeps_stowage_out_of_drawers_and_door_racks():
+    """A compartment with a rack on its door reaching 8 cm in: the box gives up its front 8 cm;
+    one filled by a drawer's bin holds nothing."""
+    box = [-0.25, -0.3, 0.1, 0.25, 0.3, 0.5]
+    rack = box_between((0.17, -0.28, 0.2), (0.3, 0.28, 0.3))
+    assert clear_of(box, [rack]) == pytest.approx([-0.25, -0.3, 0.1, 0.17, 0.3, 0.5])
+    bin_ = box_between((-0.24, -0.29, 0.101), (0.26, 0.29, 0.45))
+    assert clear_of(box, [bin_]) is None
+    shelf_below = box_between((-0.25, -0.3, 0.08), (0.25, 0.3, 0.1))
+    assert clear_of(box, [shelf_below]) == box

@@ -260,3 +260,36 @@ def hollowed(parts: Sequence[Part], holes: Sequence[Sequence[float]]) -> list[Pa
             continue
         out.extend(Part(box_between(b[:3], b[3:]), part.slot, part.link) for b in box_minus(bb, holes))
     return out
+
+
+#: a stowage box lower or narrower than this (m) holds nothing worth placing
+MIN_STOWAGE = 0.03
+
+
+def clear_of(box: Sequence[float], solids: Sequence[m3d.Manifold]) -> list[float] | None:
+    """`box` (x0, y0, z0, x1, y1, z1) cut back until none of `solids` enters it: each solid
+    that does (a freezer drawer's bin, a door's bottle rack) is kept out by lowering the box's
+    top or moving one of its sides, whichever keeps the most of it. None when less than
+    MIN_STOWAGE is left in some direction."""
+    b = np.asarray(box, float)
+    for solid in solids:
+        bb = np.asarray(solid.bounding_box(), float)
+        if np.any(np.minimum(b[3:], bb[3:]) - np.maximum(b[:3], bb[:3]) <= 1e-6):
+            continue
+        hit = solid ^ box_between(b[:3], b[3:])
+        if hit.is_empty() or hit.volume() <= 1e-9:
+            continue
+        h = np.asarray(hit.bounding_box(), float)
+        options = []
+        for axis in range(3):
+            lower = b.copy()
+            lower[axis + 3] = h[axis]
+            options.append(lower)
+            if axis < 2:  # (the bottom stays on its shelf)
+                upper = b.copy()
+                upper[axis] = h[axis + 3]
+                options.append(upper)
+        b = max(options, key=lambda o: float(np.prod(np.clip(o[3:] - o[:3], 0.0, None))))
+        if np.any(b[3:] - b[:3] < MIN_STOWAGE):
+            return None
+    return b.tolist()
