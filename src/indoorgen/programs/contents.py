@@ -61,63 +61,73 @@ def decor(most: int) -> Load:
 HOLDS: dict[str, tuple[Load, ...]] = {
     "shelving": (
         # the living room and the office ask for 8 and 6 books per bookcase at least
-        Load("books", (S.Book,), on_top, 12, least=8),
-        decor(4),
-        Load("baskets", (S.Basket,), on_top, 1),
-        Load("boxes", (S.Box,), on_top, 1),
+        Load("books", (S.Book,), on_top, 14, least=8),
+        decor(6),
+        Load("baskets", (S.Basket,), on_top, 2),
+        Load("boxes", (S.Box,), on_top, 2),
     ),
     "base cabinets": (
-        Load("plates", (S.Plate,), inside, 6),
-        Load("bowls", (S.Bowl,), inside, 4, (S.Food,)),
+        Load("plates", (S.Plate,), inside, 8),
+        Load("bowls", (S.Bowl,), inside, 5, (S.Food,)),
         Load("pots", (S.Pot,), inside, 2),
-        Load("pans", (S.Pan,), inside, 1),
+        Load("pans", (S.Pan,), inside, 2),
         Load("jars", (S.Jar,), inside, 2),
     ),
     "wall cabinets": (
-        Load("plates", (S.Plate,), inside, 4),
-        Load("bowls", (S.Bowl,), inside, 3, (S.Food,)),
-        Load("cups and glasses", (S.Cup,), inside, 6),
+        Load("plates", (S.Plate,), inside, 5),
+        Load("bowls", (S.Bowl,), inside, 4, (S.Food,)),
+        Load("cups and glasses", (S.Cup,), inside, 8),
         Load("food", (S.Food,), inside, 3, (S.Tableware,)),
     ),
     "fridges": (
-        Load("food", (S.Food,), inside, 8, (S.Tableware,)),
-        Load("bottles", (S.Bottle,), inside, 4),
-        Load("jars", (S.Jar,), inside, 2),
+        Load("food", (S.Food,), inside, 10, (S.Tableware,)),
+        Load("bottles", (S.Bottle,), inside, 5),
+        Load("jars", (S.Jar,), inside, 3),
     ),
     "wardrobes": (
-        Load("folded clothes", (S.FoldedClothes,), inside, 10),
-        Load("boxes", (S.Box,), inside, 2),
-        Load("baskets", (S.Basket,), inside, 1),
+        Load("folded clothes", (S.FoldedClothes,), inside, 14),
+        Load("boxes", (S.Box,), inside, 3),
+        Load("baskets", (S.Basket,), inside, 2),
     ),
     "cupboards": (
         Load("books", (S.Book,), inside, 4),
         Load("boxes", (S.Box,), inside, 2),
-        Load("tableware", (S.Tableware,), inside, 6, (S.Food,)),
-        Load("bottles", (S.Bottle,), inside, 2),
+        Load("tableware", (S.Tableware,), inside, 8, (S.Food,)),
+        Load("bottles", (S.Bottle,), inside, 3),
     ),
     "chests": (
         Load("a lamp", (S.TableLamp,), on_top, 1),
-        decor(3),
-        Load("books", (S.Book,), on_top, 2),
+        decor(4),
+        Load("books", (S.Book,), on_top, 3),
         Load("baskets", (S.Basket,), on_top, 1),
     ),
     "dining tables": (
-        Load("cutlery", (S.Cutlery,), on_top, 8),
-        Load("glasses", (S.Wineglass,), on_top, 4),
+        Load("cutlery", (S.Cutlery,), on_top, 10),
+        Load("glasses", (S.Wineglass,), on_top, 6),
         Load("bottles", (S.Bottle,), on_top, 2),
-        Load("bowls", (S.Bowl,), on_top, 3),
+        Load("bowls", (S.Bowl,), on_top, 4),
         Load("candles", (S.Candle,), on_top, 2),
     ),
     "low tables": (
-        Load("books", (S.Book,), on_top, 2),
-        decor(2),
+        Load("books", (S.Book,), on_top, 3),
+        decor(3),
         Load("a remote", (S.Remote,), on_top, 1),
-        Load("cups", (S.Cup,), on_top, 2),
+        Load("cups", (S.Cup,), on_top, 3),
     ),
     "desks": (
-        Load("books", (S.Book,), on_top, 3),
+        Load("books", (S.Book,), on_top, 4),
         Load("a mug", (S.Mug,), on_top, 1),
         decor(2),
+    ),
+    "sofas": (
+        Load("a book", (S.Book,), on_top, 1),
+        Load("a laptop", (S.Laptop,), on_top, 1),
+        Load("a remote", (S.Remote,), on_top, 1),
+    ),
+    "beds": (
+        Load("folded clothes", (S.FoldedClothes,), on_top, 2),
+        Load("a book", (S.Book,), on_top, 1),
+        Load("a laptop", (S.Laptop,), on_top, 1),
     ),
 }
 
@@ -139,12 +149,15 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "dining tables": floor[S.DiningTable],
         "low tables": floor[S.CoffeeTable] | floor[S.SideTable],
         "desks": floor[S.Desk],
+        "sofas": floor[S.Sofa],
+        "beds": floor[S.Bed],
     }
 
 
 def cap(load: Load, fullness: float) -> int:
-    """The most things of `load`'s kind a piece of furniture holds at `fullness`."""
-    return max(load.least, round(load.most * fullness))
+    """The most things of `load`'s kind a piece of furniture holds at `fullness` (one of a
+    kind, a lamp or a remote, stays one)."""
+    return 1 if load.most == 1 else max(load.least, round(load.most * fullness))
 
 
 def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
