@@ -10,6 +10,7 @@ import shapely.geometry as sg
 import trimesh
 
 from indoorgen.assets.catalogue import factory_names, get_factory
+from indoorgen.assets.parts_factory import STOWING
 from indoorgen.assets.protocol import Param
 from indoorgen.assets.shapes.mesh import union
 from indoorgen.errors import ParameterError
@@ -371,9 +372,6 @@ def test_uvs_and_collision_pieces(name, seed):
 #: stair treads (a flight collides as a ramp; nothing is placed on treads), pallet-rack levels
 #: (beyond 96 pieces neighbouring beams are hulled together)
 COVERED_SUPPORT = {"staircase", "pallet_rack"}
-#: generators whose Interior surfaces may still lie inside a full collision hull (reported): oven
-#: racks (their wires beyond 96 pieces are hulled together; nothing is put inside an oven)
-COVERED_INTERIOR = {"oven", "range"}
 
 
 @pytest.mark.parametrize("name,seed", [c for c in CASES if c.values[1] < 3])
@@ -383,12 +381,14 @@ def test_space_over_covered_shelves_is_free(name, seed):
     piece of the body, detailed or placeholder, fills it."""
     if name in COVERED_SUPPORT:
         pytest.skip("reported: " + name)
-    _, _, ph, a = build(name, seed)
+    f, _, ph, a = build(name, seed)
     top = a.mesh.bounds[1][2]
     body = [m for link, m in a.collision + ph.collision if link == "base"]
     for s in a.surfaces:
-        roles = (Subpart.SupportSurface,) if name in COVERED_INTERIOR else \
-            (Subpart.SupportSurface, Subpart.Interior)
+        # (things are put away inside storage and fridges only: an oven's racks, a shower's
+        # tray or a bathtub's basin stay inside a placeholder's block)
+        roles = (Subpart.SupportSurface, Subpart.Interior) if f.tags & STOWING else \
+            (Subpart.SupportSurface,)
         if s.subpart not in roles or s.normal[2] < 0.9 or s.origin[2] > top - 0.01:
             continue
         c = s.polygon.representative_point()

@@ -17,7 +17,10 @@ from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface
 from indoorgen.assets.shapes.collision import clear_of, convex_pieces, free_space_above, hollowed
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
 from indoorgen.assets.shapes.primitives import Part
-from indoorgen.model.tags import Subpart
+from indoorgen.model.tags import Semantics, Subpart
+
+#: the objects things are put away in (their covered Interior surfaces get stowage boxes)
+STOWING = frozenset({Semantics.Storage, Semantics.Fridge})
 
 
 def default_value(p: Param) -> Any:
@@ -111,9 +114,9 @@ class PartsFactory(AssetFactory):
         """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
         `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
         what the solver may fill, clear of every part of every link (a drawer's bin, a door's
-        racks), so placeholders and simulators leave it free. Small objects (a bowl's inside is
-        open above) have none."""
-        if self.size_class == "small":
+        racks), so placeholders and simulators leave it free. Only storage furniture and fridges
+        have any (nothing is put in an oven or a shower; a bowl's inside is open above)."""
+        if self.size_class == "small" or not self.tags & STOWING:
             return []
         inner = [s for s in self.extra_surfaces(p)
                  if s.subpart == Subpart.Interior and s.normal[2] > 0.9]

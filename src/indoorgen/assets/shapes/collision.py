@@ -264,6 +264,9 @@ def hollowed(parts: Sequence[Part], holes: Sequence[Sequence[float]]) -> list[Pa
 
 #: a stowage box lower or narrower than this (m) holds nothing worth placing
 MIN_STOWAGE = 0.03
+#: things put away stand this far above their surface (the solver's contact gap,
+#: constraints.relations.CONTACT_GAP, which assets sit below and cannot import)
+STAND_GAP = 0.001
 
 
 def clear_of(box: Sequence[float], solids: Sequence[m3d.Manifold]) -> list[float] | None:
@@ -280,6 +283,8 @@ def clear_of(box: Sequence[float], solids: Sequence[m3d.Manifold]) -> list[float
         if hit.is_empty() or hit.volume() <= 1e-9:
             continue
         h = np.asarray(hit.bounding_box(), float)
+        if h[5] <= b[2] + STAND_GAP:
+            continue  # flush with the floor (a drain cover): what stands there clears it
         options = []
         for axis in range(3):
             lower = b.copy()
