@@ -25,8 +25,15 @@ from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
 REACH_HEIGHT = 1.6
 #: object classes used every day (the reach rule's subjects), which must rest within reach
 EVERYDAY = (S.Laptop, S.Remote, S.Tableware, S.Book, S.Kitchenware, S.Food, S.Cup)
+#: the violation per metre an everyday thing rests out of reach: 10 cm weigh as much as a
+#: missing object (a room program's minimum), so the solver leaves a shelf short rather than
+#: putting a book on top of the bookcase
+OUT_OF_REACH = 10.0
 #: the weight of one object put away in the loss (the room programs' own terms weigh 0.5-4)
 FILL_WEIGHT = 0.15
+#: the weight of the mean height (m) of what is on display on shelving: decor drifts up, so
+#: the shelves within reach hold the books
+DISPLAY_WEIGHT = 0.5
 #: the fullness of `indoorgen generate` without a preset's range: the middle of the default
 DEFAULT_FULLNESS = 1.0
 
@@ -44,6 +51,8 @@ class Load:
     excluded: tuple[Tag, ...] = ()
     #: the cap never goes below this (a room program asking for at least so many)
     least: int = 1
+    #: kept up high on shelving, leaving the shelves within reach to everyday things
+    on_display: bool = False
 
     def things(self) -> ObjSet:
         """Every object of this kind, wherever it is."""
@@ -51,10 +60,14 @@ class Load:
 
 
 
+#: small decor (vases, candles, table clocks, little plants); book stacks count as books and
+#: balloons belong to parties
+DECOR, NOT_DECOR = (S.Decor, S.SmallObject), (S.Book, S.Balloon)
+
+
 def decor(most: int) -> Load:
-    """Small decor on top (vases, candles, table clocks, little plants; book stacks count as
-    books and balloons belong to parties), `most` per piece of furniture."""
-    return Load("decor", (S.Decor, S.SmallObject), on_top, most, (S.Book, S.Balloon))
+    """Small decor on top, `most` per piece of furniture."""
+    return Load("decor", DECOR, on_top, most, NOT_DECOR)
 
 
 #: what each kind of furniture holds (the kinds: `holders`)
@@ -62,9 +75,9 @@ HOLDS: dict[str, tuple[Load, ...]] = {
     "shelving": (
         # the living room and the office ask for 8 and 6 books per bookcase at least
         Load("books", (S.Book,), on_top, 14, least=8),
-        decor(6),
-        Load("baskets", (S.Basket,), on_top, 2),
-        Load("boxes", (S.Box,), on_top, 2),
+        Load("decor", DECOR, on_top, 5, NOT_DECOR, on_display=True),
+        Load("baskets", (S.Basket,), on_top, 2, on_display=True),
+        Load("boxes", (S.Box,), on_top, 2, on_display=True),
     ),
     "base cabinets": (
         Load("plates", (S.Plate,), inside, 8),
@@ -163,7 +176,7 @@ def cap(load: Load, fullness: float) -> int:
 def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
     """What the room's furniture holds, `fullness` times the usual amount at most; everyday
     things within reach."""
-    constraints, put_away = {}, []
+    constraints, put_away, shown = {}, [], []
     kinds: dict[tuple[tuple[Tag, ...], tuple[Tag, ...]], ObjSet] = {}  # one set per kind of thing
     for kind, furniture in holders(room).items():
         for load in HOLDS[kind]:
@@ -172,9 +185,13 @@ def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
             constraints[f"{kind} hold {load.name}"] = furniture.all(
                 at_most(things, load.relation, most))
             put_away.append(things.related_to(furniture, load.relation))
+            if load.on_display:
+                shown.append(put_away[-1])
     constraints["everyday things within reach"] = everyday(room).all(
-        lambda o: height_of(o) <= REACH_HEIGHT)
-    return Problem(constraints, {"things put away": union(put_away).count().maximize(FILL_WEIGHT)})
+        lambda o: height_of(o) * OUT_OF_REACH <= REACH_HEIGHT * OUT_OF_REACH)
+    return Problem(constraints, {
+        "things put away": union(put_away).count().maximize(FILL_WEIGHT),
+        "decor on display up high": union(shown).mean(height_of).maximize(DISPLAY_WEIGHT)})
 
 
 def at_most(things: ObjSet, relation: Relation, most: int) -> Callable[[ObjSet], Constraint]:
