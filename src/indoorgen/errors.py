@@ -31,3 +31,7 @@ class OutputError(IndoorGenError):
 
 class ParameterError(ConfigError):
     """An asset parameter override with an unknown name or an out-of-range value."""
+
+
+class UnknownPresetError(ConfigError):
+    """A `--preset` name that is not one of the presets."""

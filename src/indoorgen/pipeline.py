@@ -23,7 +23,7 @@ from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.sets import scene as scene_set
-from indoorgen.errors import ConfigError, InvalidGeometryError
+from indoorgen.errors import ConfigError, InvalidGeometryError, UnknownPresetError
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
@@ -48,6 +48,40 @@ from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 
+
+@dataclass(frozen=True)
+class Preset:
+    """Time traded for density: annealing steps per stage and the range each scene's fullness
+    (how much its furniture holds, `programs.contents`) is drawn from."""
+
+    steps: dict[str, int]
+    fullness: tuple[float, float]
+
+
+#: the presets of `--preset`; "default" is what `indoorgen generate --seed N` gives
+PRESETS: dict[str, Preset] = {
+    "fast": Preset({"large": 250, "medium": 200, "small": 300}, (0.3, 0.7)),
+    "default": Preset({"large": 350, "medium": 300, "small": 700}, (0.6, 1.4)),
+    "dense": Preset({"large": 450, "medium": 400, "small": 1400}, (1.1, 1.6)),
+}
+
+
+def get_preset(name: str) -> Preset:
+    """The preset called `name`, or UnknownPresetError naming the valid ones."""
+    try:
+        return PRESETS[name]
+    except KeyError:
+        raise UnknownPresetError(f"unknown preset {name!r}; valid: "
+                                 + ", ".join(PRESETS)) from None
+
+
+def scene_fullness(seed: int, preset: Preset) -> float:
+    """How full this scene's furniture is: drawn once per scene from the seed's own stream
+    within the preset's range (some homes sparse, some cluttered)."""
+    lo, hi = preset.fullness
+    return round(float(stream(seed, "fullness").uniform(lo, hi)), 3)
+
+
 @dataclass
 class GenerateConfig:
     """What to generate. `program` overrides the room type's built-in constraint program."""
@@ -60,6 +94,7 @@ class GenerateConfig:
     steps: dict[str, int] | None = None
     check: bool = False
     program: Callable[..., Problem] | None = None
+    preset: str = "default"
 
     def to_json(self) -> dict:
         """The settings as recorded in scene.json (the program by name)."""
@@ -67,7 +102,7 @@ class GenerateConfig:
                 "size": list(self.size) if self.size else None,
                 "polygon": [list(p) for p in self.polygon] if self.polygon else None,
                 "height": self.height, "wall_thickness": self.wall_thickness,
-                "steps": self.steps,
+                "steps": self.steps, "preset": self.preset,
                 "program": getattr(self.program, "__name__", None)}
 
 
@@ -131,14 +166,18 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
              ) -> Generated:
     """Generate one furnished room from `seed`. Same seed + config + version => same scene."""
     cfg = config or GenerateConfig()
+    preset = get_preset(cfg.preset)
     t0 = time.perf_counter()
     room = _make_room(seed, cfg)
     geometry = {room.name: build_room(room)}
-    program = cfg.program or get_program(cfg.room_type)
+    fullness = scene_fullness(seed, preset)
+    program = cfg.program or get_program(cfg.room_type, fullness)
     problems = {room.name: _problem(program, room.name)}
     timings = {"architecture": time.perf_counter() - t0}
-    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
-                   check=cfg.check, progress=progress)
+    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
+                   steps={**preset.steps, **(cfg.steps or {})}, check=cfg.check,
+                   progress=progress)
+    gen.report["fullness"] = fullness
     _assess(gen)
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
     return gen
@@ -159,13 +198,15 @@ class HomeConfig:
     check: bool = False
     #: how the room doors stand: "open", "closed" or "random" (architecture.doors.DOOR_MODES)
     doors: str = "open"
+    preset: str = "default"
 
     def to_json(self) -> dict:
         """The settings as recorded in scene.json (a predefined floorplan as a flag)."""
         return {"home": True, "floors": self.floors, "doors": self.doors,
                 "rooms": self.rooms if isinstance(self.rooms, (str, type(None))) else dict(self.rooms),
                 "area": self.area, "contour": self.contour,
-                "predefined_floorplan": self.floorplan is not None, "steps": self.steps}
+                "predefined_floorplan": self.floorplan is not None, "steps": self.steps,
+                "preset": self.preset}
 
 
 def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: bool = False
@@ -174,6 +215,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     furnished by its program. Same seed + config + version => same scene."""
     cfg = config or HomeConfig()
     check_door_mode(cfg.doors)
+    preset = get_preset(cfg.preset)
     t0 = time.perf_counter()
     if cfg.floorplan is not None:
         plan = from_json(cfg.floorplan)
@@ -185,11 +227,14 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     # seeded: doors, windows and stairs from the catalogue, door leaves as cfg.doors says
     arch = solidify(plan, seed=seed, doors=cfg.doors)
     geometry = room_geometries(arch)
-    problems = {name: _problem(ROOM_PROGRAMS[g.room.room_type], name)
+    fullness = scene_fullness(seed, preset)
+    problems = {name: _problem(get_program(g.room.room_type, fullness), name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
     timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
-    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings, steps=cfg.steps,
-                   check=cfg.check, progress=progress)
+    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
+                   steps={**preset.steps, **(cfg.steps or {})}, check=cfg.check,
+                   progress=progress)
+    gen.report["fullness"] = fullness
     gen.scene.floorplan = floorplan_json(plan)
     gen.scene.doors = arch.door_states
     gen.architecture = arch

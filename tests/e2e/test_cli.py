@@ -105,6 +105,7 @@ def bad_generator(room):
     (["--program", "{prog}:bad_range"], "in_range(5, 2)"),
     (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),
     (["--out", "/proc/indoorgen_cannot_write_here"], "cannot write"),
+    (["--preset", "turbo"], "unknown preset 'turbo'; valid: fast, default, dense"),
 ])
 def test_bad_input_one_line_exit_2_no_output(tmp_path, args, words):
     prog = tmp_path / "prog.py"

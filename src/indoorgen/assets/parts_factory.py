@@ -14,10 +14,13 @@ from typing import Any, ClassVar
 import numpy as np
 
 from indoorgen.assets.protocol import Asset, AssetFactory, Joint, Param, Surface, box_surfaces
-from indoorgen.assets.shapes.collision import convex_pieces, free_space_above
+from indoorgen.assets.shapes.collision import clear_of, convex_pieces, free_space_above, hollowed
 from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, union_links
 from indoorgen.assets.shapes.primitives import Part
-from indoorgen.model.tags import Subpart
+from indoorgen.model.tags import Semantics, Subpart
+
+#: the objects things are put away in (their covered Interior surfaces get stowage boxes)
+STOWING = frozenset({Semantics.Storage, Semantics.Fridge})
 
 
 def default_value(p: Param) -> Any:
@@ -101,9 +104,12 @@ class PartsFactory(AssetFactory):
         cheap, offset, ext = self._layout(p)
         mesh, fs, slots = concat(cheap, self.slots)
         asset = self._asset(p, mesh, fs, slots, offset, ext)
+        # hollow the cheap body where things are put away (a cupboard's shelves)
+        rooms = self._stowage(p, float(ext[2] - offset[2]))
+        pieces = hollowed(cheap, rooms) if rooms else cheap
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
-                           for link, h in convex_pieces(cheap, max_pieces=24)]
+                           for link, h in convex_pieces(pieces, max_pieces=24 + 8 * len(rooms))]
         return asset
 
     def link_boxes(self, params: dict[str, Any]) -> dict[str, np.ndarray]:
@@ -123,6 +129,30 @@ class PartsFactory(AssetFactory):
                 [np.minimum(old[0], box[0]), np.maximum(old[1], box[1])])
         return out
 
+    def _stowage(self, p: dict[str, Any], top: float) -> list[list[float]]:
+        """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
+        `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
+        what the solver may fill, clear of every part of every link (a drawer's bin, a door's
+        racks), so placeholders and simulators leave it free. Only storage furniture and fridges
+        have any (nothing is put in an oven or a shower; a bowl's inside is open above)."""
+        if self.size_class == "small" or not self.tags & STOWING:
+            return []
+        inner = [s for s in self.extra_surfaces(p)
+                 if s.subpart == Subpart.Interior and s.normal[2] > 0.9]
+        if not inner:
+            return []
+        solids = [q.solid for q in self.parts(p, True) if not q.solid.is_empty()]
+        out = []
+        for s in inner:
+            xy = s.corners()[:, :2]
+            box = free_space_above(solids, (*xy.min(axis=0), *xy.max(axis=0)),
+                                   float(s.origin[2]), top)
+            if box is not None:  # from the surface itself: things stand on it 1 mm up
+                box = clear_of([box[0], box[1], float(s.origin[2]), *box[3:]], solids)
+            if box is not None:
+                out.append(box)
+        return out
+
     def create(self, params: dict[str, Any]) -> Asset:
         """The detailed asset: one watertight shell per link, UVs, joints and convex pieces."""
         p = self.resolve(params)
@@ -133,7 +163,8 @@ class PartsFactory(AssetFactory):
         asset.links, asset.face_links = links, face_links
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.corner_uv = box_uv(asset.mesh.vertices, asset.mesh.faces)
-        free = self._free_boxes(asset, parts, offset)
+        free = self._free_boxes(asset, parts, offset) + \
+            self._stowage(p, float(ext[2] - offset[2]))
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
                            for link, h in convex_pieces(parts, decompose=True, keep_free=free)]
         return asset

@@ -15,7 +15,15 @@ from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
 from indoorgen.model.room_types import ROOM_TYPES
 from indoorgen.outputs import check_writable
-from indoorgen.pipeline import GenerateConfig, HomeConfig, generate, generate_home, write_scene_dir
+from indoorgen.pipeline import (
+    PRESETS,
+    GenerateConfig,
+    HomeConfig,
+    generate,
+    generate_home,
+    get_preset,
+    write_scene_dir,
+)
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -39,6 +47,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="binary .usdc (default) or text .usda")
     g.add_argument("--formats", default="usd,urdf,mjcf",
                    help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
+    g.add_argument("--preset", default="default",
+                   help="time for density: " + ", ".join(PRESETS) + " (default: default)")
     g.add_argument("--check", action="store_true",
                    help="verify incremental constraint evaluation against full (slow)")
     g.add_argument("--nav-image", action="store_true",
@@ -73,6 +83,7 @@ def run_generate(args: argparse.Namespace) -> int:
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out)
     formats = parse_formats(args.formats)
+    get_preset(args.preset)  # a bad name fails here, before any work
     if args.seed < 0:
         raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
     progress = not args.quiet and sys.stderr.isatty()
@@ -124,7 +135,7 @@ def _room_config(args: argparse.Namespace) -> GenerateConfig:
     cfg = GenerateConfig(room_type=args.room or "living_room",
                          size=tuple(args.size) if args.size else None,
                          program=_load_program(args.program) if args.program else None,
-                         check=args.check)
+                         check=args.check, preset=args.preset)
     if args.polygon:
         try:
             cfg.polygon = [(float(x), float(y)) for x, y in json.loads(args.polygon)]
@@ -146,4 +157,5 @@ def _home_config(args: argparse.Namespace) -> HomeConfig:
                               f"({type(e).__name__}: {e})") from None
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
-                      floorplan=plan, check=args.check, doors=args.doors or "open")
+                      floorplan=plan, check=args.check, doors=args.doors or "open",
+                      preset=args.preset)

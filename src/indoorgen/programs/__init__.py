@@ -1,11 +1,13 @@
-"""Built-in constraint programs: one per room type (`rooms/`), the relations they name
-(`relations`) and the floorplan objective (`floorplan`). `get_program(room_type)` finds one."""
+"""Built-in constraint programs: one per room type (`rooms/`), what furniture holds in any room
+(`contents`), the relations they name (`relations`) and the floorplan objective (`floorplan`).
+`get_program(room_type)` gives a room type's program with the contents added."""
 from __future__ import annotations
 
 from collections.abc import Callable
 
 from indoorgen.constraints import ObjSet, Problem
 from indoorgen.errors import UnknownRoomTypeError
+from indoorgen.programs.contents import DEFAULT_FULLNESS, contents
 from indoorgen.programs.rooms.balcony import balcony
 from indoorgen.programs.rooms.bathroom import bathroom
 from indoorgen.programs.rooms.bedroom import bedroom
@@ -40,10 +42,17 @@ ROOM_PROGRAMS: dict[str, RoomProgram] = {
 }
 
 
-def get_program(room_type: str) -> RoomProgram:
-    """The program for `room_type`, or UnknownRoomTypeError listing the valid ones."""
+def get_program(room_type: str, fullness: float = DEFAULT_FULLNESS) -> RoomProgram:
+    """The program for `room_type` (its furniture, plus what the furniture holds at
+    `fullness`), or UnknownRoomTypeError listing the valid ones."""
     try:
-        return ROOM_PROGRAMS[room_type]
+        furnish = ROOM_PROGRAMS[room_type]
     except KeyError:
         raise UnknownRoomTypeError(f"unknown room type {room_type!r}; valid: "
                                    + ", ".join(sorted(ROOM_PROGRAMS))) from None
+
+    def program(room: ObjSet) -> Problem:
+        return furnish(room) + contents(room, fullness)
+    program.__name__ = furnish.__name__
+    program.__doc__ = furnish.__doc__
+    return program

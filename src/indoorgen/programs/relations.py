@@ -26,6 +26,8 @@ against_wall = StableAgainst(Subpart.Back, Subpart.Wall, margin=0.05)
 on_wall = StableAgainst(Subpart.Back, Subpart.Wall)
 #: resting on a tabletop, shelf or stand without tipping over
 on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
+#: put away inside: on a shelf or floor behind a cabinet's, wardrobe's or fridge's doors
+inside = SupportedBy(Subpart.Bottom, Subpart.Interior)
 #: a chair pulled up to a table: its front 4 cm under the table's edge (clear of legs inset
 #: from the edge and of stretchers between them)
 at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.04, overhang=False)

@@ -12,6 +12,7 @@ import numpy as np
 
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
+from indoorgen.programs.contents import EVERYDAY, REACH_HEIGHT
 from indoorgen.programs.rooms.kitchen import TRIANGLE_LEG
 from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, rule
 
@@ -31,11 +32,6 @@ HOOD_HEIGHT = (0.6, 0.9)
 #: 0.6-0.75 m (24-30 in) to its centre; towel bars at 1.0-1.2 m (40-48 in)
 ROLL_HOLDER_HEIGHT = (0.6, 0.75)
 TOWEL_BAR_HEIGHT = (1.0, 1.2)
-#: everyday objects rest no higher than eye level (~1.6 m, 50th-percentile adult eye height,
-#: the top of the comfortable-reach zone in ergonomic storage guidance)
-REACH_HEIGHT = 1.6
-#: object classes used every day (the reach rule's subjects)
-EVERYDAY = (S.Laptop, S.Remote, S.Tableware, S.Book, S.Kitchenware, S.Food, S.Cup)
 #: light sources: anything tagged lighting (ceiling lights, pendants, lamps, sconces)
 LIGHTS = (S.Lighting, S.CeilingLight, S.PendantLight, S.FloorLamp, S.TableLamp, S.DeskLamp,
           S.WallSconce)

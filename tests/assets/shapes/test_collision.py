@@ -9,9 +9,12 @@ import pytest
 from indoorgen.assets.shapes.collision import (
     SWALLOW_MARGIN,
     SWALLOW_VOLUME,
+    box_minus,
     carve_around,
+    clear_of,
     convex_pieces,
     free_space_above,
+    hollowed,
 )
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder
 
@@ -85,3 +88,47 @@ def test_free_space_above_a_covered_shelf_only():
     box = free_space_above([board], (-0.2, -0.3, 0.2, 0.3), 0.3, 1.0)
     assert box is not None and box[2] == pytest.approx(0.301) and box[5] == pytest.approx(0.599)
     assert free_space_above([board], (-0.2, -0.3, 0.2, 0.3), 0.61, 1.0) is None  # open above
+
+
+def _vol(b) -> float:
+    return float(np.prod(np.asarray(b[3:]) - np.asarray(b[:3])))
+
+
+def test_box_minus_leaves_the_boards_around_the_compartments():
+    """A cupboard's block less two compartments (one behind the other's shelf, one reaching out
+    of the block's front): the pieces fill exactly the rest and none enters a compartment."""
+    block = [-0.3, -0.4, 0.0, 0.3, 0.4, 0.9]
+    holes = [[-0.28, -0.38, 0.02, 0.3, 0.38, 0.44], [-0.28, -0.38, 0.46, 0.35, 0.38, 0.88]]
+    pieces = box_minus(block, holes)
+    inside = sum(_vol([*np.maximum(block[:3], h[:3]), *np.minimum(block[3:], h[3:])]) for h in holes)
+    assert sum(map(_vol, pieces)) == pytest.approx(_vol(block) - inside)
+    for b in pieces:
+        for h in holes:
+            overlap = np.minimum(b[3:], h[3:]) - np.maximum(b[:3], h[:3])
+            assert np.any(overlap <= 1e-9)
+    assert box_minus(block, [[1, 1, 1, 2, 2, 2]]) == [block]
+
+
+def test_hollowed_cuts_only_box_parts_of_the_body():
+    block = Part(box_between((-0.3, -0.4, 0.0), (0.3, 0.4, 0.9)), "wood")
+    door = Part(box_between((0.3, -0.4, 0.0), (0.32, 0.4, 0.9)), "wood", "door")
+    knob = Part(cylinder(0.05, 0.1).translate((0.0, 0.0, 0.3)), "metal")
+    hole = [-0.28, -0.38, 0.02, 0.28, 0.38, 0.88]
+    out = hollowed([block, door, knob], [hole])
+    assert door in out and knob in out
+    body = [q for q in out if q.link == "base" and q is not knob]
+    assert len(body) == 6  # floor, top, back, front rim, two sides
+    assert sum(q.solid.volume() for q in body) == pytest.approx(
+        block.solid.volume() - _vol(hole), rel=1e-6)
+
+
+def test_clear_of_keeps_stowage_out_of_drawers_and_door_racks():
+    """A compartment with a rack on its door reaching 8 cm in: the box gives up its front 8 cm;
+    one filled by a drawer's bin holds nothing."""
+    box = [-0.25, -0.3, 0.1, 0.25, 0.3, 0.5]
+    rack = box_between((0.17, -0.28, 0.2), (0.3, 0.28, 0.3))
+    assert clear_of(box, [rack]) == pytest.approx([-0.25, -0.3, 0.1, 0.17, 0.3, 0.5])
+    bin_ = box_between((-0.24, -0.29, 0.101), (0.26, 0.29, 0.45))
+    assert clear_of(box, [bin_]) is None
+    shelf_below = box_between((-0.25, -0.3, 0.08), (0.25, 0.3, 0.1))
+    assert clear_of(box, [shelf_below]) == box

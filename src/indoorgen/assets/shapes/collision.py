@@ -116,6 +116,9 @@ def free_space_above(solids: Sequence[m3d.Manifold], rect: Sequence[float], z: f
     column = box_between((cx - 1e-3, cy - 1e-3, z + 1e-3), (cx + 1e-3, cy + 1e-3, top + 1.0))
     ceiling = top
     for solid in solids:
+        bb = solid.bounding_box()
+        if not (bb[0] <= cx <= bb[3] and bb[1] <= cy <= bb[4]) or bb[5] <= z:
+            continue  # (a cheap test first: the boolean below is what costs)
         hit = solid ^ column
         if not hit.is_empty():
             ceiling = min(ceiling, float(hit.bounding_box()[2]))
@@ -213,3 +216,85 @@ def _group_by_position(points: np.ndarray, k: int) -> list[list[int]]:
         half = len(order) // 2
         groups[i:i + 1] = [order[:half], order[half:]]
     return groups
+
+
+def box_minus(box: Sequence[float] | np.ndarray, holes: Sequence[Sequence[float]]
+              ) -> list[list[float]]:
+    """The axis-aligned box (x0, y0, z0, x1, y1, z1) with the `holes` (boxes alike) taken out, as
+    a few boxes: each hole splits what it meets into the slabs below and above it, then beside
+    it along y, then before and behind it along x (a cupboard's cheap block becomes its boards
+    around the compartments, with no boolean or hull)."""
+    pieces = [np.asarray(box, float)]
+    for hole in holes:
+        h = np.asarray(hole, float)
+        out = []
+        for b in pieces:
+            lo, hi = np.maximum(b[:3], h[:3]), np.minimum(b[3:], h[3:])
+            if np.any(hi - lo <= 1e-9):
+                out.append(b)
+                continue
+            rest = b.copy()
+            for axis in (2, 1, 0):
+                if rest[axis] < lo[axis]:
+                    below = rest.copy()
+                    below[axis + 3] = lo[axis]
+                    out.append(below)
+                if hi[axis] < rest[axis + 3]:
+                    above = rest.copy()
+                    above[axis] = hi[axis]
+                    out.append(above)
+                rest[axis], rest[axis + 3] = lo[axis], hi[axis]
+        pieces = out
+    return [b.tolist() for b in pieces if np.all(b[3:] - b[:3] > 1e-9)]
+
+
+def hollowed(parts: Sequence[Part], holes: Sequence[Sequence[float]]) -> list[Part]:
+    """`parts` with the `holes` (boxes) taken out of the base link's box-shaped parts (a
+    placeholder's blocks; other shapes are left whole): what the solver fills stays free."""
+    out: list[Part] = []
+    for part in parts:
+        bb = np.asarray(part.solid.bounding_box(), float)
+        is_box = part.solid.volume() >= 0.999 * float(np.prod(bb[3:] - bb[:3]))
+        if part.link != "base" or not is_box:
+            out.append(part)
+            continue
+        out.extend(Part(box_between(b[:3], b[3:]), part.slot, part.link) for b in box_minus(bb, holes))
+    return out
+
+
+#: a stowage box lower or narrower than this (m) holds nothing worth placing
+MIN_STOWAGE = 0.03
+#: things put away stand this far above their surface (the solver's contact gap,
+#: constraints.relations.CONTACT_GAP, which assets sit below and cannot import)
+STAND_GAP = 0.001
+
+
+def clear_of(box: Sequence[float], solids: Sequence[m3d.Manifold]) -> list[float] | None:
+    """`box` (x0, y0, z0, x1, y1, z1) cut back until none of `solids` enters it: each solid
+    that does (a freezer drawer's bin, a door's bottle rack) is kept out by lowering the box's
+    top or moving one of its sides, whichever keeps the most of it. None when less than
+    MIN_STOWAGE is left in some direction."""
+    b = np.asarray(box, float)
+    for solid in solids:
+        bb = np.asarray(solid.bounding_box(), float)
+        if np.any(np.minimum(b[3:], bb[3:]) - np.maximum(b[:3], bb[:3]) <= 1e-6):
+            continue
+        hit = solid ^ box_between(b[:3], b[3:])
+        if hit.is_empty() or hit.volume() <= 1e-9:
+            continue
+        h = np.asarray(hit.bounding_box(), float)
+        if h[5] <= b[2] + STAND_GAP:
+            continue  # flush with the floor (a drain cover): what stands there clears it
+        options = []
+        for axis in range(3):
+            lower = b.copy()
+            lower[axis + 3] = h[axis]
+            options.append(lower)
+            if axis < 2:  # (the bottom stays on its shelf)
+                upper = b.copy()
+                upper[axis] = h[axis + 3]
+                options.append(upper)
+        b = max(options, key=lambda o: float(np.prod(np.clip(o[3:] - o[:3], 0.0, None))))
+        if np.any(b[3:] - b[:3] < MIN_STOWAGE):
+            return None
+    return b.tolist()

@@ -1,0 +1,85 @@
+"""What furniture holds (`programs.contents`): caps per piece of furniture that grow with the
+scene's fullness and never undercut a room program's minimum, every room's program carrying
+them, and a generated kitchen that puts things away inside its cabinets: wholly inside, touching
+nothing, within reach."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from indoorgen import GenerateConfig, generate
+from indoorgen.constraints import scene
+from indoorgen.constraints.bounds import find_bounds
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs import ROOM_PROGRAMS, get_program
+from indoorgen.programs.contents import EVERYDAY, HOLDS, REACH_HEIGHT, cap, contents
+from indoorgen.programs.relations import inside, on_floor
+from indoorgen.validate import validate_scene
+from support.fakeview import FakeView
+
+
+def _bedroom_with_a_wardrobe():
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
+    view.add("wardrobe_0", {S.Object, S.Furniture, S.Storage, S.Wardrobe},
+             center=(1, 1, 1), extents=(0.6, 1.6, 2.0), relations=[(on_floor, "r")])
+    return view, scene()[S.Room].named("r")
+
+
+@pytest.mark.parametrize("fullness", [0.3, 1.0, 1.6])
+def test_a_wardrobe_holds_clothes_up_to_its_cap(fullness):
+    view, room = _bedroom_with_a_wardrobe()
+    ev = Evaluator(contents(room, fullness), view)
+    assert ev.evaluate().violation == 0  # no lower bounds: an empty wardrobe is allowed
+    bounds = {b.name: b for b in find_bounds(contents(room, fullness), ev)}
+    clothes = bounds["wardrobes hold folded clothes"]
+    load = next(ld for ld in HOLDS["wardrobes"] if ld.name == "folded clothes")
+    assert clothes.hi == cap(load, fullness) and clothes.can_add
+    assert clothes.parents == ((inside, ("wardrobe_0",)),)
+
+
+def test_caps_grow_with_fullness_and_keep_room_minimums():
+    for loads in HOLDS.values():
+        for load in loads:
+            caps = [cap(load, f) for f in (0.2, 0.6, 1.0, 1.4, 2.0)]
+            assert caps == sorted(caps) and caps[0] >= load.least >= 1
+    books = next(ld for ld in HOLDS["shelving"] if ld.name == "books")
+    assert cap(books, 0.1) >= 8  # the living room asks for 8 books per bookcase at least
+
+
+@pytest.mark.parametrize("room_type", sorted(ROOM_PROGRAMS))
+def test_every_room_program_carries_the_contents(room_type):
+    room = scene()[S.Room].named(f"{room_type}_0")
+    problem = get_program(room_type, 0.8)(room)
+    extra = contents(room, 0.8)
+    assert set(extra.constraints) <= set(problem.constraints)
+    assert set(extra.score_terms) <= set(problem.score_terms)
+    assert get_program(room_type).__name__ == ROOM_PROGRAMS[room_type].__name__
+
+
+def _world_box(gen, name):
+    o = gen.scene.objects[name]
+    v = gen.cache.full(o.generator, o.params).mesh.vertices @ yaw_matrix(o.pose.yaw).T
+    v = v + np.asarray(o.pose.position)
+    return v.min(axis=0), v.max(axis=0)
+
+
+@pytest.mark.slow
+def test_a_kitchen_puts_things_away_wholly_inside_touching_nothing():
+    gen = generate(0, GenerateConfig(room_type="kitchen"))
+    put_away = [o for o in gen.scene.objects.values()
+                if any(r.relation == repr(inside) for r in o.relations)]
+    assert len(put_away) >= 3
+    for o in put_away:
+        lo, hi = _world_box(gen, o.name)
+        plo, phi = _world_box(gen, o.relations[0].parent)
+        assert np.all(lo >= plo - 1e-3) and np.all(hi <= phi + 1e-3), o.name
+    report = validate_scene(gen.scene)
+    assert not report["interpenetrating"] and not report["unsupported"]
+    assert gen.report["quality"]["measures"]["collision_rate"] == 0.0
+    for o in gen.scene.objects.values():
+        if S.SmallObject.value in o.tags and any(t.value in o.tags for t in EVERYDAY):
+            floor = gen.scene.rooms[o.room].elevation
+            assert o.pose.position[2] - floor <= REACH_HEIGHT, o.name
