@@ -211,7 +211,9 @@ class _RoomCache:
         assert ob.boxes is not None  # the state sets them when the object is added
         rotation = yaw_matrix(ob.yaw)[:2, :2]
         position = np.asarray(ob.position[:2], float)
-        boxes = band_boxes(ob.boxes, float(ob.position[2]) - floor_z)
+        # its solid pieces only: the space it keeps free (a door's sweep, a clear front) is
+        # where an agent stands to use it
+        boxes = band_boxes(ob.boxes[:ob.n_solid], float(ob.position[2]) - floor_z)
         patches = self.fixed.grid.near_boxes(boxes, rotation, position, self.margin)
         front = None
         if ob.stage in FRONT_STAGES:

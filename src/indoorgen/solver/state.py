@@ -86,8 +86,11 @@ class ObjState:
     #: the loop variables bound when it was added (to re-evaluate the context's parent sets)
     env: dict = field(default_factory=dict)
     cobjs: list[fcl.CollisionObject] = field(default_factory=list)
-    #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`
+    #: local bounding boxes (k, 2, 3) of the collision pieces behind `cobjs`: the solid pieces
+    #: first, then the keep-free ones
     boxes: np.ndarray | None = None
+    #: how many of `boxes` are solid (what stands in the way of a walking agent)
+    n_solid: int = 0
     #: are its keep-free pieces still to be built (`State.collides` builds them)?
     free_pending: bool = False
 
@@ -312,8 +315,8 @@ class State:
         free, free_boxes, free_kinds = got if got is not None else \
             ([], np.zeros((0, 2, 3)), np.zeros(0, int))
         ob.cobjs = [fcl.CollisionObject(shape, tf) for shape in [*solid, *free]]
-        ob.boxes = np.concatenate([self.cache.placeholder_boxes(ob.generator, ob.params),
-                                   free_boxes])
+        solid_boxes = self.cache.placeholder_boxes(ob.generator, ob.params)
+        ob.boxes, ob.n_solid = np.concatenate([solid_boxes, free_boxes]), len(solid_boxes)
         kinds = np.concatenate([np.full(len(solid), PIECE_SOLID), free_kinds])
         self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob), kinds, yields(ob.tags))
 
