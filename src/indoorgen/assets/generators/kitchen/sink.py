@@ -14,6 +14,7 @@ from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.primitives import Part, box_between, cylinder, lathe, rod, torus
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon
+from indoorgen.model.polygons import largest_polygon
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
@@ -201,6 +202,9 @@ class KitchenSink(PartsFactory):
         _, (flo, fhi) = self._faucet(p, L, False)
         top = top.difference(sg.box(flo[0] - 0.005, flo[1] - 0.005, fhi[0] + 0.005, fhi[1] + 0.005))
         kd = TOE_KICK_DEPTH
+        # a basin nearly as wide as the unit cuts the counter in two: things stand on the
+        # larger strip (the one behind, with the faucet, or before it)
+        top = largest_polygon(top)
         return [support_polygon("top", (0, 0, L["zt"]), top),
                 bottom_rect((-kd / 2, 0, 0), (D - kd) / 2, W / 2 - 0.01),
                 Surface.rect("back", Subpart.Back, (-D / 2, 0, H / 2), (-1, 0, 0), (0, 1, 0), W / 2, H / 2),
