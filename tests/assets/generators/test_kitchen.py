@@ -198,3 +198,13 @@ def test_sink_doors_open(seed):
         moved = trimesh.transform_points(leaf.vertices, j.transform(j.upper))
         assert moved[:, 0].max() > front + 0.2
         assert abs(np.ptp(moved[:, 2]) - np.ptp(leaf.vertices[:, 2])) < TOL
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_sink_counter_is_one_piece_however_wide_the_basin(seed):
+    """A basin nearly as wide as the unit leaves the counter one surface (the larger strip),
+    never a MultiPolygon the solver cannot take corners of (a home once crashed on one)."""
+    _, _, a = make("kitchen_sink", seed, bowl_width_frac=1.0)
+    top = a.surface("top")
+    assert isinstance(top.polygon, sg.Polygon) and top.polygon.area > 0
+    assert top.corners().shape[1] == 3
