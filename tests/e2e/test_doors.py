@@ -129,6 +129,7 @@ def _check_rays(d: Path, blocked: bool) -> None:
         assert hits == (list(RAY_HEIGHTS) if blocked else []), (name, hits)
 
 
+@pytest.mark.slow  # the home takes ~25-60 s to furnish and export
 def test_home_doors_are_jointed_in_every_format(home1):
     gen, d = home1
     _check_joints(gen, d)
@@ -136,6 +137,7 @@ def test_home_doors_are_jointed_in_every_format(home1):
     assert all(v == pytest.approx(math.pi / 2) for v in gen.scene.doors.values())
 
 
+@pytest.mark.slow
 def test_open_doors_leave_every_opening_clear(home1):
     _, d = home1
     _check_rays(d, blocked=False)
