@@ -12,7 +12,8 @@ components: the centres an agent can reach from one another. The *targets* are
   deep (the navigation measure's test of a door);
 - each stair landing (a keep-out zone that belongs to no door);
 - each large object whose front matters (`model.walkable.access_points`): its front point, or
-  for a bed either side point, within `FRONT_TOLERANCE`.
+  for a bed either side point, within `FRONT_TOLERANCE`; or beside a seat standing on the floor
+  that is related to it (the chair at a desk stands where its user would).
 
 The violation is the number of targets outside the component that serves the most of them
 (weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
@@ -197,6 +198,7 @@ class _RoomCache:
     def __init__(self, fixed: RoomFloor, radius: float, cell: float):
         self.fixed, self.radius, self.margin = fixed, radius, clearance(radius, cell)
         self.patches: dict[str, tuple[tuple[Any, ...], list[Patch], Target | None]] = {}
+        self.reach: dict[str, tuple[tuple[Any, ...], list[Patch]]] = {}
         self.last: tuple[tuple[Any, ...], Walkway] | None = None
         self.evaluations = 0
 
@@ -227,6 +229,22 @@ class _RoomCache:
         return patches, front
 
 
+    def beside(self, ob: ObjState, floor_z: float) -> list[Patch]:
+        """The cells within `FRONT_TOLERANCE` of the centres `ob` keeps the agent from: where
+        an agent stands to reach it (cached by pose)."""
+        key = _pose_key(ob)
+        got = self.reach.get(ob.name)
+        if got is not None and got[0] == key:
+            return got[1]
+        assert ob.boxes is not None  # the state sets them when the object is added
+        boxes = band_boxes(ob.boxes, float(ob.position[2]) - floor_z)
+        patches = self.fixed.grid.near_boxes(boxes, yaw_matrix(ob.yaw)[:2, :2],
+                                             np.asarray(ob.position[:2], float),
+                                             self.margin + FRONT_TOLERANCE)
+        self.reach[ob.name] = (key, patches)
+        return patches
+
+
 def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float = CELL,
             cache: _RoomCache | None = None) -> Walkway:
     """The circulation of `room` in the state's current arrangement (`cache`: what an earlier
@@ -241,11 +259,15 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
     floor_z = float(getattr(state.rooms[room], "elevation", 0.0))
     blocked = np.zeros(fixed.grid.shape, bool)
     targets = list(fixed.targets)
+    here = set(names)
     for n in names:
         patches, front = cache.object_patches(state.objects[n], floor_z)
         paint(blocked, patches)
         if front is not None:
-            targets.append(front)
+            # a chair pulled up to a desk stands where its user does: reaching it will do
+            seats = sorted(c for c in state.children(n) if c in here)
+            targets.append(Target(front.name, front.patches + [
+                p for c in seats for p in cache.beside(state.objects[c], floor_z)]))
     labels = ndimage.label(fixed.centres & ~blocked)[0]
     count, missed = _best(targets, labels)
     result = Walkway(count, missed, list(fixed.unservable))
