@@ -25,10 +25,10 @@ from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
 REACH_HEIGHT = 1.6
 #: object classes used every day (the reach rule's subjects), which must rest within reach
 EVERYDAY = (S.Laptop, S.Remote, S.Tableware, S.Book, S.Kitchenware, S.Food, S.Cup)
-#: the violation per metre an everyday thing rests out of reach: 10 cm weigh as much as a
-#: missing object (a room program's minimum), so the solver leaves a shelf short rather than
-#: putting a book on top of the bookcase
-OUT_OF_REACH = 10.0
+#: the violation per metre an everyday thing rests out of reach: a millimetre weighs as much
+#: as a missing object (a room program's minimum), so the solver leaves a shelf short rather
+#: than putting a book on top of the bookcase
+OUT_OF_REACH = 1000.0
 #: the weight of one object put away in the loss (the room programs' own terms weigh 0.5-4)
 FILL_WEIGHT = 0.15
 #: the weight of the mean height (m) of what is on display on shelving: decor drifts up, so
