@@ -26,7 +26,9 @@ def test_schema_keys_are_exactly_the_contract():
     fp = generate_floorplan(2, FloorplanConfig(floors=2,
                                                anneal=FloorplanAnnealConfig(steps_per_storey=30)))
     d = json.loads(dumps(fp))
-    assert set(d) == {"storeys", "stairs", "entrance"}
+    assert set(d) == {"format_version", "storeys", "stairs", "entrance"}
+    assert d["format_version"] == 1
+    assert "format_version" not in to_json(fp)  # the plan scene.json embeds is unchanged
     assert set(d["entrance"]) == {"room", "center"}
     for s in d["storeys"]:
         assert set(s) == {"level", "elevation", "height", "rooms", "doors", "windows", "openings"}

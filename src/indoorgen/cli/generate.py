@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
-import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -13,6 +12,7 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
 from indoorgen.model.room_types import ROOM_TYPES
+from indoorgen.model.schemas import FloorplanFile, RoomPolygon, parse, read_json_file, read_json_text
 from indoorgen.outputs import check_writable
 from indoorgen.pipeline import GenerateConfig, HomeConfig, generate, generate_home, write_scene_dir
 
@@ -121,24 +121,17 @@ def _room_config(args: argparse.Namespace) -> GenerateConfig:
                          program=_load_program(args.program) if args.program else None,
                          check=args.check)
     if args.polygon:
-        try:
-            cfg.polygon = [(float(x), float(y)) for x, y in json.loads(args.polygon)]
-        except (ValueError, TypeError):
-            raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
-                              f"{args.polygon!r}") from None
+        data = read_json_text(args.polygon, "--polygon", "polygon")
+        room = parse(RoomPolygon, {"polygon": data}, "--polygon")
+        cfg.polygon = list(room.polygon)
     return cfg
 
 
 def _home_config(args: argparse.Namespace) -> HomeConfig:
     plan = None
     if args.floorplan:
-        try:
-            plan = json.loads(Path(args.floorplan).read_text())
-        except FileNotFoundError:
-            raise ConfigError(f"--floorplan {args.floorplan}: no such file") from None
-        except (ValueError, OSError) as e:
-            raise ConfigError(f"--floorplan {args.floorplan} is not a floorplan.json "
-                              f"({type(e).__name__}: {e})") from None
+        plan = read_json_file(args.floorplan, f"--floorplan file {args.floorplan!r}", "floorplan")
+        parse(FloorplanFile, plan, f"--floorplan file {args.floorplan!r}")
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
                       floorplan=plan, check=args.check)

@@ -2,37 +2,71 @@
 data, assets from their generators, written atomically."""
 from __future__ import annotations
 
-import json
+import math
 import time
 from pathlib import Path
 
-from indoorgen.errors import ConfigError
+from indoorgen.assets import factory_names, get_factory
+from indoorgen.constraints.relations import parse_relation
+from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export.bundle import bundle_from_scene
 from indoorgen.export.formats import parse_formats, write_formats
 from indoorgen.model.scene import Scene
+from indoorgen.model.schemas import SchemaError, read_json_file
 from indoorgen.outputs import atomic_dir, check_writable
+
+#: the largest relation margin (m) a scene may declare
+MAX_MARGIN = 10.0
 
 
 class SceneFileError(ConfigError):
     """A scene.json that is missing, unreadable or not a scene."""
 
 
-def read_scene(path: Path):
-    """The `Scene` stored in `path` (a scene.json or a directory holding one); SceneFileError
-    if it is missing or corrupt."""
+def read_scene(path: Path) -> tuple[Scene, Path]:
+    """The `Scene` stored in `path` (a scene.json or a directory holding one) and the file's
+    path; SceneFileError if it is missing, too big, not JSON, breaks `schemas.SceneFile`, or
+    names a generator, parameter or relation that does not exist."""
     path = Path(path)
     if path.is_dir():
         path = path / "scene.json"
     if not path.is_file():
         raise SceneFileError(f"scene file {str(path)!r} does not exist; give a scene.json "
                              "written by `indoorgen generate`")
+    what = f"scene file {str(path)!r}"
     try:
-        data = json.loads(path.read_text())
-        scene = Scene.from_json(data)
-    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as e:
-        raise SceneFileError(f"scene file {str(path)!r} is corrupt ({type(e).__name__}: {e}); "
-                             "expected the scene.json written by `indoorgen generate`") from None
+        scene = Scene.from_json(read_json_file(path, what, "scene"))
+    except SchemaError as e:
+        raise SceneFileError(str(e).replace("scene.json: ", f"{what}: ", 1)) from None
+    check_scene_names(scene, what)
     return scene, path
+
+
+def check_scene_names(scene: Scene, what: str = "scene.json") -> None:
+    """Raise SceneFileError unless every object's generator and parameters exist and every
+    relation is one the constraint language reads, with a finite margin in range."""
+    known = set(factory_names())
+    for o in scene.objects.values():
+        if o.generator not in known:
+            raise SceneFileError(f"{what}: object {o.name!r} names generator {o.generator!r}, "
+                                 "which does not exist; see `indoorgen assets list`")
+        try:
+            get_factory(o.generator).validate_params(o.params)
+        except IndoorGenError as e:
+            raise SceneFileError(f"{what}: object {o.name!r}: {e}") from None
+        for r in o.relations:
+            try:
+                rel = parse_relation(r.relation)
+            except (IndoorGenError, ValueError, IndexError):
+                raise SceneFileError(f"{what}: object {o.name!r} has relation {r.relation!r}, "
+                                     "which is not a relation; valid: StableAgainst(child, "
+                                     "parent, margin), SupportedBy(...), CoPlanar(...), "
+                                     "Touching(...)") from None
+            margin = getattr(rel, "margin", 0.0)
+            if not (math.isfinite(margin) and abs(margin) <= MAX_MARGIN):
+                raise SceneFileError(f"{what}: object {o.name!r} has relation {r.relation!r} "
+                                     f"with margin {margin}; valid: -{MAX_MARGIN:g} to "
+                                     f"{MAX_MARGIN:g} m")
 
 
 def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
@@ -42,12 +76,12 @@ def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
     plan.png / report.json too when they sit beside it. Returns the
     directory and the seconds per stage."""
     fmts = parse_formats(formats)
-    scene, src = read_scene(scene_path)
-    out = Path(out) if out else src.parent
-    check_writable(out, replacing=False)
     if texture_resolution < 0 or texture_resolution > 8192:
         raise ConfigError(f"--texture-resolution {texture_resolution} is invalid; valid: 0 "
                           "(no textures) or 16..8192")
+    scene, src = read_scene(scene_path)  # cheap: the file's checks come first
+    out = Path(out) if out else src.parent
+    check_writable(out, replacing=False)  # before any work
     timings: dict[str, float] = {}
     t = time.perf_counter()
     bundle = bundle_from_scene(scene)
