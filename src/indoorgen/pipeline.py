@@ -257,13 +257,15 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
 
 
 def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
-                    formats=None, nav_images: bool = False) -> Path:
+                    formats=None, nav_images: bool = False, overwrite: bool = False) -> Path:
     """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
     mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
     directory that is renamed into place when complete. `nav_images` adds a `nav_<storey>.png`
-    per storey: the free floor a robot reaches from the entrance, and what it cannot."""
+    per storey: the free floor a robot reaches from the entrance, and what it cannot.
+    `overwrite` lets it write beside the files of a non-empty directory indoorgen did not write
+    (`outputs.atomic_dir`)."""
     out = Path(out)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=overwrite) as tmp:
         t0 = time.perf_counter()
         (tmp / "scene.json").write_text(gen.scene.dumps())
         write_formats(bundle_from_generated(gen), tmp, formats, usd_ext=usd_ext)

@@ -16,8 +16,8 @@ from indoorgen.export.usd.architecture import write_architecture_usd
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
 from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.model.floorplan_io import read_floorplan, write_floorplan
-from indoorgen.model.schemas import HomeContour, RoomGraph, parse, read_json_file
-from indoorgen.outputs import atomic_dir, check_writable
+from indoorgen.model.schemas import MAX_HOME_AREA, HomeContour, RoomGraph, parse, read_json_file
+from indoorgen.outputs import OVERWRITE_HELP, atomic_dir, check_writable
 from indoorgen.render.floorplan import draw_floorplan
 
 
@@ -41,6 +41,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="a floorplan.json to solidify and draw instead of generating one")
     p.add_argument("--steps", type=int, default=None, help="annealing steps per storey")
     p.add_argument("--out", default=None, help="output directory (default ./floorplan_SEED)")
+    p.add_argument("--overwrite", action="store_true", help=OVERWRITE_HELP)
     p.add_argument("-q", "--quiet", action="store_true")
     p.set_defaults(func=run_floorplan)
 
@@ -74,10 +75,11 @@ def run_floorplan(args: argparse.Namespace) -> int:
         raise ConfigError(f"--floors {args.floors} is out of range; a home has 1 to 3 storeys")
     if args.steps is not None and args.steps < 0:
         raise ConfigError(f"--steps must be >= 0, got {args.steps}")
-    if args.area is not None and not args.area > 0:
-        raise ConfigError(f"--area must be a positive number of m^2, got {args.area}")
+    if args.area is not None and not 0 < args.area <= MAX_HOME_AREA:
+        raise ConfigError(f"--area {args.area:g} is out of range; a home's ground floor is "
+                          f"over 0 and at most {MAX_HOME_AREA:g} m^2")
     out = Path(args.out or f"floorplan_{args.seed}")
-    check_writable(out)
+    check_writable(out, overwrite=args.overwrite)
     cfg = FloorplanConfig(floors=args.floors, rooms=args.rooms, area=args.area,
                           contour=_read_contour(args.contour) if args.contour else None,
                           graph=_read_graph(args.graph) if args.graph else None)
@@ -91,7 +93,7 @@ def run_floorplan(args: argparse.Namespace) -> int:
         pitch = storey_pitch(cfg)
     walls = WallThickness(cfg.interior_wall, cfg.exterior_wall)
     arch = solidify(fp, walls, pitch, seed=args.seed)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         write_floorplan(fp, tmp / "floorplan.json")
         draw_floorplan(fp, tmp / "plan.png", walls,
                        title=f"floorplan  seed {args.seed}" if not args.plan else args.plan)

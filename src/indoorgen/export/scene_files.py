@@ -19,6 +19,17 @@ from indoorgen.outputs import atomic_dir, check_writable
 MAX_MARGIN = 10.0
 
 
+#: texture sizes (pixels) an export may ask for, besides 0 (no textures)
+MIN_TEXTURE, MAX_TEXTURE = 16, 8192
+
+
+def check_texture_resolution(value: int) -> None:
+    """Raise ConfigError unless `value` is 0 (no textures) or MIN_TEXTURE..MAX_TEXTURE."""
+    if value != 0 and not MIN_TEXTURE <= value <= MAX_TEXTURE:
+        raise ConfigError(f"--texture-resolution {value} is invalid; valid: 0 (no textures) or "
+                          f"{MIN_TEXTURE}..{MAX_TEXTURE}")
+
+
 class SceneFileError(ConfigError):
     """A scene.json that is missing, unreadable or not a scene."""
 
@@ -70,18 +81,17 @@ def check_scene_names(scene: Scene, what: str = "scene.json") -> None:
 
 
 def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
-                 usd_ext: str = "usdc", texture_resolution: int = 512) -> tuple[Path, dict]:
+                 usd_ext: str = "usdc", texture_resolution: int = 512,
+                 overwrite: bool = False) -> tuple[Path, dict]:
     """Re-export a saved scene into `out` (default: its own directory), atomically, beside
     what is already there (other formats, the user's files). scene.json is copied along, and
     plan.png / report.json too when they sit beside it. Returns the
     directory and the seconds per stage."""
     fmts = parse_formats(formats)
-    if texture_resolution < 0 or texture_resolution > 8192:
-        raise ConfigError(f"--texture-resolution {texture_resolution} is invalid; valid: 0 "
-                          "(no textures) or 16..8192")
+    check_texture_resolution(texture_resolution)
     scene, src = read_scene(scene_path)  # cheap: the file's checks come first
     out = Path(out) if out else src.parent
-    check_writable(out, replacing=False)  # before any work
+    check_writable(out, replacing=False, overwrite=overwrite)  # before any work
     timings: dict[str, float] = {}
     t = time.perf_counter()
     bundle = bundle_from_scene(scene)
@@ -92,7 +102,7 @@ def export_scene(scene_path: Path, out: Path | None, formats: str | None, *,
             if (src.parent / name).is_file():
                 keep[name] = (src.parent / name).read_bytes()
         keep["scene.json"] = src.read_bytes()
-    with atomic_dir(out, merge=True) as tmp:  # other formats already there stay
+    with atomic_dir(out, merge=True, overwrite=overwrite) as tmp:  # other formats already there stay
         for name, data in keep.items():
             (tmp / name).write_bytes(data)
         write_formats(bundle, tmp, fmts, usd_ext=usd_ext, texture_resolution=texture_resolution,

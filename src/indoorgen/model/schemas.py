@@ -59,6 +59,12 @@ MAX_SEED = 2**63 - 1
 #: file size caps (bytes) by file kind; a large two-storey home's scene.json is ~2 MB
 MAX_BYTES = {"scene": 64 << 20, "floorplan": 8 << 20, "polygon": 1 << 20, "contour": 1 << 20,
              "graph": 1 << 20}
+#: arrays (points, lists) a file of each kind may hold, counted before parsing: what the caps
+#: above allow with room to spare (a floorplan: 3 storeys of 200 rooms of 256 points...)
+_PLAN_ARRAYS = MAX_STOREYS * MAX_ROOMS * (MAX_VERTICES + 1) + 4 * MAX_STOREYS * MAX_LIST * 4
+MAX_ARRAYS = {"scene": _PLAN_ARRAYS + MAX_ROOMS * (MAX_VERTICES + 2) + MAX_OBJECTS * 8,
+              "floorplan": _PLAN_ARRAYS, "polygon": 2 * MAX_VERTICES, "contour": 2 * MAX_VERTICES,
+              "graph": MAX_STOREYS * MAX_ROOMS * 6}
 
 Coord = Annotated[float, Strict(), Field(ge=-MAX_COORD, le=MAX_COORD, allow_inf_nan=False)]
 Point = tuple[Coord, Coord]
@@ -392,22 +398,31 @@ _STRING = re.compile(r'"(?:[^"\\]|\\.)*"', re.S)
 def nesting_depth(text: str) -> int:
     """The deepest nesting of brackets in JSON `text` (brackets inside strings not counted), by
     a scan that never recurses."""
+    return _scan(text)[0]
+
+
+def _scan(text: str) -> tuple[int, int]:
+    """(deepest nesting of brackets, number of arrays) in JSON `text`, strings left out."""
     bare = np.frombuffer(_STRING.sub('""', text).encode("utf-8", "replace"), np.uint8)
-    step = (np.isin(bare, (ord("["), ord("{"))).astype(np.int32)
-            - np.isin(bare, (ord("]"), ord("}"))).astype(np.int32))
-    return int(np.cumsum(step).max(initial=0))
+    opens = bare == ord("[")
+    step = (opens | (bare == ord("{"))).astype(np.int32) \
+        - ((bare == ord("]")) | (bare == ord("}"))).astype(np.int32)
+    return int(np.cumsum(step).max(initial=0)), int(opens.sum())
 
 
 def read_json_text(text: str, what: str, kind: str) -> Any:
-    """Parse JSON `text` (the contents of `what`, a file of `kind`) with its size and nesting
-    capped first; SchemaError names the cap or the JSON error."""
+    """Parse JSON `text` (the contents of `what`, a file of `kind`) with its size, nesting and
+    number of arrays capped first; SchemaError names the cap or the JSON error."""
     cap = MAX_BYTES[kind]
     if len(text) > cap:
         raise SchemaError(f"{what} is {len(text)} bytes; a {kind} file holds at most {cap} bytes")
-    depth = nesting_depth(text)
+    depth, arrays = _scan(text)
     if depth > MAX_DEPTH:
         raise SchemaError(f"{what} nests brackets {depth} deep; a {kind} file nests at most "
                           f"{MAX_DEPTH} deep")
+    if arrays > MAX_ARRAYS[kind]:
+        raise SchemaError(f"{what} holds {arrays} arrays (points, lists); a {kind} file holds "
+                          f"at most {MAX_ARRAYS[kind]}")
     try:
         return json.loads(text)
     except (ValueError, RecursionError) as e:
