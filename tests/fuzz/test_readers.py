@@ -191,6 +191,7 @@ def test_hostile_payloads_are_refused_within_a_gigabyte(reader, payload):
     assert peak < GIB
 
 
+@pytest.mark.slow
 def test_a_huge_circle_of_a_floorplan_room_is_refused(tmp_path):
     """A valid 10^6-vertex room (the probe's 45 s and 1.8 GB) is refused from its size, before
     it is read; a 10^5-vertex one (under the size cap) by the vertex cap."""

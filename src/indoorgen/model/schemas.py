@@ -95,6 +95,14 @@ def _span(points: list[Point]) -> tuple[float, float]:
     return float(w), float(d)
 
 
+def _fits_a_home(points: list[Point], what: str) -> None:
+    """ValueError unless `points` (`what`: "room 'x'", "the contour") fit in a home's extent."""
+    w, d = _span(points)
+    if max(w, d) > MAX_HOME_SPAN:
+        raise ValueError(f"{what} spans {w:g} x {d:g} m; a home fits in {MAX_HOME_SPAN:g} x "
+                         f"{MAX_HOME_SPAN:g} m")
+
+
 # --------------------------------------------------------------------------------------------
 # floorplan.json
 
@@ -108,10 +116,7 @@ class FloorplanRoom(_Model):
 
     @model_validator(mode="after")
     def _size(self) -> FloorplanRoom:
-        w, d = _span(self.polygon)
-        if max(w, d) > MAX_HOME_SPAN:
-            raise ValueError(f"room {self.name!r} is {w:g} x {d:g} m; a room fits in "
-                             f"{MAX_HOME_SPAN:g} x {MAX_HOME_SPAN:g} m")
+        _fits_a_home(self.polygon, f"room {self.name!r}")
         return self
 
 
@@ -137,7 +142,9 @@ class FloorplanWindow(_Model):
 
 
 class FloorplanStorey(_Model):
-    """One storey: level, floor elevation, ceiling height, rooms and their openings."""
+    """One storey: level, floor elevation, ceiling height, rooms and their openings (the rooms
+    doors and windows name, levels and the entrance are checked by `floorplan_io.check_predefined`,
+    which generated plans go through too)."""
 
     level: Level
     elevation: Annotated[float, Strict(), Field(ge=-MAX_STOREY_HEIGHT, le=MAX_Z, allow_inf_nan=False)]
@@ -147,20 +154,6 @@ class FloorplanStorey(_Model):
     doors: Annotated[list[FloorplanDoor], Field(max_length=MAX_LIST)] = []
     windows: Annotated[list[FloorplanWindow], Field(max_length=MAX_LIST)] = []
     openings: Annotated[list[FloorplanDoor], Field(max_length=MAX_LIST)] = []
-
-    @model_validator(mode="after")
-    def _references(self) -> FloorplanStorey:
-        here = {r.name for r in self.rooms}
-        for d in [*self.doors, *self.openings]:
-            for r in d.rooms:
-                if r not in here:
-                    raise ValueError(f"{d.name!r} names room {r!r}, which is not on storey "
-                                     f"{self.level} (its rooms: {', '.join(sorted(here))})")
-        for w in self.windows:
-            if w.room not in here:
-                raise ValueError(f"window {w.name!r} names room {w.room!r}, which is not on "
-                                 f"storey {self.level}")
-        return self
 
 
 class FloorplanStair(_Model):
@@ -193,14 +186,7 @@ class FloorplanFile(_Model):
             else []
         if dup:
             raise ValueError(f"room name {dup[0]!r} is used twice")
-        pts = [p for s in self.storeys for r in s.rooms for p in r.polygon]
-        w, d = _span(pts)
-        if max(w, d) > MAX_HOME_SPAN:
-            raise ValueError(f"the home is {w:g} x {d:g} m; a home fits in {MAX_HOME_SPAN:g} x "
-                             f"{MAX_HOME_SPAN:g} m")
-        if self.entrance is not None and \
-                self.entrance.room not in {r.name for r in self.storeys[0].rooms}:
-            raise ValueError(f"entrance room {self.entrance.room!r} is not on the ground floor")
+        _fits_a_home([p for s in self.storeys for r in s.rooms for p in r.polygon], "the home")
         return self
 
 
@@ -265,10 +251,7 @@ class SceneRoom(_Model):
 
     @model_validator(mode="after")
     def _doors_on_walls(self) -> SceneRoom:
-        w, d = _span(self.polygon)
-        if max(w, d) > MAX_HOME_SPAN:
-            raise ValueError(f"room {self.name!r} is {w:g} x {d:g} m; a room fits in "
-                             f"{MAX_HOME_SPAN:g} x {MAX_HOME_SPAN:g} m")
+        _fits_a_home(self.polygon, f"room {self.name!r}")
         for door in self.doors:
             if door.wall >= len(self.polygon):
                 raise ValueError(f"door {door.name!r} is on wall {door.wall}; room "
@@ -341,10 +324,7 @@ class HomeContour(_Model):
 
     @model_validator(mode="after")
     def _size(self) -> HomeContour:
-        w, d = _span(self.contour)
-        if max(w, d) > MAX_HOME_SPAN:
-            raise ValueError(f"the contour spans {w:g} x {d:g} m; a home fits in "
-                             f"{MAX_HOME_SPAN:g} x {MAX_HOME_SPAN:g} m")
+        _fits_a_home(self.contour, "the contour")
         p = np.asarray(self.contour, float)
         area = 0.5 * abs(float(np.dot(p[:, 0], np.roll(p[:, 1], -1))
                                - np.dot(np.roll(p[:, 0], -1), p[:, 1])))
