@@ -11,6 +11,7 @@ import argparse
 import contextlib
 import json
 import math
+import re
 import tempfile
 import tracemalloc
 from collections.abc import Callable
@@ -19,18 +20,19 @@ from typing import Any
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from indoorgen.cli.floorplan import _read_contour, _read_graph
 from indoorgen.cli.generate import _room_config
 from indoorgen.errors import IndoorGenError
-from indoorgen.export.scene_files import read_scene
+from indoorgen.export.scene_files import export_scene, read_scene
 from indoorgen.floorplan.contour import user_contour
 from indoorgen.floorplan.graph import graph_from_spec
 from indoorgen.floorplan.rooms import parse_room_counts
 from indoorgen.model.floorplan_io import read_floorplan
 from indoorgen.model.polygons import validate_polygon
+from indoorgen.validate import validate_scene_dir
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 FLOORPLAN = json.loads((DATA / "apartment.json").read_text())
@@ -203,3 +205,44 @@ def test_a_huge_circle_of_a_floorplan_room_is_refused(tmp_path):
         (tmp_path / "f.json").write_text(json.dumps(doc))
         with pytest.raises(IndoorGenError, match="bytes; a floorplan file|at most 256 items"):
             read_floorplan(tmp_path / "f.json")
+
+
+#: numbers the schema lets through, placed where the real file has numbers
+IN_RANGE = st.one_of(st.floats(-999, 999, allow_nan=False), st.sampled_from([0.0, -0.0, 1e-9, 999.0]))
+
+
+def _numbers_moved(doc: Any, data: st.DataObject) -> Any:
+    """`doc` with a few object positions, yaws and parameters set to other in-range numbers."""
+    doc = json.loads(json.dumps(doc))
+    for _ in range(data.draw(st.integers(1, 3))):
+        o = data.draw(st.sampled_from(doc["objects"]))
+        where = data.draw(st.sampled_from(["x", "yaw", "param"]))
+        if where == "x":
+            o["pose"]["position"][data.draw(st.integers(0, 1))] = data.draw(IN_RANGE)
+        elif where == "yaw":
+            o["pose"]["yaw"] = data.draw(st.floats(-12, 12, allow_nan=False))
+        elif o["params"]:
+            k = data.draw(st.sampled_from(sorted(o["params"])))
+            if isinstance(o["params"][k], float):
+                o["params"][k] = data.draw(IN_RANGE)
+    return doc
+
+
+@pytest.mark.slow
+@settings(max_examples=6, deadline=None)
+@given(data=st.data())
+def test_validate_and_export_of_schema_valid_scenes(data):
+    """Past the reader: a scene whose numbers are in range but moved exports (no NaN reaches
+    MJCF) and validates, or fails with an IndoorGenError."""
+    doc = _numbers_moved(SCENE, data)
+    with tempfile.TemporaryDirectory() as d:
+        src = Path(d) / "src"
+        src.mkdir()
+        (src / "scene.json").write_text(_text(doc))
+        try:
+            out, _ = export_scene(src, Path(d) / "out", "mjcf", texture_resolution=0)
+            xml = (out / "scene.xml").read_text()
+            assert not re.search(r"(?<![\w.])[+-]?(nan|inf)(?![\w.])", xml, re.I)
+            validate_scene_dir(src)
+        except IndoorGenError as e:
+            assert "\n" not in str(e)

@@ -108,6 +108,7 @@ def _scene(mutate):
     (lambda d: d["rooms"][0].update(type="ballroom"), "'ballroom', which is unknown"),
     (lambda d: d["rooms"][0]["polygon"][1].__setitem__(0, 1e308), "less than or equal to 1000"),
     (lambda d: d["rooms"][0]["doors"][0].update(wall=9), "walls 0 to 3"),
+    (lambda d: d["rooms"][0].update(polygon=[[0, 0], [4, 3], [4, 0], [0, 3]]), "not a simple polygon"),
     (lambda d: d.update(format_version=2), "format_version"),
     (lambda d: d.pop("rooms"), "has no 'rooms'"),
     (lambda d: d["objects"][0].update(colour="red"), "Extra inputs"),

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal, TypeVar
 
 import numpy as np
+import shapely
 from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, model_validator
 
 from indoorgen.errors import ConfigError
@@ -252,6 +253,10 @@ class SceneRoom(_Model):
     @model_validator(mode="after")
     def _doors_on_walls(self) -> SceneRoom:
         _fits_a_home(self.polygon, f"room {self.name!r}")
+        outline = shapely.Polygon(self.polygon)
+        if not outline.is_valid or outline.area <= 0:
+            raise ValueError(f"room {self.name!r} is not a simple polygon "
+                             f"({shapely.is_valid_reason(outline)}); list its corners in order")
         for door in self.doors:
             if door.wall >= len(self.polygon):
                 raise ValueError(f"door {door.name!r} is on wall {door.wall}; room "
