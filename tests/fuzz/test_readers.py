@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import copy
 import json
 import math
 import re
@@ -59,6 +60,12 @@ HOSTILE = st.one_of(
 )
 
 
+def _hostile(data: st.DataObject) -> Any:
+    """A fresh hostile value (a copy: one drawn list or dict must not turn up twice in a file,
+    which would make it circular)."""
+    return copy.deepcopy(data.draw(HOSTILE))
+
+
 def _paths(doc: Any, prefix: tuple = ()) -> list[tuple]:
     """Every path (keys and indices) into `doc`, the root included."""
     out = [prefix]
@@ -79,21 +86,21 @@ def _mutated(doc: Any, data: st.DataObject, n_max: int = 3) -> Any:
         paths = _paths(doc)
         path = data.draw(st.sampled_from(paths[1:] if len(paths) > 1 else paths))
         if not path:
-            return data.draw(HOSTILE)
+            return _hostile(data)
         parent = doc
         for k in path[:-1]:
             parent = parent[k]
         key = path[-1]
         kind = data.draw(st.sampled_from(["replace", "remove", "duplicate", "add"]))
         if kind == "replace":
-            parent[key] = data.draw(HOSTILE)
+            parent[key] = _hostile(data)
         elif kind == "remove":
             del parent[key]
         elif kind == "duplicate" and isinstance(parent, list):
             parent.insert(key, json.loads(json.dumps(parent[key])))
         elif isinstance(parent, dict):
             parent[data.draw(st.sampled_from(["colour", "name", "rooms", "polygon"]))] = \
-                data.draw(HOSTILE)
+                _hostile(data)
     return doc
 
 
