@@ -7,7 +7,14 @@ from pathlib import Path
 import pytest
 
 from indoorgen.errors import OutputError
-from indoorgen.outputs import RECORD, atomic_dir, clean_stale, written_by_indoorgen
+from indoorgen.outputs import (
+    RECORD,
+    atomic_dir,
+    check_writable,
+    clean_stale,
+    output_lock,
+    written_by_indoorgen,
+)
 
 
 def _write(out, files, **kw):
@@ -61,7 +68,7 @@ def test_a_clash_found_at_the_end_changes_nothing(tmp_path):
     out.mkdir()
     (out / "scene.usdc").write_text("the user's")
     with pytest.raises(OutputError, match="scene.usdc"):
-        _write(out, {"scene.usdc": "ours", "scene.json": "{}"})
+        _write(out, {"scene.usdc": "ours", "scene.json": "{}"}, overwrite=True)
     assert [p.name for p in out.iterdir()] == ["scene.usdc"]
     assert (out / "scene.usdc").read_text() == "the user's"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mine"]
@@ -110,3 +117,45 @@ def test_the_current_directory_is_never_replaced(tmp_path, monkeypatch, name):
     with pytest.raises(OutputError, match="current directory"):
         _write(Path(name), {"scene.json": "{}"})
     assert os.listdir(tmp_path / "work") == []
+
+
+def test_a_non_empty_directory_not_indoorgens_needs_overwrite(tmp_path):
+    out = tmp_path / "photos"
+    out.mkdir()
+    (out / "cat.jpg").write_text("the user's")
+    with pytest.raises(OutputError, match="--overwrite"), atomic_dir(out) as _:
+        pytest.fail("the body must not run")
+    with pytest.raises(OutputError, match="--overwrite"):
+        check_writable(out, replacing=False)
+    _write(out, {"scene.json": "{}"}, overwrite=True)  # beside the user's file, never over it
+    assert (out / "cat.jpg").read_text() == "the user's"
+    assert written_by_indoorgen(out) == {"scene.json"}
+    _write(out, {"scene.json": "2"})  # now indoorgen's: rewritten without --overwrite
+    assert (out / "cat.jpg").read_text() == "the user's"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["photos"]
+
+
+def test_an_empty_directory_is_written_without_overwrite(tmp_path):
+    out = tmp_path / "empty"
+    out.mkdir()
+    _write(out, {"scene.json": "{}"})
+    assert written_by_indoorgen(out) == {"scene.json"}
+
+
+def test_the_lock_excludes_a_second_writer_and_goes_away(tmp_path):
+    out = tmp_path / "scene"
+    with output_lock(out):
+        assert (tmp_path / ".scene.lock").exists()
+        with pytest.raises(OutputError, match="another indoorgen run is writing"):
+            check_writable(out)
+        with pytest.raises(OutputError, match="another indoorgen run is writing"):
+            _write(out, {"scene.json": "{}"})
+    assert not out.exists()
+    _write(out, {"scene.json": "{}"})
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene"]
+
+
+def test_a_lock_left_by_a_killed_run_does_not_block(tmp_path):
+    (tmp_path / ".scene.lock").write_text("")  # a file nobody holds a lock on
+    _write(tmp_path / "scene", {"scene.json": "{}"})
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene"]

@@ -8,6 +8,7 @@ replaced or deleted, so a user's own files beside a scene survive a rewrite.
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import json
 import os
 import re
@@ -24,14 +25,20 @@ RECORD = ".indoorgen-outputs.json"
 #: files every scene or floorplan directory holds: found in a directory but not recorded as
 #: indoorgen's, they make a write there fail before any work rather than after it
 SCENE_FILES = frozenset({"scene.json", "floorplan.json", "report.json", "plan.png"})
+#: the help of every command's --overwrite
+OVERWRITE_HELP = ("write into a non-empty directory indoorgen did not write, beside its files "
+                  "(none of them is replaced or removed)")
 #: the names of a run's temporary and old directories after `.<out name>.`
 _STALE = re.compile(r"(?P<kind>tmp|old)-(?P<pid>[0-9]+)(-.*)?")
 
 
-def check_writable(out: Path, directory: bool = True, *, replacing: bool = True) -> None:
+def check_writable(out: Path, directory: bool = True, *, replacing: bool = True,
+                   overwrite: bool = False) -> None:
     """Raise OutputError now, before any work, if `out` (a directory, or a file when
-    `directory` is False) cannot be created or written; for a directory to be `replacing`, also
-    if it holds scene files indoorgen did not write."""
+    `directory` is False) cannot be created or written: a non-empty directory indoorgen did not
+    write (unless `overwrite`: then indoorgen writes beside its files), one another run is
+    writing, or, for a directory to be `replacing`, one holding scene files indoorgen did not
+    write."""
     out = Path(out)
     if directory and Path.cwd().resolve().is_relative_to(out.resolve()):
         raise OutputError(f"{str(out)!r} is the current directory or holds it; indoorgen writes a "
@@ -46,6 +53,11 @@ def check_writable(out: Path, directory: bool = True, *, replacing: bool = True)
         if foreign:
             raise OutputError(f"{out} holds {', '.join(foreign)}, which indoorgen did not write; "
                               "move them or choose another output directory")
+    if directory and out.is_dir() and not overwrite and not (out / RECORD).is_file() and \
+            any(out.iterdir()):
+        raise OutputError(f"{out} is not empty and indoorgen did not write it; give --overwrite "
+                          "to write beside its files (none of them is replaced or removed), or "
+                          "choose another output directory")
     parent = out.resolve().parent
     probe = parent
     while not probe.exists():
@@ -56,10 +68,14 @@ def check_writable(out: Path, directory: bool = True, *, replacing: bool = True)
         tempfile.TemporaryDirectory(prefix=".indoorgen-probe-", dir=probe).cleanup()
     except OSError as e:
         raise OutputError(f"cannot write to {out}: {probe} is not writable ({e.strerror})") from None
+    if directory and out.resolve().parent.is_dir():
+        with output_lock(out):  # another run writing there fails now, not after its work
+            pass
 
 
 @contextlib.contextmanager
-def atomic_dir(out: Path, *, merge: bool = False, drop: Iterable[str] = ()) -> Iterator[Path]:
+def atomic_dir(out: Path, *, merge: bool = False, drop: Iterable[str] = (),
+               overwrite: bool = False) -> Iterator[Path]:
     """Yield a fresh temporary directory; on success its entries replace `out`'s, on any error
     it is removed and `out` is left as it was.
 
@@ -69,22 +85,54 @@ def atomic_dir(out: Path, *, merge: bool = False, drop: Iterable[str] = ()) -> I
     result holds exactly what was written now plus the user's files; `drop` names earlier
     entries of indoorgen's that a merge must not keep (now stale). If something written now
     would overwrite a user's entry of the same name, OutputError is raised and nothing changes.
+    A non-empty `out` indoorgen did not write is refused unless `overwrite`; a second run
+    writing `out` at the same time is refused (`output_lock`).
     """
     out = Path(out)
-    check_writable(out, replacing=not merge)
+    check_writable(out, replacing=not merge, overwrite=overwrite)
     parent = out.resolve().parent
     parent.mkdir(parents=True, exist_ok=True)
-    clean_stale(out)
+    with output_lock(out):
+        clean_stale(out)
+        try:
+            tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-{os.getpid()}-", dir=parent))
+        except OSError as e:
+            raise OutputError(f"cannot write to {out}: {e.strerror}") from None
+        try:
+            yield tmp
+            _swap_in(tmp, out, merge, frozenset(drop))
+        except BaseException:
+            shutil.rmtree(tmp, ignore_errors=True)
+            raise
+
+
+@contextlib.contextmanager
+def output_lock(out: Path) -> Iterator[None]:
+    """Hold the lock on writing `out` (fcntl on its sibling `.NAME.lock`, removed on release);
+    OutputError at once if another run holds it."""
+    path = Path(out).resolve().parent / f".{Path(out).name}.lock"
+    while True:
+        try:
+            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+        except OSError as e:
+            raise OutputError(f"cannot write to {out}: {e.strerror}") from None
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            raise OutputError(f"another indoorgen run is writing {out} (it holds {path.name}); "
+                              "wait for it to finish or choose another output directory") from None
+        try:  # the run that held it may have removed it meanwhile: lock the file in place
+            if os.fstat(fd).st_ino == os.stat(path).st_ino:
+                break
+        except FileNotFoundError:
+            pass
+        os.close(fd)
     try:
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-{os.getpid()}-", dir=parent))
-    except OSError as e:
-        raise OutputError(f"cannot write to {out}: {e.strerror}") from None
-    try:
-        yield tmp
-        _swap_in(tmp, out, merge, frozenset(drop))
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
+        yield
+    finally:
+        path.unlink(missing_ok=True)
+        os.close(fd)
 
 
 def written_by_indoorgen(directory: Path) -> set[str]:

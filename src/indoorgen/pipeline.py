@@ -32,6 +32,7 @@ from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.model.polygons import validate_polygon
 from indoorgen.model.room_types import ROOM_TYPES, RoomTypeSpec
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
+from indoorgen.model.schemas import MAX_ROOM_SIDE, MIN_ROOM_SIDE, RoomPolygon, parse
 from indoorgen.model.tags import Semantics
 from indoorgen.outputs import atomic_dir
 from indoorgen.programs import ROOM_PROGRAMS, get_program
@@ -134,16 +135,17 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
     rng = stream(seed, "room", "architecture")
     # sizes and height when the user gives none: the table's, or its defaults for a custom type
     spec = ROOM_TYPES.get(cfg.room_type) or RoomTypeSpec(cfg.room_type)
-    if cfg.polygon is not None:
-        poly = cfg.polygon
+    if cfg.polygon is not None:  # the ranges of --size hold for a polygon too
+        poly = list(parse(RoomPolygon, {"polygon": cfg.polygon}, "room polygon").polygon)
     else:
         if cfg.size is not None:
             w, d = cfg.size
             if not (w > 0 and d > 0):
                 raise InvalidGeometryError(f"room size {w} x {d} must be positive")
-            if w < 2.0 or d < 2.0 or w > 30 or d > 30:
+            if not all(MIN_ROOM_SIDE <= v <= MAX_ROOM_SIDE for v in (w, d)):
                 raise InvalidGeometryError(f"room size {w} x {d} m is out of range; each side "
-                                           "must be between 2 and 30 m")
+                                           f"must be between {MIN_ROOM_SIDE:g} and "
+                                           f"{MAX_ROOM_SIDE:g} m")
         else:
             (w0, w1), (d0, d1) = spec.width, spec.depth
             w, d = round(float(rng.uniform(w0, w1)), 2), round(float(rng.uniform(d0, d1)), 2)
@@ -311,13 +313,15 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
 
 
 def write_scene_dir(gen: Generated, out: Path, *, usd_ext: str = "usdc",
-                    formats=None, nav_images: bool = False) -> Path:
+                    formats=None, nav_images: bool = False, overwrite: bool = False) -> Path:
     """Write scene.json, plan.png, report.json and the export `formats` (default usd, urdf,
     mjcf; see `export.formats`) to `out`, atomically: everything goes to a temporary sibling
     directory that is renamed into place when complete. `nav_images` adds a `nav_<storey>.png`
-    per storey: the free floor a robot reaches from the entrance, and what it cannot."""
+    per storey: the free floor a robot reaches from the entrance, and what it cannot.
+    `overwrite` lets it write beside the files of a non-empty directory indoorgen did not write
+    (`outputs.atomic_dir`)."""
     out = Path(out)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=overwrite) as tmp:
         t0 = time.perf_counter()
         (tmp / "scene.json").write_text(gen.scene.dumps())
         write_formats(bundle_from_generated(gen), tmp, formats, usd_ext=usd_ext)

@@ -16,7 +16,6 @@ fail a design rule (a kitchen with no sink), and the report says so.
 """
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
@@ -29,11 +28,12 @@ import trimesh
 from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
-from indoorgen.assets.protocol import Asset
+from indoorgen.assets.protocol import Asset, Surface
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, StableAgainst, parse_relation
 from indoorgen.constraints.sets import scene as scene_set
 from indoorgen.errors import ConfigError
+from indoorgen.export.scene_files import read_scene
 from indoorgen.model.boxes import overlapping_pairs
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Semantics
@@ -111,13 +111,13 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
             rel = parse_relation(r.relation)
             if not isinstance(rel, (StableAgainst, CoPlanar)):
                 raise ConfigError(f"{n}: relation {r.relation!r} pins no surface to its parent")
-            child = assets[n].surface(r.child_surface).transformed(o.pose.rotation(),
-                                                                    np.array(o.pose.position))
+            child = _surface(assets[n].surfaces, r.child_surface, n).transformed(
+                o.pose.rotation(), np.array(o.pose.position))
             if r.parent in rooms:
-                parent = next(s for s in rooms[r.parent].surfaces if s.name == r.parent_surface)
+                parent = _surface(rooms[r.parent].surfaces, r.parent_surface, r.parent)
             else:
                 po = scene.objects[r.parent]
-                parent = assets[r.parent].surface(r.parent_surface).transformed(
+                parent = _surface(assets[r.parent].surfaces, r.parent_surface, r.parent).transformed(
                     po.pose.rotation(), np.array(po.pose.position))
             gaps = (child.corners() - parent.origin) @ parent.normal - rel.margin
             facing = float(np.dot(child.normal, parent.normal))
@@ -169,6 +169,15 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
             "quality_passed": quality["passed"], "quality": quality, "navigation": navigation}
 
 
+def _surface(surfaces: list[Surface], name: str, owner: str) -> Surface:
+    """The surface `name` of `owner` (an object or a room); ConfigError naming those it has."""
+    for s in surfaces:
+        if s.name == name:
+            return s
+    raise ConfigError(f"scene.json: {owner!r} has no surface {name!r}; it has "
+                      f"{', '.join(sorted(s.name for s in surfaces))}")
+
+
 def _footprint_below(obj: SceneObject, asset: Asset, floor_z: float) -> Any:
     """Plan-view footprint (world) of the parts of `asset` up to `DOOR_ZONE_TOP` above a floor at
     `floor_z`: the union of its convex pieces cut to that band; None if none reach it."""
@@ -195,12 +204,7 @@ def program_violations(scene: Scene, rooms) -> dict[str, dict[str, float]]:
 
 
 def validate_scene_dir(path: Path) -> dict[str, Any]:
-    """`validate_scene` of the scene.json in directory `path` (ConfigError if missing or bad)."""
-    f = Path(path) / "scene.json"
-    try:
-        scene = Scene.from_json(json.loads(f.read_text()))
-    except FileNotFoundError:
-        raise ConfigError(f"{f} does not exist; pass a directory written by indoorgen generate") from None
-    except (ValueError, KeyError, TypeError) as e:
-        raise ConfigError(f"{f} is not a valid scene.json ({type(e).__name__}: {e})") from None
+    """`validate_scene` of the scene.json in directory `path` (SceneFileError, a ConfigError, if
+    it is missing or breaks the scene schema)."""
+    scene, _ = read_scene(Path(path))
     return validate_scene(scene)

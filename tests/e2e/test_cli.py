@@ -90,6 +90,10 @@ def bad_range(room):
     return Problem(constraints={{"x": scene().count().in_range(5, 2)}})
 def bad_generator(room):
     return Problem(constraints={{"x": scene().of_generator("hovercraft").count() >= 1}})
+def raises(room):
+    return 1 / 0
+def not_a_problem(room):
+    return 42
 """
 
 
@@ -100,8 +104,16 @@ def bad_generator(room):
     (["--rooms", "bedroom=2,ballroom=1"], "ballroom"),
     (["--doors", "ajar"], "doors 'ajar' is not a door state; valid: open, closed, random"),
     (["--room", "bedroom", "--doors", "open"], "give options of one kind only"),
-    (["--floorplan", "{prog}"], "not a floorplan.json"),
+    (["--floorplan", "{prog}"], "is not readable JSON"),
     (["--polygon", "[[0,0],[1,1],[2,2]]"], "area"),
+    (["--polygon", "[[0,0],[5,0],[5,NaN],[0,4]]"], "finite number"),
+    (["--polygon", "[[0,0],[1e6,0],[1e6,1e6],[0,1e6]]"], "less than or equal to 1000"),
+    (["--polygon", "[[0,0],[100,0],[100,100],[0,100]]"], "between 2 and 30 m"),
+    (["--polygon", "[" * 50_000 + "]" * 50_000], "nests brackets 50000 deep"),
+    (["--area", "1e9"], "at most 2000 m^2"),
+    (["--size", "100", "4"], "between 2 and 30 m"),
+    (["--program", "{prog}:raises"], "raised ZeroDivisionError: division by zero"),
+    (["--program", "{prog}:not_a_problem"], "must return a Problem"),
     (["--program", "{prog}:bad_range"], "in_range(5, 2)"),
     (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),
     (["--out", "/proc/indoorgen_cannot_write_here"], "cannot write"),
@@ -122,6 +134,19 @@ def test_bad_input_one_line_exit_2_no_output(tmp_path, args, words):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
 
 
+def test_debug_shows_the_traceback(tmp_path):
+    prog = tmp_path / "prog.py"
+    prog.write_text(BAD_PROGRAM.format())
+    r = run("--debug", "generate", "--program", f"{prog}:raises", "--out", str(tmp_path / "o"))
+    assert r.returncode != 0 and "Traceback" in r.stderr and "ZeroDivisionError" in r.stderr
+
+
+def test_asset_refuses_a_negative_texture_resolution(tmp_path):
+    r = run("asset", "sofa", "--out", str(tmp_path / "s.glb"), "--texture-resolution", "-5")
+    assert r.returncode == 2 and "--texture-resolution -5 is invalid" in r.stderr, r.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_generate_never_replaces_the_users_files(tmp_path):
     """A directory holding the user's own scene.json is refused before any work, in one line;
     a scene directory the user added notes to keeps them when regenerated."""
@@ -139,6 +164,14 @@ def test_generate_never_replaces_the_users_files(tmp_path):
     assert run(*args).returncode == 0
     assert (out / "notes.txt").read_text() == "mine"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mine", "scene"]
+    photos = tmp_path / "photos"  # not indoorgen's: refused, then written beside with --overwrite
+    photos.mkdir()
+    (photos / "cat.jpg").write_text("the user's")
+    args = args[:-1] + (str(photos),)
+    r = run(*args)
+    assert r.returncode == 2 and "--overwrite" in r.stderr, r.stderr
+    assert run(*args, "--overwrite").returncode == 0
+    assert (photos / "cat.jpg").read_text() == "the user's" and (photos / "scene.json").exists()
 
 
 def test_nav_image_and_navigation_report(tmp_path):

@@ -15,6 +15,7 @@ from indoorgen.model.scene import Scene
 from indoorgen.outputs import RECORD
 from support.cli import run
 from support.plans import apartment
+from support.scenefiles import minimal_scene
 
 
 def test_export_reexports_a_saved_scene(exported, tmp_path):
@@ -68,26 +69,26 @@ def test_export_is_atomic(exported, tmp_path, monkeypatch):
 
 
 def test_read_scene_finds_scene_json_in_a_directory(tmp_path):
-    (tmp_path / "scene.json").write_text(json.dumps({"seed": 4, "rooms": [], "objects": []}))
+    (tmp_path / "scene.json").write_text(json.dumps(minimal_scene(seed=4)))
     scene, path = read_scene(tmp_path)
     assert scene.seed == 4 and path == tmp_path / "scene.json"
     with pytest.raises(SceneFileError, match="does not exist"):
         read_scene(tmp_path / "nowhere")
     (tmp_path / "bad.json").write_text("{not json")
-    with pytest.raises(SceneFileError, match="corrupt"):
+    with pytest.raises(SceneFileError, match="not readable JSON"):
         read_scene(tmp_path / "bad.json")
 
 
 @pytest.mark.parametrize("args, needle", [
     (["export", "missing/scene.json"], "does not exist"),
-    (["export", "bad.json"], "corrupt"),
+    (["export", "bad.json"], "not readable JSON"),
     (["export", "scene.json", "--formats", "usd,fbx"], "fbx"),
     (["export", "scene.json", "--out", "afile"], "afile"),
     (["generate", "--formats", "usd,stl", "--out", "x"], "stl"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, args, needle):
     (tmp_path / "bad.json").write_text("{not json")
-    (tmp_path / "scene.json").write_text(json.dumps({"seed": 0, "rooms": [], "objects": []}))
+    (tmp_path / "scene.json").write_text(json.dumps(minimal_scene()))
     (tmp_path / "afile").write_text("x")
     r = run(*args, cwd=tmp_path)
     assert r.returncode == 2, r.stderr

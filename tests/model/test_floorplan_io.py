@@ -27,7 +27,9 @@ def test_schema_keys_are_exactly_the_contract():
                                                anneal=FloorplanAnnealConfig(steps_per_storey=30)))
     d = json.loads(dumps(fp))
     # vehicle_doors is written only when the home has a garage (this one does)
-    assert set(d) == {"storeys", "stairs", "entrance", "vehicle_doors"}
+    assert set(d) == {"format_version", "storeys", "stairs", "entrance", "vehicle_doors"}
+    assert d["format_version"] == 1
+    assert "format_version" not in to_json(fp)  # the plan scene.json embeds is unchanged
     assert set(d["entrance"]) == {"room", "center"}
     assert all(set(v) == {"room", "center", "width", "height"} for v in d["vehicle_doors"])
     for s in d["storeys"]:

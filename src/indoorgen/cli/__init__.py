@@ -1,7 +1,9 @@
 """`indoorgen` command line: argument handling only, one module per command; the work is in
 `pipeline` and the packages below it.
 
-Any `IndoorGenError` becomes one line on stderr and exit status 2.
+Any `IndoorGenError` becomes one line on stderr and exit status 2; so does anything else that
+escapes a command (an internal error, named as such), and running out of memory or stack.
+`--debug` shows the traceback instead.
 """
 from __future__ import annotations
 
@@ -18,6 +20,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="indoorgen",
                                 description="Procedural furnished homes and rooms.")
     p.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
+    p.add_argument("--debug", action="store_true",
+                   help="on an error, show the full traceback instead of one line")
     sub = p.add_subparsers(dest="command", required=True)
     generate.add_parser(sub)
     validate.add_parser(sub)
@@ -36,5 +40,25 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.func(args))
     except IndoorGenError as e:
-        print(f"indoorgen: error: {e}", file=sys.stderr)
+        if args.debug:
+            raise
+        print(f"indoorgen: error: {_one_line(e)}", file=sys.stderr)
         return 2
+    except (MemoryError, RecursionError) as e:
+        if args.debug:
+            raise
+        print(f"indoorgen: error: the input is too large or too deeply nested to handle "
+              f"({type(e).__name__}); give smaller input (--debug shows where)", file=sys.stderr)
+        return 2
+    except Exception as e:
+        if args.debug:
+            raise
+        print(f"indoorgen: internal error: {type(e).__name__}: {_one_line(e)} (this is a bug; "
+              "--debug shows the traceback)", file=sys.stderr)
+        return 2
+
+
+def _one_line(e: BaseException) -> str:
+    """The first line of an exception's message (a message never spans lines on stderr)."""
+    text = str(e).strip()
+    return text.splitlines()[0] if text else type(e).__name__

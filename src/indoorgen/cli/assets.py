@@ -16,6 +16,7 @@ from indoorgen.assets import AssetFactory, factory_names, get_factory
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.errors import ParameterError
 from indoorgen.export.asset_file import ASSET_EXTENSIONS, write_asset
+from indoorgen.export.scene_files import check_texture_resolution
 from indoorgen.outputs import atomic_file
 from indoorgen.render.preview import contact_sheet
 
@@ -101,6 +102,7 @@ def parse_param(text: str) -> tuple[str, Any]:
 
 def run_asset(args: argparse.Namespace) -> int:
     """`indoorgen asset NAME`: one textured asset written to a file."""
+    check_texture_resolution(args.texture_resolution)
     overrides = dict(parse_param(p) for p in args.param)
     out = write_asset(args.name, args.seed, Path(args.out), overrides,
                       texture_resolution=args.texture_resolution)

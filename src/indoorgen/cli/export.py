@@ -6,6 +6,7 @@ from pathlib import Path
 
 from indoorgen.export.formats import DEFAULT_FORMATS, FORMATS
 from indoorgen.export.scene_files import export_scene
+from indoorgen.outputs import OVERWRITE_HELP
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -21,6 +22,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="texture size in pixels (0: no textures)")
     e.add_argument("--doors", help="re-stand a home's door leaves: open|closed|random "
                                    "(default: as scene.json records them)")
+    e.add_argument("--overwrite", action="store_true", help=OVERWRITE_HELP)
     e.set_defaults(func=run_export)
 
 
@@ -28,6 +30,7 @@ def run_export(args: argparse.Namespace) -> int:
     """`indoorgen export`."""
     out, timings = export_scene(Path(args.scene), Path(args.out) if args.out else None,
                                 args.formats, usd_ext=args.usd_format,
-                                texture_resolution=args.texture_resolution, doors=args.doors)
+                                texture_resolution=args.texture_resolution, doors=args.doors,
+                                overwrite=args.overwrite)
     print(f"{out}: " + ", ".join(f"{k} {v:.2f} s" for k, v in timings.items()))
     return 0

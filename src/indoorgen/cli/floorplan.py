@@ -4,10 +4,10 @@ directory renamed into place when complete)."""
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from indoorgen.architecture.solidify import solidify
 from indoorgen.architecture.walls import WallThickness
@@ -16,7 +16,8 @@ from indoorgen.export.usd.architecture import write_architecture_usd
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan, storey_pitch
 from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.model.floorplan_io import read_floorplan, write_floorplan
-from indoorgen.outputs import atomic_dir, check_writable
+from indoorgen.model.schemas import MAX_HOME_AREA, HomeContour, RoomGraph, parse, read_json_file
+from indoorgen.outputs import OVERWRITE_HELP, atomic_dir, check_writable
 from indoorgen.render.floorplan import draw_floorplan
 
 
@@ -40,26 +41,28 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="a floorplan.json to solidify and draw instead of generating one")
     p.add_argument("--steps", type=int, default=None, help="annealing steps per storey")
     p.add_argument("--out", default=None, help="output directory (default ./floorplan_SEED)")
+    p.add_argument("--overwrite", action="store_true", help=OVERWRITE_HELP)
     p.add_argument("-q", "--quiet", action="store_true")
     p.set_defaults(func=run_floorplan)
 
 
-def _read_json(path: str, option: str):
-    try:
-        return json.loads(Path(path).read_text())
-    except FileNotFoundError:
-        raise ConfigError(f"{option} file {path!r} does not exist") from None
-    except (OSError, ValueError) as e:
-        raise ConfigError(f"{option} file {path!r} is not readable JSON: {e}") from None
+def _read_contour(path: str) -> list[list[float]]:
+    """The --contour file's outline (a list of [x, y], or {"contour": [...]}), schema-checked."""
+    what = f"--contour file {path!r}"
+    data = read_json_file(path, what, "contour")
+    if isinstance(data, dict) and "contour" not in data and "polygon" in data:
+        data = {**data, "contour": data["polygon"]}
+        del data["polygon"]
+    doc = parse(HomeContour, data if isinstance(data, dict) else {"contour": data}, what)
+    return [list(p) for p in doc.contour]
 
 
-def _read_contour(path: str) -> list:
-    data = _read_json(path, "--contour")
-    if isinstance(data, dict):
-        data = data.get("contour", data.get("polygon"))
-    if not isinstance(data, list):
-        raise ConfigError(f"--contour file {path!r} must hold a list of [x, y] points")
-    return data
+def _read_graph(path: str) -> dict[str, Any]:
+    """The --graph file's room graph, schema-checked (as `graph_from_spec` reads it)."""
+    what = f"--graph file {path!r}"
+    data = read_json_file(path, what, "graph")
+    parse(RoomGraph, data, what)
+    return {k: v for k, v in data.items() if k != "format_version"}
 
 
 def run_floorplan(args: argparse.Namespace) -> int:
@@ -72,13 +75,14 @@ def run_floorplan(args: argparse.Namespace) -> int:
         raise ConfigError(f"--floors {args.floors} is out of range; a home has 1 to 3 storeys")
     if args.steps is not None and args.steps < 0:
         raise ConfigError(f"--steps must be >= 0, got {args.steps}")
-    if args.area is not None and not args.area > 0:
-        raise ConfigError(f"--area must be a positive number of m^2, got {args.area}")
+    if args.area is not None and not 0 < args.area <= MAX_HOME_AREA:
+        raise ConfigError(f"--area {args.area:g} is out of range; a home's ground floor is "
+                          f"over 0 and at most {MAX_HOME_AREA:g} m^2")
     out = Path(args.out or f"floorplan_{args.seed}")
-    check_writable(out)
+    check_writable(out, overwrite=args.overwrite)
     cfg = FloorplanConfig(floors=args.floors, rooms=args.rooms, area=args.area,
                           contour=_read_contour(args.contour) if args.contour else None,
-                          graph=_read_json(args.graph, "--graph") if args.graph else None)
+                          graph=_read_graph(args.graph) if args.graph else None)
     if args.steps is not None:
         cfg.anneal = FloorplanAnnealConfig(steps_per_storey=args.steps)
     if args.plan:
@@ -89,7 +93,7 @@ def run_floorplan(args: argparse.Namespace) -> int:
         pitch = storey_pitch(cfg)
     walls = WallThickness(cfg.interior_wall, cfg.exterior_wall)
     arch = solidify(fp, walls, pitch, seed=args.seed)
-    with atomic_dir(out) as tmp:
+    with atomic_dir(out, overwrite=args.overwrite) as tmp:
         write_floorplan(fp, tmp / "floorplan.json")
         draw_floorplan(fp, tmp / "plan.png", walls,
                        title=f"floorplan  seed {args.seed}" if not args.plan else args.plan)

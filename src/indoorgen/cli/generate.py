@@ -2,8 +2,8 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import importlib.util
-import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -14,7 +14,17 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
 from indoorgen.model.room_types import ROOM_TYPES
-from indoorgen.outputs import check_writable
+from indoorgen.model.schemas import (
+    MAX_HOME_AREA,
+    MAX_ROOM_SIDE,
+    MIN_ROOM_SIDE,
+    FloorplanFile,
+    RoomPolygon,
+    parse,
+    read_json_file,
+    read_json_text,
+)
+from indoorgen.outputs import OVERWRITE_HELP, check_writable
 from indoorgen.pipeline import (
     PRESETS,
     GenerateConfig,
@@ -43,6 +53,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     g.add_argument("--polygon", help='room outline as JSON, e.g. "[[0,0],[5,0],[5,4],[0,4]]"')
     g.add_argument("--program", help="a custom constraint program, FILE.py:FUNCTION")
     g.add_argument("--out", help="output directory (default ./scene_SEED)")
+    g.add_argument("--overwrite", action="store_true", help=OVERWRITE_HELP)
     g.add_argument("--usd-format", choices=["usda", "usdc"], default="usdc",
                    help="binary .usdc (default) or text .usda")
     g.add_argument("--formats", default="usd,urdf,mjcf",
@@ -75,17 +86,47 @@ def _load_program(spec: str) -> Callable[..., Problem]:
     fn = getattr(mod, func, None)
     if not callable(fn):
         raise ConfigError(f"--program {spec!r}: {path} has no function {func!r}")
-    return fn
+    return _guarded(fn, spec)
+
+
+def _guarded(fn: Callable[..., Problem], spec: str) -> Callable[..., Problem]:
+    """`fn` whose own exceptions become one ConfigError naming the program and the first line
+    of its error (it keeps `fn`'s name, which scene.json records)."""
+
+    @functools.wraps(fn)
+    def program(*args: Any, **kwargs: Any) -> Problem:
+        try:
+            return fn(*args, **kwargs)
+        except IndoorGenError:
+            raise
+        except Exception as e:  # the user's code: any error it makes is theirs to fix
+            first = (str(e).strip().splitlines() or [""])[0]
+            raise ConfigError(f"--program {spec!r} raised {type(e).__name__}: {first}") from e
+
+    return program
+
+
+def _check_sizes(args: argparse.Namespace) -> None:
+    """Refuse --size and --area outside the ranges a room or a home may have, before any work."""
+    if args.size is not None:
+        w, d = args.size
+        if not all(MIN_ROOM_SIDE <= v <= MAX_ROOM_SIDE for v in (w, d)):
+            raise ConfigError(f"--size {w:g} {d:g} is out of range; each side must be between "
+                              f"{MIN_ROOM_SIDE:g} and {MAX_ROOM_SIDE:g} m")
+    if args.area is not None and not 0 < args.area <= MAX_HOME_AREA:
+        raise ConfigError(f"--area {args.area:g} is out of range; a home's ground floor is "
+                          f"over 0 and at most {MAX_HOME_AREA:g} m^2")
 
 
 def run_generate(args: argparse.Namespace) -> int:
     """`indoorgen generate`: a furnished home (default) or one room, written atomically."""
     out = Path(args.out or f"scene_{args.seed}")
-    check_writable(out)
+    check_writable(out, overwrite=args.overwrite)
     formats = parse_formats(args.formats)
     get_preset(args.preset)  # a bad name fails here, before any work
     if args.seed < 0:
         raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    _check_sizes(args)
     progress = not args.quiet and sys.stderr.isatty()
     room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
     if args.doors is not None:
@@ -99,7 +140,8 @@ def run_generate(args: argparse.Namespace) -> int:
         gen = generate(args.seed, _room_config(args), progress=progress)
     else:
         gen = generate_home(args.seed, _home_config(args), progress=progress)
-    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats, nav_images=args.nav_image)
+    write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats, nav_images=args.nav_image,
+                    overwrite=args.overwrite)
     if not args.quiet:
         rep = gen.report
         viol = sum(r["n_violated"] for r in rep["rooms"].values())
@@ -137,24 +179,17 @@ def _room_config(args: argparse.Namespace) -> GenerateConfig:
                          program=_load_program(args.program) if args.program else None,
                          check=args.check, preset=args.preset)
     if args.polygon:
-        try:
-            cfg.polygon = [(float(x), float(y)) for x, y in json.loads(args.polygon)]
-        except (ValueError, TypeError):
-            raise ConfigError(f"--polygon must be a JSON list of [x, y] points, got "
-                              f"{args.polygon!r}") from None
+        data = read_json_text(args.polygon, "--polygon", "polygon")
+        room = parse(RoomPolygon, {"polygon": data}, "--polygon")
+        cfg.polygon = list(room.polygon)
     return cfg
 
 
 def _home_config(args: argparse.Namespace) -> HomeConfig:
     plan = None
     if args.floorplan:
-        try:
-            plan = json.loads(Path(args.floorplan).read_text())
-        except FileNotFoundError:
-            raise ConfigError(f"--floorplan {args.floorplan}: no such file") from None
-        except (ValueError, OSError) as e:
-            raise ConfigError(f"--floorplan {args.floorplan} is not a floorplan.json "
-                              f"({type(e).__name__}: {e})") from None
+        plan = read_json_file(args.floorplan, f"--floorplan file {args.floorplan!r}", "floorplan")
+        parse(FloorplanFile, plan, f"--floorplan file {args.floorplan!r}")
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
                       floorplan=plan, check=args.check, doors=args.doors or "open",

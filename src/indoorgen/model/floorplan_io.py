@@ -1,7 +1,7 @@
 """`floorplan.json`: read and write a home's floorplan (a contract: tools outside the project
-read it). The schema::
+read it). The schema (`model.schemas.FloorplanFile`, docs/schemas/floorplan.schema.json)::
 
-    {"storeys": [{"level": 0, "elevation": 0.0, "height": 2.8,
+    {"format_version": 1, "storeys": [{"level": 0, "elevation": 0.0, "height": 2.8,
                   "rooms": [{"name": "bedroom_0", "type": "bedroom", "polygon": [[x, y], ...]}],
                   "doors": [{"name": ..., "rooms": [a, b], "center": [x, y], "width": w,
                              "height": h}],
@@ -24,7 +24,6 @@ Numbers are rounded to 1e-6 and keys sorted, so the same plan always gives the s
 from __future__ import annotations
 
 import json
-import math
 from collections.abc import Iterable
 from os import PathLike
 from pathlib import Path
@@ -47,6 +46,7 @@ from indoorgen.model.floorplan import (
     WindowSpec,
 )
 from indoorgen.model.room_types import room_type
+from indoorgen.model.schemas import SCHEMA_VERSION, FloorplanFile, parse, read_json_file
 
 
 def _r(x: float) -> float:
@@ -87,8 +87,10 @@ def _door(d: DoorSpec) -> dict[str, Any]:
 
 
 def dumps(fp: Floorplan) -> str:
-    """The canonical floorplan.json text."""
-    return json.dumps(to_json(fp), indent=1, sort_keys=True) + "\n"
+    """The canonical floorplan.json text (with its schema's version; the plan a scene.json
+    embeds is `to_json`'s, without it)."""
+    return json.dumps({"format_version": SCHEMA_VERSION, **to_json(fp)}, indent=1,
+                      sort_keys=True) + "\n"
 
 
 def write_floorplan(fp: Floorplan, path: str | PathLike[str]) -> None:
@@ -100,129 +102,43 @@ def write_floorplan(fp: Floorplan, path: str | PathLike[str]) -> None:
 # reading
 
 
-class _Reader:
-    """Field access with error messages naming the offending entry."""
-
-    def __init__(self, where: str) -> None:
-        self.where = where
-
-    def get(self, d: Any, key: str, kind: type | None = None, default: Any = ...) -> Any:
-        if not isinstance(d, dict):
-            raise ConfigError(f"floorplan.json: {self.where} must be an object, got "
-                              f"{type(d).__name__}")
-        if key not in d:
-            if default is not ...:
-                return default
-            raise ConfigError(f"floorplan.json: {self.where} has no {key!r}")
-        v = d[key]
-        if kind is float:
-            try:
-                v = float(v)
-            except (TypeError, ValueError):
-                raise ConfigError(f"floorplan.json: {self.where}.{key} must be a number, got "
-                                  f"{d[key]!r}") from None
-            if not math.isfinite(v):
-                raise ConfigError(f"floorplan.json: {self.where}.{key} is not finite")
-        elif kind is int:
-            if isinstance(v, bool) or not isinstance(v, int):
-                raise ConfigError(f"floorplan.json: {self.where}.{key} must be an integer, got "
-                                  f"{v!r}")
-        elif kind is list and not isinstance(v, list):
-            raise ConfigError(f"floorplan.json: {self.where}.{key} must be a list")
-        elif kind is str and not isinstance(v, str):
-            raise ConfigError(f"floorplan.json: {self.where}.{key} must be a string")
-        return v
-
-    def point(self, v: Any, key: str) -> tuple[float, float]:
-        try:
-            x, y = (float(c) for c in v)
-        except (TypeError, ValueError):
-            raise ConfigError(f"floorplan.json: {self.where}.{key} must be [x, y], got "
-                              f"{v!r}") from None
-        return (x, y)
-
-    def polygon(self, v: Any, key: str) -> list[tuple[float, float]]:
-        if not isinstance(v, list) or len(v) < 3:
-            raise ConfigError(f"floorplan.json: {self.where}.{key} must be a list of at least "
-                              "3 [x, y] points")
-        pts = [self.point(p, key) for p in v]
-        poly = sg.Polygon(pts)
-        if not poly.is_valid or poly.area <= 0:
-            raise InvalidGeometryError(
-                f"floorplan.json: {self.where}.{key} is not a simple polygon "
-                f"({shapely.is_valid_reason(poly)})")
-        return [(p[0], p[1]) for p in np.asarray(orient(poly, 1.0).exterior.coords)[:-1].tolist()]
-
-
-def from_json(d: dict[str, Any]) -> Floorplan:
-    """Parse a floorplan.json object; raises ConfigError / InvalidGeometryError naming the
-    entry at fault (missing keys, bad numbers, overlapping rooms, unknown room types or room
-    names, doors off their walls are found by `check_predefined`)."""
-    rd = _Reader("the file")
+def from_json(d: Any) -> Floorplan:
+    """Parse a floorplan.json object against `schemas.FloorplanFile` (types, finite numbers in
+    range, caps, references); raises SchemaError / InvalidGeometryError / UnknownRoomTypeError
+    naming the entry at fault (overlapping rooms and doors naming other storeys' rooms are
+    found by `check_predefined`)."""
+    doc = parse(FloorplanFile, d, "floorplan.json")
     storeys = []
-    names: set[str] = set()
-    for k, s in enumerate(rd.get(d, "storeys", list)):
-        r = _Reader(f"storeys[{k}]")
-        st = Storey(r.get(s, "level", int), r.get(s, "elevation", float),
-                    r.get(s, "height", float))
-        for i, room in enumerate(r.get(s, "rooms", list)):
-            rr = _Reader(f"storeys[{k}].rooms[{i}]")
-            name = rr.get(room, "name", str)
-            if name in names:
-                raise ConfigError(f"floorplan.json: room name {name!r} is used twice")
-            names.add(name)
-            st.rooms.append(RoomSpec(name, room_type(rr.get(room, "type", str), floorplan=True).name,
-                                     rr.polygon(rr.get(room, "polygon", list), "polygon")))
-        for key, target in (("doors", st.doors), ("openings", st.openings)):
-            for i, door in enumerate(r.get(s, key, list, [])):
-                rr = _Reader(f"storeys[{k}].{key}[{i}]")
-                pair = rr.get(door, "rooms", list)
-                if len(pair) != 2:
-                    raise ConfigError(f"floorplan.json: {rr.where}.rooms must name two rooms")
-                target.append(DoorSpec(rr.get(door, "name", str), (str(pair[0]), str(pair[1])),
-                                       rr.point(rr.get(door, "center"), "center"),
-                                       rr.get(door, "width", float),
-                                       rr.get(door, "height", float)))
-        for i, w in enumerate(r.get(s, "windows", list, [])):
-            rr = _Reader(f"storeys[{k}].windows[{i}]")
-            st.windows.append(WindowSpec(rr.get(w, "name", str), rr.get(w, "room", str),
-                                         rr.point(rr.get(w, "center"), "center"),
-                                         rr.get(w, "width", float), rr.get(w, "height", float),
-                                         rr.get(w, "sill", float)))
+    for k, s in enumerate(doc.storeys):
+        st = Storey(s.level, s.elevation, s.height)
+        for i, room in enumerate(s.rooms):
+            st.rooms.append(RoomSpec(room.name, room_type(room.type, floorplan=True).name,
+                                     _simple(room.polygon, f"storeys[{k}].rooms[{i}].polygon")))
+        for src, target in ((s.doors, st.doors), (s.openings, st.openings)):
+            target.extend(DoorSpec(d.name, d.rooms, d.center, d.width, d.height) for d in src)
+        st.windows.extend(WindowSpec(w.name, w.room, w.center, w.width, w.height, w.sill)
+                          for w in s.windows)
         storeys.append(st)
-    stairs = []
-    for i, s in enumerate(rd.get(d, "stairs", list, [])):
-        r = _Reader(f"stairs[{i}]")
-        pts = [r.point(p, "polygon") for p in r.get(s, "polygon", list)]
-        if len(pts) != 4:
-            raise ConfigError(f"floorplan.json: stairs[{i}].polygon must be the 4 corners of "
-                              "the flight: bottom-left, bottom-right, top-right, top-left")
-        stairs.append(StairSpec(r.get(s, "from_level", int), r.get(s, "to_level", int), pts))
-    entrance = None
-    e = d.get("entrance") if isinstance(d, dict) else None
-    if e is not None:
-        r = _Reader("entrance")
-        entrance = Entrance(r.get(e, "room", str), r.point(r.get(e, "center"), "center"))
-    vehicle_doors = []
-    for i, v in enumerate(rd.get(d, "vehicle_doors", list, [])):
-        r = _Reader(f"vehicle_doors[{i}]")
-        vehicle_doors.append(VehicleDoor(r.get(v, "room", str), r.point(r.get(v, "center"), "center"),
-                                         r.get(v, "width", float), r.get(v, "height", float)))
+    stairs = [StairSpec(s.from_level, s.to_level, list(s.polygon)) for s in doc.stairs]
+    entrance = Entrance(doc.entrance.room, doc.entrance.center) if doc.entrance else None
+    vehicle_doors = [VehicleDoor(v.room, v.center, v.width, v.height) for v in doc.vehicle_doors]
     fp = Floorplan(storeys, stairs, entrance, vehicle_doors=vehicle_doors)
     check_predefined(fp)
     return fp
 
 
+def _simple(points: list[tuple[float, float]], where: str) -> list[tuple[float, float]]:
+    """`points` as a counter-clockwise simple polygon (InvalidGeometryError naming `where`)."""
+    poly = sg.Polygon(points)
+    if not poly.is_valid or poly.area <= 0:
+        raise InvalidGeometryError(
+            f"floorplan.json: {where} is not a simple polygon ({shapely.is_valid_reason(poly)})")
+    return [(p[0], p[1]) for p in np.asarray(orient(poly, 1.0).exterior.coords)[:-1].tolist()]
+
+
 def read_floorplan(path: str | PathLike[str]) -> Floorplan:
-    """Read floorplan.json at `path` (ConfigError if missing or not JSON)."""
-    p = Path(path)
-    try:
-        data = json.loads(p.read_text())
-    except FileNotFoundError:
-        raise ConfigError(f"floorplan file {str(p)!r} does not exist") from None
-    except (OSError, ValueError) as e:
-        raise ConfigError(f"floorplan file {str(p)!r} is not readable JSON: {e}") from None
-    return from_json(data)
+    """Read floorplan.json at `path` (SchemaError if missing, too big, not JSON or not a plan)."""
+    return from_json(read_json_file(path, f"floorplan file {str(path)!r}", "floorplan"))
 
 
 def check_predefined(fp: Floorplan) -> None:
@@ -239,12 +155,12 @@ def check_predefined(fp: Floorplan) -> None:
         if not 2.0 <= s.height <= 6.0:
             raise ConfigError(f"floorplan.json: storey {k} height {s.height} is outside [2, 6] m")
         shapes = [r.shape() for r in s.rooms]
-        for i in range(len(shapes)):
-            for j in range(i + 1, len(shapes)):
-                if shapes[i].intersection(shapes[j]).area > 1e-4:
-                    raise InvalidGeometryError(
-                        f"floorplan.json: rooms {s.rooms[i].name!r} and {s.rooms[j].name!r} on "
-                        f"storey {k} overlap")
+        a, b = shapely.STRtree(shapes).query(shapes, predicate="intersects")
+        for i, j in zip(a.tolist(), b.tolist(), strict=True):  # candidate pairs only
+            if i < j and shapes[i].intersection(shapes[j]).area > 1e-4:
+                raise InvalidGeometryError(
+                    f"floorplan.json: rooms {s.rooms[i].name!r} and {s.rooms[j].name!r} on "
+                    f"storey {k} overlap")
         here = {r.name for r in s.rooms}
         for d in s.doors + s.openings:
             for r in d.rooms:

@@ -15,8 +15,10 @@ from typing import Any
 import numpy as np
 
 from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.schemas import SCHEMA_VERSION, SceneFile, parse
 
-SCENE_FORMAT_VERSION = 1
+#: scene.json's schema version (`schemas.SceneFile.format_version`)
+SCENE_FORMAT_VERSION = SCHEMA_VERSION
 
 
 def _r(x: float | np.floating[Any], nd: int = 6) -> float:
@@ -251,8 +253,10 @@ class Scene:
         return json.dumps(self.to_json(), indent=1, sort_keys=True) + "\n"
 
     @staticmethod
-    def from_json(d: dict[str, Any]) -> Scene:
-        """A scene from its scene.json object."""
+    def from_json(d: Any) -> Scene:
+        """A scene from its scene.json object, checked first against `schemas.SceneFile`
+        (SchemaError naming the entry at fault)."""
+        parse(SceneFile, d, "scene.json")
         s = Scene(seed=int(d["seed"]), config=dict(d.get("config", {})))
         for r in d["rooms"]:
             room = Room.from_json(r)
