@@ -275,6 +275,10 @@ class SceneRoom(_Model):
         return self
 
 
+#: the largest door joint value a scene may record (a hinge's half turn, in rad)
+MAX_JOINT = math.pi
+
+
 class SceneFile(_Model):
     """scene.json (see `model.scene`)."""
 
@@ -284,6 +288,10 @@ class SceneFile(_Model):
     rooms: Annotated[list[SceneRoom], Field(min_length=1, max_length=MAX_ROOMS)]
     objects: Annotated[list[SceneObjectRecord], Field(max_length=MAX_OBJECTS)]
     floorplan: FloorplanFile | None = None
+    #: each door leaf's joint value (rad, or m for a slide; 0 = shut) in a home
+    doors: Annotated[dict[Name, Annotated[float, Strict(), Field(ge=-MAX_JOINT, le=MAX_JOINT,
+                                                                 allow_inf_nan=False)]],
+                     Field(max_length=MAX_LIST)] | None = None
 
     @model_validator(mode="after")
     def _references(self) -> SceneFile:
