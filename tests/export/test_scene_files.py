@@ -6,6 +6,7 @@ import json
 
 import pytest
 
+from indoorgen.architecture.solidify import room_geometries, solidify
 from indoorgen.errors import ConfigError
 from indoorgen.export import formats, write_formats
 from indoorgen.export.bundle import bundle_from_scene
@@ -100,8 +101,10 @@ def test_bad_input_one_line_exit_2(tmp_path, args, needle):
 def test_export_restands_a_homes_doors(tmp_path):
     """`--doors` on re-export: the leaves stand as asked in the files, scene.json records the
     new states, and a single room (whose door has no leaf) is refused."""
-    scene = Scene(seed=5, config={"home": True, "doors": "open"},
-                  floorplan=to_json(from_json(apartment())),
+    plan = from_json(apartment())
+    rooms = {n: g.room for n, g in room_geometries(solidify(plan, seed=5)).items()}
+    scene = Scene(seed=5, config={"home": True, "doors": "open"}, rooms=rooms,
+                  floorplan=to_json(plan),
                   doors={"d0": 1.570796, "d1": 1.570796, "d2": 1.570796, "entrance": 1.570796})
     (tmp_path / "scene.json").write_text(scene.dumps())
     (tmp_path / "report.json").write_text("{}")
@@ -117,9 +120,8 @@ def test_export_restands_a_homes_doors(tmp_path):
     out2, _ = export_scene(tmp_path, tmp_path / "kept", "mjcf", texture_resolution=0)
     assert (out2 / "scene.json").read_bytes() == (tmp_path / "scene.json").read_bytes()
     assert 'ref="1.5708"' in (out2 / "scene.xml").read_text()
-    room = Scene(seed=1)
     (tmp_path / "room").mkdir()
-    (tmp_path / "room" / "scene.json").write_text(room.dumps())
+    (tmp_path / "room" / "scene.json").write_text(json.dumps(minimal_scene()))
     with pytest.raises(ConfigError, match="single room"):
         export_scene(tmp_path / "room", None, "mjcf", doors="open")
     with pytest.raises(ConfigError, match="'ajar'"):

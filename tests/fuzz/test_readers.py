@@ -41,7 +41,7 @@ SCENE = json.loads((DATA / "scene_bathroom.json").read_text())
 POLYGON = [[0, 0], [5, 0], [5, 4], [2, 4], [2, 3], [0, 3]]
 GRAPH = {"storeys": [{"rooms": ["living_room_0", "kitchen_0", "bedroom_0", "bathroom_0"],
                       "edges": [["living_room_0", "kitchen_0"], ["living_room_0", "bedroom_0"],
-                                ["bedroom_0", "bathroom_0"]]}],
+                                ["living_room_0", "bathroom_0"]]}],
          "entrance": "living_room_0"}
 GIB = 1 << 30
 
@@ -138,7 +138,7 @@ def _graph(p: Path) -> None:
 
 
 def _polygon(p: Path) -> None:
-    ns = argparse.Namespace(room=None, size=None, program=None, check=False,
+    ns = argparse.Namespace(room=None, size=None, program=None, check=False, preset="default",
                             polygon=p.read_text())
     validate_polygon(_room_config(ns).polygon)
 
