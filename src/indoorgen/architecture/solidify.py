@@ -28,6 +28,7 @@ and closed by a sectional door (`_vehicle_door_element`).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -124,6 +125,14 @@ class HomeRoomGeometry(RoomGeometry):
     plan_polygon: sg.Polygon | None = None
     #: each window's world box (2, 3: min, max corners): the solver keeps a zone before it free
     windows: list[np.ndarray] = field(default_factory=list)
+    #: the collision pieces of the door leaves that stand in this room at their state (an open
+    #: leaf against the wall beside its opening): solids nothing may overlap, like the walls
+    leaves: list[trimesh.Trimesh] = field(default_factory=list)
+
+    def collision_meshes(self) -> list[trimesh.Trimesh]:
+        """Every solid the solver must not penetrate: walls, floor and ceiling slabs, and the
+        door leaves standing in the room."""
+        return [*super().collision_meshes(), *self.leaves]
 
     def door_zone_meshes(self, height: float = 2.0) -> list[trimesh.Trimesh]:
         """Keep-out zones extruded from the room's floor to `height` above it."""
@@ -511,6 +520,10 @@ def _shift(s: Surface, lift: np.ndarray) -> Surface:
 
 def room_geometries(arch: Architecture) -> dict[str, RoomGeometry]:
     """Per-room `RoomGeometry` objects of a home, keyed by room name (what `solver.State` and
-    the validator take)."""
-    return dict(arch.rooms)
+    the validator take), each with the door leaves that stand in it."""
+    leaves: dict[str, list[trimesh.Trimesh]] = {}
+    for el in arch.elements:
+        if el.kind == "door" and el.leaf_collision:
+            leaves.setdefault(el.room, []).extend(el.leaf_collision)
+    return {n: dataclasses.replace(g, leaves=leaves.get(n, [])) for n, g in arch.rooms.items()}
 
