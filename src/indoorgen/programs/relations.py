@@ -2,7 +2,6 @@
 every room counts, and the reach and clearance requirements rooms share."""
 from indoorgen.constraints import (
     Constraint,
-    CoPlanar,
     ObjSet,
     StableAgainst,
     SupportedBy,
@@ -50,8 +49,6 @@ beside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.05)
 at_bedside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.1)
 #: a second seat in line with the first, 0.6 m off its arm (room for a side table between)
 in_line_with = SupportedBy(Subpart.Side, Subpart.Side, margin=0.6)
-#: a screen's front in line with its stand's front, 5 cm back (facing where the stand faces)
-screen_in_line = CoPlanar(Subpart.Front, Subpart.Front, margin=-0.05)
 
 
 def ceiling_lights(room: ObjSet) -> ObjSet:
