@@ -27,6 +27,13 @@ def _r(x: float | np.floating[Any], nd: int = 6) -> float:
     return 0.0 if v == 0 else v
 
 
+def as_saved(params: dict[str, Any]) -> dict[str, Any]:
+    """`params` as scene.json stores them (numbers rounded as saved): what anything derived
+    from params (a seed, a shape) must be computed from to come out the same when a saved scene
+    is read back."""
+    return _params_json(params)
+
+
 @dataclass(frozen=True)
 class Pose:
     """World placement of an object's local frame: translation plus rotation `yaw` about +Z."""

@@ -30,6 +30,7 @@ from indoorgen.assets.shapes.primitives import (
 )
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
 from indoorgen.assets.shapes.sweeps import loft
+from indoorgen.model.scene import as_saved
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
@@ -43,8 +44,9 @@ def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
 
 
 def _seed(p: dict[str, Any]) -> int:
-    """A deterministic seed from the params (for small per-item variations)."""
-    return zlib.crc32(repr(sorted(p.items())).encode())
+    """A deterministic seed from the params as scene.json saves them (for small per-item
+    variations that must come out the same when a saved scene is rebuilt)."""
+    return zlib.crc32(repr(sorted(as_saved(p).items())).encode())
 
 
 @register

@@ -179,9 +179,17 @@ def oval_side_surfaces(shape: str, a: float, b: float, height: float, spacing: f
     perim = s[-1]
     n = max(4, 2 * int(round(perim / (2 * spacing))))
     out = []
+    # each facet's point and normal interpolated along the outline at its arc length, so they
+    # vary smoothly with the params (picking the nearest sample jumped a facet by a sample's
+    # angle when a param moved in its 6th decimal, as scene.json's rounding does)
+    closed_pts, closed_nrm = np.vstack([pts, pts[:1]]), np.vstack([nrm, nrm[:1]])
     for i in range(n):
-        j = int(np.searchsorted(s, i * perim / n)) % len(pts)
-        (px, py), (nx, ny) = pts[j], nrm[j]
+        t = i * perim / n
+        j = min(int(np.searchsorted(s, t, side="right")), len(s) - 1)
+        f = 0.0 if s[j] <= s[j - 1] else (t - s[j - 1]) / (s[j] - s[j - 1])
+        px, py = closed_pts[j - 1] + f * (closed_pts[j] - closed_pts[j - 1])
+        nx, ny = closed_nrm[j - 1] + f * (closed_nrm[j] - closed_nrm[j - 1])
+        nx, ny = np.array([nx, ny]) / np.hypot(nx, ny)
         out.append(Surface.rect(f"side_{i}", Subpart.Side, (px, py, height / 2), (nx, ny, 0.0),
                                 (-ny, nx, 0.0), 0.45 * perim / n, height / 2))
     return out
