@@ -112,7 +112,8 @@ class State:
         # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
         # room's objects and the (shared) architecture; this keeps each query small in a home
         self.static: list[fcl.CollisionObject] = []
-        static_boxes, kinds = [], []
+        static_boxes: list[np.ndarray] = []
+        kinds: list[int] = []
         self.static_kinds = kinds  # of each static piece: SOLID, DOOR_ZONE or WINDOW_ZONE
 
         def fixed(shape: fcl.CollisionGeometry, mesh: trimesh.Trimesh, kind: int) -> None:
