@@ -6,7 +6,8 @@ Generates `--seeds` single rooms of each main room type (living, dining, kitchen
 bathroom) and `--homes` one-storey homes, evaluates `quality.layout.quality_report` on each, and
 prints: per rule, its instances and pass rate (and, for hard rules, how many scenes it failed);
 per room type (homes' rooms included), the median objects per room and the median share of a
-room's most common generator; the community measures (median and p90 over scenes); and the
+room's most common generator, and how many rooms end with a violated hard constraint of their
+program (circulation included); the community measures (median and p90 over scenes); and the
 report's time per scene.
 """
 from __future__ import annotations
@@ -34,13 +35,16 @@ def scenes(seeds: int, homes: int, types: tuple[str, ...] = ROOM_TYPES):
         yield "home", generate_home(seed, HomeConfig())
 
 
-def room_stats(g: Generated, per_type: dict[str, list[tuple[int, float]]]) -> None:
-    """Add each room's (objects, most common generator's share) to `per_type`."""
+def room_stats(g: Generated, per_type: dict[str, list[tuple[int, float, bool]]]) -> None:
+    """Add each room's (objects, most common generator's share, any hard constraint of its
+    program violated) to `per_type`."""
     for rn, room in g.scene.rooms.items():
         objs = g.scene.objects_in(rn)
         if objs:
             top = Counter(o.generator for o in objs).most_common(1)[0][1]
-            per_type[room.room_type].append((len(objs), top / len(objs)))
+            result = g.results.get(rn)
+            violated = result is not None and any(v > 0 for v in result.violations.values())
+            per_type[room.room_type].append((len(objs), top / len(objs), violated))
 
 
 def main() -> None:
@@ -57,7 +61,7 @@ def main() -> None:
     scenes_failed: Counter[str] = Counter()
     hard: dict[str, bool] = {}
     measures: dict[str, list[float]] = defaultdict(list)
-    per_type: dict[str, list[tuple[int, float]]] = defaultdict(list)
+    per_type: dict[str, list[tuple[int, float, bool]]] = defaultdict(list)
     times, n, n_passed = [], 0, 0
     for _, g in scenes(a.seeds, a.homes, types):
         t0 = time.perf_counter()
@@ -83,11 +87,12 @@ def main() -> None:
               f"{rate:6.1%} {scenes_failed[name]:13d}")
     total_c, total_p = sum(checked.values()), sum(passed.values())
     print(f"{'all rules':32s} {'':4s} {total_c:9d} {total_p:7d} {total_p / max(total_c, 1):6.1%}")
-    print(f"\n{'room type':16s} {'rooms':>5s} {'median objects':>14s} {'median top-generator share':>26s}")
+    print(f"\n{'room type':16s} {'rooms':>5s} {'median objects':>14s} {'median top-generator share':>26s} "
+          f"{'hard violated':>13s}")
     for rt in sorted(per_type):
         rows = per_type[rt]
         print(f"{rt:16s} {len(rows):5d} {statistics.median(r[0] for r in rows):14.1f} "
-              f"{statistics.median(r[1] for r in rows):26.1%}")
+              f"{statistics.median(r[1] for r in rows):26.1%} {sum(r[2] for r in rows):13d}")
     print(f"\n{'measure':20s} {'median':>8s} {'p90':>8s}")
     for m in MEASURES:
         v = np.array(measures[m])

@@ -122,3 +122,6 @@ def test_access_points_by_kind():
     assert front == pytest.approx([0.5 + 0.35, 0.0])
     sides = access_points(["bed"], bounds, 0.25)
     assert np.array(sides) == pytest.approx(np.array([[0.0, 1.35], [0.0, -1.35]]))
+    # a seat is reached anywhere along its front: beside a coffee table, at either end
+    seat = access_points(["sofa"], bounds, 0.25)
+    assert np.array(seat) == pytest.approx(np.array([[0.85, 0.0], [0.85, -1.0], [0.85, 1.0]]))

@@ -166,10 +166,12 @@ def _scene(st: State) -> Scene:
 @pytest.mark.slow
 @pytest.mark.parametrize("seed", [0, 1])
 def test_a_solved_bedroom_with_two_doors_keeps_a_walkway(seed):
-    # 5 x 2.7 m, a door low on each short wall: a bed (2.0-2.3 m long) with its head against a
-    # long wall would cut the room in two; against a short wall, above the door, it does not
-    doors = [Door("a", 3, 2.1, 0.9), Door("b", 1, 0.6, 0.9)]
-    room = Room(ROOM, "bedroom", rectangle(5.0, 2.7), 2.7, 0.12, doors=doors)
+    # 5 x 3 m, a door low on each short wall: a bed (2.0-2.3 m long) with its head against a
+    # long wall must leave the walkway past its foot; against a short wall it stands above the
+    # door's 1.1 m swing zone. (At 2.7 m wide no bed fits the bedroom program's 0.6 m free on
+    # either side: 1.15 + a single bed's 1.0 + 0.6 > 2.7.)
+    doors = [Door("a", 3, 2.4, 0.9), Door("b", 1, 0.6, 0.9)]
+    room = Room(ROOM, "bedroom", rectangle(5.0, 3.0), 2.7, 0.12, doors=doors)
     geo = {ROOM: build_room(room)}
     st = State(geo, AssetCache())
     _, evaluators = solve(st, {ROOM: bedroom(_room_set(ROOM))}, seed,

@@ -111,8 +111,11 @@ class Surface:
         return self.origin + xy[:, :1] * self.u + xy[:, 1:2] * self.v
 
     def corners(self) -> np.ndarray:
-        """The polygon's exterior vertices in 3D (asset frame)."""
-        return self.to_world(np.asarray(self.polygon.exterior.coords)[:-1])
+        """The polygon's exterior vertices in 3D (asset frame); of its convex hull when it comes
+        in pieces (a counter split by a sink bowl nearly its full width)."""
+        outline = self.polygon if isinstance(self.polygon, shapely.Polygon) else \
+            self.polygon.convex_hull
+        return self.to_world(np.asarray(outline.exterior.coords)[:-1])
 
     def transformed(self, rotation: np.ndarray, translation: np.ndarray) -> Surface:
         """This surface rotated, then translated (the polygon itself is unchanged)."""

@@ -43,6 +43,10 @@ FRONT_TAGS = frozenset(t.value for t in (
     Semantics.Dresser, Semantics.Bookcase, Semantics.Appliance, Semantics.KitchenCabinet,
     Semantics.KitchenSink, Semantics.KitchenIsland, Semantics.Vanity, Semantics.BathroomSink,
     Semantics.Toilet, Semantics.Bathtub, Semantics.Shower, Semantics.Desk))
+#: Seats a person may step up to anywhere along the front: a coffee table 0.35-0.45 m before a
+#: sofa leaves no passage for the agent, who sits down at the end of the seat beside the table.
+SEAT_TAGS = frozenset(t.value for t in (Semantics.Sofa, Semantics.SectionalSofa,
+                                        Semantics.Armchair))
 #: Large objects used from their sides.
 BED_TAGS = frozenset(t.value for t in (Semantics.Bed, Semantics.BunkBed))
 
@@ -218,7 +222,8 @@ def band_outlines(pieces: Iterable[trimesh.Trimesh], transform: np.ndarray, floo
 def access_points(tags: Iterable[str], bounds: np.ndarray, radius: float) -> list[np.ndarray]:
     """Local XY points (object frame, front +X) an agent of `radius` must reach to use an object
     with `tags` and local bounding box `bounds` (2, 3); any one of them suffices: the front
-    point, or for a bed its two side points; [] when its front does not matter."""
+    point (for a seat also the two ends of its front), or for a bed its two side points; [] when
+    its front does not matter."""
     tags = set(tags)
     if not tags & (FRONT_TAGS | BED_TAGS):
         return []
@@ -227,6 +232,8 @@ def access_points(tags: Iterable[str], bounds: np.ndarray, radius: float) -> lis
     xc, yc = (x0 + x1) / 2, (y0 + y1) / 2
     if tags & BED_TAGS:
         return [np.array([xc, y1 + gap]), np.array([xc, y0 - gap])]
+    if tags & SEAT_TAGS:
+        return [np.array([x1 + gap, y]) for y in (yc, y0, y1)]
     return [np.array([x1 + gap, yc])]
 
 

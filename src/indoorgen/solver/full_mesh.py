@@ -2,7 +2,9 @@
 
 Placeholders are built to contain their full meshes, so this rarely finds anything; when it
 does, the later-placed object of a colliding pair (and anything resting on it) is removed rather
-than left interpenetrating.
+than left interpenetrating. The architecture's keep-out volumes count as the solver counts
+them: a window's zone only for what must keep out of it (`State.window_bound`), so a pendant
+light by a window or a candle on a desk under it stays.
 """
 from __future__ import annotations
 
@@ -13,16 +15,26 @@ import fcl
 from indoorgen.assets.cache import mesh_bvh
 from indoorgen.constraints.bounds import STAGE_ORDER
 from indoorgen.model.frames import yaw_matrix
+from indoorgen.solver.broadphase import WINDOW_ZONE
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
 
 
+def _hits(manager: fcl.DynamicAABBTreeCollisionManager, co: fcl.CollisionObject) -> bool:
+    data = fcl.CollisionData(request=fcl.CollisionRequest())
+    manager.collide(co, data, fcl.defaultCollisionCallback)
+    return bool(data.result.is_collision)
+
+
 def full_mesh_check(state: State) -> list[str]:
     """Remove objects whose full mesh collides; return the removed names."""
     manager = fcl.DynamicAABBTreeCollisionManager()
-    manager.registerObjects(list(state.static))
+    windows = fcl.DynamicAABBTreeCollisionManager()
+    for co, kind in zip(state.static, state.static_kinds, strict=True):
+        (windows if kind == WINDOW_ZONE else manager).registerObject(co)
     manager.setup()
+    windows.setup()
     last = len(STAGE_ORDER)  # an object of no known stage is checked after all the others
     names = sorted(state.objects, key=lambda n: (STAGE_ORDER.get(state.objects[n].stage, last), n))
     kept: set[str] = set()
@@ -34,9 +46,7 @@ def full_mesh_check(state: State) -> list[str]:
             continue
         full = state.cache.full(ob.generator, ob.params)
         co = fcl.CollisionObject(mesh_bvh(full.mesh), fcl.Transform(yaw_matrix(ob.yaw), ob.position))
-        data = fcl.CollisionData(request=fcl.CollisionRequest())
-        manager.collide(co, data, fcl.defaultCollisionCallback)
-        if data.result.is_collision:
+        if _hits(manager, co) or (state.window_bound(n) and _hits(windows, co)):
             log.warning("full mesh of %s collides; removing it", n)
             removed.append(n)
             continue

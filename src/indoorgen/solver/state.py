@@ -112,7 +112,9 @@ class State:
         # one broadphase per room: walls keep rooms apart, so an object only ever meets its own
         # room's objects and the (shared) architecture; this keeps each query small in a home
         self.static: list[fcl.CollisionObject] = []
-        static_boxes, kinds = [], []
+        static_boxes: list[np.ndarray] = []
+        kinds: list[int] = []
+        self.static_kinds = kinds  # of each static piece: SOLID, DOOR_ZONE or WINDOW_ZONE
 
         def fixed(shape: fcl.CollisionGeometry, mesh: trimesh.Trimesh, kind: int) -> None:
             self.static.append(fcl.CollisionObject(shape, fcl.Transform()))
@@ -427,6 +429,10 @@ class State:
                     seen.add(p.parent)
                     todo.append(p.parent)
         return False
+
+    def window_bound(self, name: str) -> bool:
+        """Must object `name` keep out of window zones (see `_window_bound`)?"""
+        return self._window_bound(self.objects[name])
 
     def _window_bound(self, ob: ObjState) -> bool:
         """Must the object keep out of window zones: furniture standing on the floor taller than
