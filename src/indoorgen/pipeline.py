@@ -62,8 +62,8 @@ class Preset:
 #: the presets of `--preset`; "default" is what `indoorgen generate --seed N` gives
 PRESETS: dict[str, Preset] = {
     "fast": Preset({"large": 250, "medium": 200, "small": 300}, (0.3, 0.7)),
-    "default": Preset({"large": 350, "medium": 300, "small": 700}, (0.6, 1.4)),
-    "dense": Preset({"large": 450, "medium": 400, "small": 1400}, (1.1, 1.6)),
+    "default": Preset({"large": 600, "medium": 300, "small": 700}, (0.6, 1.4)),
+    "dense": Preset({"large": 800, "medium": 400, "small": 1400}, (1.1, 1.6)),
 }
 
 

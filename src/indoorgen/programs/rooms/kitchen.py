@@ -18,9 +18,9 @@ from indoorgen.programs.relations import (
 #: the work triangle's legs (m): NKBA Kitchen Planning Guideline 4, each leg 4-9 ft (the
 #: quality report's `kitchen_work_triangle` measures the same)
 TRIANGLE_LEG = (1.2, 2.7)
-#: what the program holds the legs' centre distances to: inside TRIANGLE_LEG, the lower end
-#: raised because the report measures between front centres, up to ~0.6 m closer than the
-#: centres of two appliances on facing runs
+#: what the program aims the legs' centre distances at (a score; the hard limit is
+#: TRIANGLE_LEG): the lower end raised because the report measures between front centres, up
+#: to ~0.6 m closer than the centres of two appliances on facing runs
 TRIANGLE_AIM = (1.8, 2.6)
 #: NKBA: wall cabinets 15-18 in above a 36 in counter (bottoms at 1.35-1.5 m): a cabinet hangs
 #: this far over its counter (0.86-0.93 m high), so its bottom lands at 1.36-1.43 m
@@ -61,11 +61,6 @@ def kitchen(room: ObjSet) -> Problem:
             "a sink": sinks.count() == 1,
             "a fridge": fridges.count() == 1,
             "a cooker": cookers.count() == 1,
-            # the work triangle: each leg between sink, cooker and fridge 1.2-2.7 m (NKBA)
-            "sink to cooker": sinks.all(lambda s: s.center_distance(cookers).in_range(*TRIANGLE_AIM)),
-            "sink to fridge": sinks.all(lambda s: s.center_distance(fridges).in_range(*TRIANGLE_AIM)),
-            "cooker to fridge": fridges.all(
-                lambda f: f.center_distance(cookers).in_range(*TRIANGLE_AIM)),
             "a dishwasher at most": dishwashers.count().in_range(0, 1),
             "an island at most": islands.count().in_range(0, 1),
             "stools only at the island": islands.all(
@@ -84,6 +79,17 @@ def kitchen(room: ObjSet) -> Problem:
             "the fridge at a run's end": fridges.mean(
                 lambda f: f.distance(cabinets).hinge(0.0, IN_RUN)).minimize(1),
             "counter space": cabinets.count().maximize(1),
+            # the work triangle: each leg between sink, cooker and fridge 1.2-2.7 m (NKBA), aimed
+            # well inside so the front centres the report measures land inside too (a guideline
+            # a small kitchen may miss: a score, measured by the quality report)
+            "the work triangle at the sink": sinks.mean(
+                lambda s: s.center_distance(cookers).hinge(*TRIANGLE_LEG)
+                + s.center_distance(fridges).hinge(*TRIANGLE_LEG)).minimize(20),
+            "the work triangle at the fridge": fridges.mean(
+                lambda f: f.center_distance(cookers).hinge(*TRIANGLE_LEG)).minimize(20),
+            "a comfortable triangle": sinks.mean(lambda s: s.center_distance(cookers).hinge(*TRIANGLE_AIM)
+                                                 + s.center_distance(fridges).hinge(*TRIANGLE_AIM))
+            .minimize(3),
             "fronts free": accessibility_cost(along_walls, floor).minimize(2),
             "island clear of the runs": islands.mean(
                 lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
