@@ -23,8 +23,9 @@ on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
 against_wall = StableAgainst(Subpart.Back, Subpart.Wall, margin=0.05)
 #: hanging flat on a wall (pictures, mirrors), not overhanging its edges
 on_wall = StableAgainst(Subpart.Back, Subpart.Wall)
-#: resting on a tabletop, shelf or stand without tipping over
-on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
+#: resting on a tabletop, shelf or stand without tipping over: its whole base on the surface
+#: (a centroid over the edge let books and clocks at a shelf's edge fall in MuJoCo)
+on_top = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
 #: put away inside: on a shelf or floor behind a cabinet's, wardrobe's or fridge's doors
 inside = SupportedBy(Subpart.Bottom, Subpart.Interior)
 #: a chair pulled up to a table: its front 4 cm under the table's edge (clear of legs inset

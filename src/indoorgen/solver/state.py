@@ -415,12 +415,15 @@ class State:
         return bp.collides(name, windows=windows, carries=self._carries)
 
     def _carries(self, a: str, b: str) -> bool:
-        """Does `b` rest on, in or from `a` (by its bottom: a cup on a shelf, a wall cabinet over
-        a counter; not a chair pulled up to a desk), directly or through others?"""
+        """Does `b` belong in `a`'s keep-free space: resting on, in or from `a` (by its bottom: a
+        cup on a shelf, a wall cabinet over a counter), directly or through others, or pulled up
+        to it (a chair at a desk stands before its drawers; one pushes it back to open them)?"""
         seen, todo = set(), [b]
         while todo:
             n = todo.pop()
             for p in self.objects[n].placements if n in self.objects else ():
+                if n == b and p.parent == a:
+                    return True
                 if getattr(p.relation, "child", None) != Subpart.Bottom:
                     continue
                 if p.parent == a:

@@ -199,6 +199,11 @@ class TableClock(PartsFactory):
             p0 = (0.0, Rb * 0.9 * math.sin(a), zc - Rb * 0.9 * math.cos(a))
             out.append(Part(rod(p0, (0.0, Rb * 1.05 * math.sin(a), -0.01), 0.004, 12)
                             .trim_by_plane((0, 0, 1), 0.0), "metal"))
+            # a foot pad front to back under each foot, so the clock stands (two rods 8 mm
+            # across tipped it over in simulators)
+            yf = Rb * 1.0 * math.sin(a)
+            out.append(Part(box_between((x0 + 0.003, yf - 0.005, 0.0),
+                                        (x1 - 0.003, yf + 0.005, 0.003)), "metal"))
         return out
 
     def _mantel(self, p, detail):
