@@ -35,8 +35,6 @@ at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.04, overhang=Fal
 on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 #: a side flush against a wall (the second wall of a corner: a bathtub, a kitchen run's end)
 side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
-#: standing wholly on a surface, nothing overhanging (a TV on its stand, a microwave)
-fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
 #: a coffee table before a seat: its back 0.45 m from the seat's front, its centre within the
 #: seat's width (furniture-layout guidance: 0.3-0.6 m; quality's COFFEE_GAP)
 before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)

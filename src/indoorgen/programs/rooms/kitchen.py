@@ -8,7 +8,6 @@ from indoorgen.programs.relations import (
     against_wall,
     at_table,
     ceiling_lights,
-    fully_on,
     hung_above,
     on_floor,
     on_top,
@@ -54,7 +53,7 @@ def kitchen(room: ObjSet) -> Problem:
     kitchenware = scene()[S.Kitchenware].related_to(counters, on_top)
     tableware = scene()[S.Tableware].related_to(counters, on_top)
     food = scene()[S.Food].related_to(counters, on_top)
-    appliances_on_counters = scene()[S.Microwave].related_to(cabinets, fully_on)
+    appliances_on_counters = scene()[S.Microwave].related_to(cabinets, on_top)
     return Problem(
         constraints={
             "cabinet runs": cabinets.count().in_range(1, 4),
