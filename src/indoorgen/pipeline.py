@@ -23,10 +23,10 @@ from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints.evaluator import Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.sets import scene as scene_set
-from indoorgen.errors import ConfigError, InvalidGeometryError, UnknownPresetError
+from indoorgen.errors import ConfigError, IndoorGenError, InvalidGeometryError, UnknownPresetError
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated
-from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.floorplan.generate import WALL_RANGE, FloorplanConfig, generate_floorplan
 from indoorgen.model.floorplan_io import check_predefined, from_json
 from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.model.polygons import validate_polygon
@@ -44,7 +44,7 @@ from indoorgen.solver.anneal import AnnealConfig
 from indoorgen.solver.circulation import circulation_report
 from indoorgen.solver.full_mesh import full_mesh_check
 from indoorgen.solver.placement import planar
-from indoorgen.solver.stages import solve
+from indoorgen.solver.stages import STAGES, solve
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
@@ -74,6 +74,22 @@ def get_preset(name: str) -> Preset:
     except KeyError:
         raise UnknownPresetError(f"unknown preset {name!r}; valid: "
                                  + ", ".join(PRESETS)) from None
+
+
+#: the most annealing steps a stage may be given (the dense preset's largest is 1,400)
+MAX_STEPS = 100_000
+
+
+def stage_steps(preset: Preset, steps: dict[str, int] | None) -> dict[str, int]:
+    """The preset's annealing steps per stage, with the caller's `steps` over them; ConfigError
+    names an unknown stage or a count outside 0..MAX_STEPS."""
+    for stage, n in (steps or {}).items():
+        if stage not in STAGES:
+            raise ConfigError(f"steps for unknown stage {stage!r}; valid: {', '.join(STAGES)}")
+        if isinstance(n, bool) or not isinstance(n, int) or not 0 <= n <= MAX_STEPS:
+            raise ConfigError(f"steps[{stage!r}] = {n!r} is out of range; give an integer from 0 "
+                              f"to {MAX_STEPS}")
+    return {**preset.steps, **(steps or {})}
 
 
 def scene_fullness(seed: int, preset: Preset) -> float:
@@ -150,6 +166,9 @@ def _make_room(seed: int, cfg: GenerateConfig) -> Room:
             (w0, w1), (d0, d1) = spec.width, spec.depth
             w, d = round(float(rng.uniform(w0, w1)), 2), round(float(rng.uniform(d0, d1)), 2)
         poly = rectangle(w, d)
+    lo, hi = WALL_RANGE
+    if not (isinstance(cfg.wall_thickness, (int, float)) and lo <= cfg.wall_thickness <= hi):
+        raise ConfigError(f"wall thickness {cfg.wall_thickness!r} m is out of range [{lo:g}, {hi:g}]")
     height = cfg.height if cfg.height is not None else spec.height
     if not (1.8 <= height <= 12.0):
         raise InvalidGeometryError(f"wall height {height} m is out of range [1.8, 12.0]")
@@ -176,9 +195,15 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     program = cfg.program or get_program(cfg.room_type, fullness)
     problems = {room.name: _problem(program, room.name)}
     timings = {"architecture": time.perf_counter() - t0}
-    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
-                   steps={**preset.steps, **(cfg.steps or {})}, check=cfg.check,
-                   progress=progress)
+    try:
+        gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
+                       steps=stage_steps(preset, cfg.steps), check=cfg.check,
+                       progress=progress)
+    except IndoorGenError as e:  # a custom program's fault is named with the program
+        if cfg.program is None:
+            raise
+        raise type(e)(f"program {getattr(cfg.program, '__name__', cfg.program)!r} failed while "
+                      f"solving: {e}") from e
     gen.report["fullness"] = fullness
     _assess(gen)
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
@@ -234,7 +259,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
     timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
     gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
-                   steps={**preset.steps, **(cfg.steps or {})}, check=cfg.check,
+                   steps=stage_steps(preset, cfg.steps), check=cfg.check,
                    progress=progress)
     gen.report["fullness"] = fullness
     gen.scene.floorplan = floorplan_json(plan)

@@ -13,6 +13,9 @@ import numpy as np
 
 from indoorgen.errors import ConfigError
 
+#: the largest seed: scene.json records seeds as signed 64-bit integers
+MAX_SEED = 2**63 - 1
+
 
 def _key(part: str | int) -> int:
     if isinstance(part, (int, np.integer)):
@@ -22,8 +25,9 @@ def _key(part: str | int) -> int:
 
 def seed_sequence(seed: int, *path: str | int) -> np.random.SeedSequence:
     """The child `SeedSequence` of `seed` at `path` (the same spawn-key mechanism `spawn` uses)."""
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise ConfigError(f"seed must be a non-negative integer, got {seed!r}")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or \
+            not 0 <= seed <= MAX_SEED:
+        raise ConfigError(f"seed must be an integer from 0 to {MAX_SEED}, got {seed!r}")
     return np.random.SeedSequence(int(seed), spawn_key=tuple(_key(p) for p in path))
 
 

@@ -61,3 +61,12 @@ def test_score_terms_carry_weight_and_direction():
     low, high = n.minimize(2), n.maximize()
     assert (low.expr, low.weight, low.sign) == (n, 2.0, 1.0)
     assert (high.weight, high.sign) == (1.0, -1.0)
+
+
+@pytest.mark.parametrize("make", [lambda n: n.in_range(float("nan"), 2), lambda n: n.in_range(0, math.inf),
+                                  lambda n: n.hinge(-math.inf, 1), lambda n: n <= float("nan"),
+                                  lambda n: n.minimize(math.nan), lambda n: n + math.inf])
+def test_bounds_and_constants_must_be_finite(make):
+    """A NaN bound would make every comparison false: refused where the program is written."""
+    with pytest.raises(ConstraintError, match="must be a finite number"):
+        make(scene()[S.Chair].count())

@@ -94,6 +94,8 @@ def raises(room):
     return 1 / 0
 def not_a_problem(room):
     return 42
+def nan_bound(room):
+    return Problem(constraints={{"x": scene().count().in_range(float("nan"), 2)}})
 """
 
 
@@ -115,7 +117,9 @@ def not_a_problem(room):
     (["--program", "{prog}:raises"], "raised ZeroDivisionError: division by zero"),
     (["--program", "{prog}:not_a_problem"], "must return a Problem"),
     (["--program", "{prog}:bad_range"], "in_range(5, 2)"),
-    (["--program", "{prog}:bad_generator"], "unknown generator 'hovercraft'"),
+    (["--program", "{prog}:bad_generator"], "prog.py:bad_generator': unknown generator 'hovercraft'"),
+    (["--program", "{prog}:nan_bound"], "in_range's lower bound must be a finite number, got nan"),
+    (["--seed", str(2**63)], "--seed must be an integer from 0 to"),
     (["--out", "/proc/indoorgen_cannot_write_here"], "cannot write"),
     (["--preset", "turbo"], "unknown preset 'turbo'; valid: fast, default, dense"),
 ])

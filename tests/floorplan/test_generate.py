@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 import shapely.geometry as sg
 
+from indoorgen.errors import ConfigError
 from indoorgen.floorplan.check import floorplan_problems
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.floorplan.solve import FloorplanAnnealConfig
@@ -54,3 +55,15 @@ def test_fixed_area_and_contour():
                                                anneal=FloorplanAnnealConfig(steps_per_storey=30)))
     assert fp.storeys[0].contour().symmetric_difference(sg.Polygon(outline)).area < 1e-6
     assert floorplan_problems(fp, fp.info["contours"]) == []
+
+
+@pytest.mark.parametrize("cfg, needle", [
+    (FloorplanConfig(slab=-1.0), r"slab -1.0 is out of range \[0.05, 0.5\]"),
+    (FloorplanConfig(open_prob=7.0), "open_prob 7.0"),
+    (FloorplanConfig(exterior_wall=float("nan")), "exterior wall nan"),
+    (FloorplanConfig(anneal=FloorplanAnnealConfig(steps_per_storey=10**9)), "steps per storey"),
+    (FloorplanConfig(area=float("inf")), "--area inf is out of range"),
+])
+def test_settings_out_of_range_are_refused_before_any_work(cfg, needle):
+    with pytest.raises(ConfigError, match=needle):
+        generate_floorplan(0, cfg)

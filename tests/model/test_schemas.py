@@ -10,6 +10,7 @@ import pytest
 from indoorgen.errors import IndoorGenError
 from indoorgen.model.schemas import (
     MAX_DEPTH,
+    MAX_ITEMS,
     FloorplanFile,
     HomeContour,
     RoomGraph,
@@ -140,3 +141,31 @@ def test_huge_contours_are_refused():
         parse(HomeContour, {"contour": [[0, 0], [1e3, 0], [1e3, 1e3], [0, 1e3]]}, "--contour")
     with pytest.raises(SchemaError, match="at most 2000 m"):
         parse(HomeContour, {"contour": [[0, 0], [99, 0], [99, 99], [0, 99]]}, "--contour")
+
+
+def test_values_are_capped_before_parsing():
+    """A flat list of millions of numbers is refused from a scan, never parsed."""
+    flat = "[" + ",".join(["0.1"] * (MAX_ITEMS["polygon"] + 1)) + "]"
+    with pytest.raises(SchemaError, match="values and keys"):
+        read_json_text(flat, "--polygon", "polygon")
+    scene = "[" + ",".join(["0"] * (MAX_ITEMS["scene"] + 1)) + "]"
+    with pytest.raises(SchemaError, match="values and keys; a scene file holds at most"):
+        read_json_text(scene, "scene.json", "scene")
+
+
+def test_a_million_errors_are_described_by_the_first():
+    """20,000 objects of 50 unknown keys each: one line naming objects[0], its key and value,
+    and the count of the others, without listing them all."""
+    d = _scene(lambda d: None)
+    bad = {**d["objects"][0], **{f"k{i}": i for i in range(50)}}
+    d["objects"] = [{**bad, "name": f"o{j}"} for j in range(20_000)]
+    with pytest.raises(SchemaError) as e:
+        parse(SceneFile, d, "scene.json")
+    assert str(e.value) == ("scene.json: objects[0]: k0: Extra inputs are not permitted (got 0) "
+                            "(and 49 more problem(s))")
+
+
+def test_a_huge_value_is_shown_short():
+    with pytest.raises(SchemaError) as e:
+        parse(RoomPolygon, {"polygon": {"x": list(range(1_000_000))}}, "--polygon")
+    assert len(str(e.value)) < 200

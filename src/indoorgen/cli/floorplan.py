@@ -19,6 +19,7 @@ from indoorgen.model.floorplan_io import read_floorplan, write_floorplan
 from indoorgen.model.schemas import MAX_HOME_AREA, HomeContour, RoomGraph, parse, read_json_file
 from indoorgen.outputs import OVERWRITE_HELP, atomic_dir, check_writable
 from indoorgen.render.floorplan import draw_floorplan
+from indoorgen.rng import MAX_SEED
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -69,8 +70,8 @@ def run_floorplan(args: argparse.Namespace) -> int:
     """The command: validate arguments, generate or read, solidify, write, report one line."""
 
     t0 = time.perf_counter()
-    if args.seed < 0:
-        raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    if not 0 <= args.seed <= MAX_SEED:
+        raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
     if not 1 <= args.floors <= 3:
         raise ConfigError(f"--floors {args.floors} is out of range; a home has 1 to 3 storeys")
     if args.steps is not None and args.steps < 0:

@@ -34,6 +34,7 @@ from indoorgen.pipeline import (
     get_preset,
     write_scene_dir,
 )
+from indoorgen.rng import MAX_SEED
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -97,8 +98,8 @@ def _guarded(fn: Callable[..., Problem], spec: str) -> Callable[..., Problem]:
     def program(*args: Any, **kwargs: Any) -> Problem:
         try:
             return fn(*args, **kwargs)
-        except IndoorGenError:
-            raise
+        except IndoorGenError as e:  # a fault the program's DSL calls found: named with it
+            raise type(e)(f"--program {spec!r}: {e}") from e
         except Exception as e:  # the user's code: any error it makes is theirs to fix
             first = (str(e).strip().splitlines() or [""])[0]
             raise ConfigError(f"--program {spec!r} raised {type(e).__name__}: {first}") from e
@@ -124,8 +125,8 @@ def run_generate(args: argparse.Namespace) -> int:
     check_writable(out, overwrite=args.overwrite)
     formats = parse_formats(args.formats)
     get_preset(args.preset)  # a bad name fails here, before any work
-    if args.seed < 0:
-        raise ConfigError(f"--seed must be a non-negative integer, got {args.seed}")
+    if not 0 <= args.seed <= MAX_SEED:
+        raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
     _check_sizes(args)
     progress = not args.quiet and sys.stderr.isatty()
     room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]

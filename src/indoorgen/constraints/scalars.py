@@ -22,9 +22,15 @@ def as_scalar(x: ScalarLike) -> Scalar:
     """`x` as a scalar expression: numbers become constants (anything else is an error)."""
     if isinstance(x, Scalar):
         return x
-    if isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool):
-        return Const(float(x))
-    raise ConstraintError(f"expected a scalar expression or number, got {x!r}")
+    return Const(finite(x, "a constant"))
+
+
+def finite(x: Any, what: str) -> float:
+    """`x` as a float, or ConstraintError naming `what` unless it is a finite number."""
+    if isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool) \
+            and math.isfinite(x):
+        return float(x)
+    raise ConstraintError(f"{what} must be a finite number, got {x!r}")
 
 
 class Scalar(Node[float]):
@@ -62,9 +68,10 @@ class Scalar(Node[float]):
 
     def hinge(self, lo: float, hi: float) -> Scalar:
         """0 inside [lo, hi], growing linearly outside it."""
+        lo, hi = finite(lo, "hinge's lower bound"), finite(hi, "hinge's upper bound")
         if lo > hi:
-            raise ConstraintError(f"hinge({lo}, {hi}): lower bound exceeds upper bound")
-        return UnOp("hinge", self, (float(lo), float(hi)))
+            raise ConstraintError(f"hinge({lo:g}, {hi:g}): lower bound exceeds upper bound")
+        return UnOp("hinge", self, (lo, hi))
 
     # comparisons -> constraints
     def __le__(self, o: ScalarLike) -> Constraint: return Compare("<=", self, as_scalar(o))
@@ -79,18 +86,19 @@ class Scalar(Node[float]):
 
     def in_range(self, lo: float, hi: float) -> Constraint:
         """The constraint `lo <= self <= hi`."""
+        lo, hi = finite(lo, "in_range's lower bound"), finite(hi, "in_range's upper bound")
         if lo > hi:
-            raise ConstraintError(f"in_range({lo}, {hi}): the lower bound exceeds the upper; "
+            raise ConstraintError(f"in_range({lo:g}, {hi:g}): the lower bound exceeds the upper; "
                                   "write in_range(low, high) with low <= high")
-        return InRange(self, float(lo), float(hi))
+        return InRange(self, lo, hi)
 
     def minimize(self, weight: float = 1.0) -> ScoreTerm:
         """A score term that rewards a smaller value, weighted by `weight`."""
-        return ScoreTerm(self, float(weight), +1.0)
+        return ScoreTerm(self, finite(weight, "minimize's weight"), +1.0)
 
     def maximize(self, weight: float = 1.0) -> ScoreTerm:
         """A score term that rewards a larger value, weighted by `weight`."""
-        return ScoreTerm(self, float(weight), -1.0)
+        return ScoreTerm(self, finite(weight, "maximize's weight"), -1.0)
 
 
 class Const(Scalar):

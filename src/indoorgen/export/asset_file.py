@@ -18,6 +18,7 @@ from indoorgen.export.textures import TextureStore
 from indoorgen.export.usd.scene import write_usd_bundle
 from indoorgen.model.scene import Pose, Scene, SceneObject
 from indoorgen.outputs import atomic_file, check_writable
+from indoorgen.rng import MAX_SEED
 
 ASSET_EXTENSIONS = (".glb", ".obj", ".usd", ".usda", ".usdc", ".usdz")
 
@@ -31,8 +32,8 @@ def write_asset(name: str, seed: int, out: Path, overrides: dict[str, Any] | Non
     if ext not in ASSET_EXTENSIONS:
         raise OutputError(f"cannot write an asset to {str(out)!r}: the file name must end in "
                           + ", ".join(ASSET_EXTENSIONS))
-    if seed < 0:
-        raise ConfigError(f"--seed must be a non-negative integer, got {seed}")
+    if not 0 <= seed <= MAX_SEED:
+        raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {seed}")
     check_writable(out, directory=False)
     factory = get_factory(name)
     params = factory.sample_params(np.random.default_rng(seed))

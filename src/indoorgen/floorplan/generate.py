@@ -40,6 +40,7 @@ from indoorgen.floorplan.subdivide import MIN_SIDE, grow_hub, merge, mondrian
 from indoorgen.floorplan.view import GridPlan
 from indoorgen.model.floorplan import Floorplan, RoomSpec, Storey
 from indoorgen.model.room_types import ROOM_TYPES
+from indoorgen.model.schemas import MAX_HOME_AREA, MAX_STOREYS, HomeContour, parse
 from indoorgen.programs.floorplan import floorplan as default_program
 from indoorgen.rng import stream
 
@@ -222,16 +223,39 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
     return plan
 
 
+#: thickness ranges (m) of the slabs and walls a FloorplanConfig may ask for
+SLAB_RANGE, WALL_RANGE = (0.05, 0.5), (0.05, 0.6)
+#: the most annealing steps per storey a floorplan may be given (the default is 250)
+MAX_PLAN_STEPS = 100_000
+
+
+def check_config(cfg: FloorplanConfig) -> None:
+    """ConfigError naming the first setting of `cfg` outside what a home may have (the ranges
+    the command line allows), before any work: the Python API is held to the same bounds."""
+    if isinstance(cfg.floors, bool) or not isinstance(cfg.floors, (int, np.integer)) or \
+            not 1 <= cfg.floors <= MAX_STOREYS:
+        raise ConfigError(f"--floors {cfg.floors} is out of range; a home has 1 to {MAX_STOREYS} "
+                          "storeys")
+    if cfg.area is not None and not (isinstance(cfg.area, (int, float)) and
+                                     0 < cfg.area <= MAX_HOME_AREA):
+        raise ConfigError(f"--area {cfg.area} is out of range; a home's ground floor is over 0 "
+                          f"and at most {MAX_HOME_AREA:g} m^2")
+    if cfg.contour is not None:
+        parse(HomeContour, {"contour": cfg.contour}, "--contour")
+    ranges = {"storey height": (cfg.height, (2.2, 5.0)), "slab": (cfg.slab, SLAB_RANGE),
+              "interior wall": (cfg.interior_wall, WALL_RANGE),
+              "exterior wall": (cfg.exterior_wall, WALL_RANGE),
+              "open_prob": (cfg.open_prob, (0.0, 1.0)),
+              "annealing steps per storey": (cfg.anneal.steps_per_storey, (0, MAX_PLAN_STEPS))}
+    for what, (value, (lo, hi)) in ranges.items():
+        if not (isinstance(value, (int, float)) and lo <= value <= hi):
+            raise ConfigError(f"{what} {value} is out of range [{lo:g}, {hi:g}]")
+
+
 def build_plan(seed: int, cfg: FloorplanConfig, redraw: int = 0) -> GridPlan:
     """An initial plan satisfying the hard rules (before annealing); `redraw` > 0 draws it
     afresh (other attempt streams) after a finished plan failed `check.home_problems`."""
-    if isinstance(cfg.floors, bool) or not isinstance(cfg.floors, (int, np.integer)) or \
-            not 1 <= cfg.floors <= 3:
-        raise ConfigError(f"--floors {cfg.floors} is out of range; a home has 1 to 3 storeys")
-    if cfg.area is not None and not (cfg.area > 0 and math.isfinite(cfg.area)):
-        raise ConfigError(f"--area {cfg.area} must be a positive number of m^2")
-    if not 2.2 <= cfg.height <= 5.0:
-        raise ConfigError(f"storey height {cfg.height} m is out of range [2.2, 5.0]")
+    check_config(cfg)
     counts = parse_room_counts(cfg.rooms)
     user_fixed = bool(counts) or cfg.area is not None or cfg.contour is not None or \
         cfg.graph is not None

@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import reprlib
 from os import PathLike
 from pathlib import Path
 from typing import Annotated, Any, Literal, TypeVar
@@ -26,6 +27,7 @@ from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, mode
 
 from indoorgen.errors import ConfigError
 from indoorgen.model.room_types import ROOM_TYPES
+from indoorgen.rng import MAX_SEED
 
 #: the version of every file's schema: scene.json's `format_version`, and floorplan.json's, a
 #: contour's and a room graph's (optional there, 1 when absent)
@@ -56,7 +58,6 @@ MAX_OBJECTS = 20_000        # objects in one scene
 MAX_LIST = 256              # doors, windows, tags, relations, list parameters...
 MAX_NAME = 200              # characters of a name or a relation string
 MAX_DEPTH = 20              # nesting of brackets
-MAX_SEED = 2**63 - 1
 #: file size caps (bytes) by file kind; a two-storey home of 21 rooms and 281 objects writes a
 #: 0.26 MB scene.json
 MAX_BYTES = {"scene": 32 << 20, "floorplan": 8 << 20, "polygon": 1 << 20, "contour": 1 << 20,
@@ -67,6 +68,12 @@ _PLAN_ARRAYS = MAX_STOREYS * MAX_ROOMS * (MAX_VERTICES + 1) + 4 * MAX_STOREYS * 
 MAX_ARRAYS = {"scene": _PLAN_ARRAYS + MAX_ROOMS * (MAX_VERTICES + 2) + MAX_OBJECTS * 8,
               "floorplan": _PLAN_ARRAYS, "polygon": 2 * MAX_VERTICES, "contour": 2 * MAX_VERTICES,
               "graph": MAX_STOREYS * MAX_ROOMS * 6}
+#: values and keys (counted as commas before parsing) a file of each kind may hold: a
+#: floorplan's points and lists, and 64 per object of a scene (a furnished object writes ~35)
+_PLAN_ITEMS = MAX_STOREYS * MAX_ROOMS * (2 * MAX_VERTICES + 8) + 4 * MAX_STOREYS * MAX_LIST * 8
+MAX_ITEMS = {"scene": _PLAN_ITEMS + MAX_ROOMS * (2 * MAX_VERTICES + 16) + MAX_OBJECTS * 64,
+             "floorplan": _PLAN_ITEMS, "polygon": 4 * MAX_VERTICES, "contour": 4 * MAX_VERTICES,
+             "graph": MAX_STOREYS * MAX_ROOMS * 12}
 
 Coord = Annotated[float, Strict(), Field(ge=-MAX_COORD, le=MAX_COORD, allow_inf_nan=False)]
 Point = tuple[Coord, Coord]
@@ -293,6 +300,22 @@ class SceneFile(_Model):
                                                                  allow_inf_nan=False)]],
                      Field(max_length=MAX_LIST)] | None = None
 
+    @model_validator(mode="before")
+    @classmethod
+    def _objects_one_by_one(cls, data: Any) -> Any:
+        """Objects checked one at a time, up to the first bad one: 20,000 hostile objects can
+        hold a million errors, too many to list (they would cost seconds and a GB)."""
+        objects = data.get("objects") if isinstance(data, dict) else None
+        if not isinstance(objects, list) or len(objects) > MAX_OBJECTS:
+            return data  # the field's own check names the fault
+        checked = []
+        for i, record in enumerate(objects):
+            try:
+                checked.append(SceneObjectRecord.model_validate(record))
+            except ValidationError as e:
+                raise ValueError(describe(e, f"objects[{i}]", record)) from None
+        return {**data, "objects": checked}
+
     @model_validator(mode="after")
     def _references(self) -> SceneFile:
         rooms = {r.name for r in self.rooms}
@@ -407,35 +430,40 @@ def nesting_depth(text: str) -> int:
     return _scan(text)[0]
 
 
-def _scan(text: str) -> tuple[int, int]:
-    """(deepest nesting of brackets, number of arrays) in JSON `text`, strings left out; in
-    chunks, so a file's scan costs a few tens of MB whatever its size."""
+def _scan(text: str) -> tuple[int, int, int]:
+    """(deepest nesting of brackets, number of arrays, number of commas: about the number of
+    values and keys) in JSON `text`, strings left out; in chunks, so a file's scan costs a few
+    tens of MB whatever its size."""
     bare = np.frombuffer(_STRING.sub('""', text).encode("utf-8", "replace"), np.uint8)
-    depth = deepest = arrays = 0
+    depth = deepest = arrays = commas = 0
     for i in range(0, len(bare), _SCAN_CHUNK):
         b = bare[i:i + _SCAN_CHUNK]
         opens = b == ord("[")
         arrays += int(opens.sum())
+        commas += int(np.count_nonzero(b == ord(",")))
         step = (opens | (b == ord("{"))).astype(np.int8) \
             - ((b == ord("]")) | (b == ord("}"))).astype(np.int8)
         run = np.cumsum(step, dtype=np.int64) + depth
         deepest, depth = max(deepest, int(run.max())), int(run[-1])
-    return deepest, arrays
+    return deepest, arrays, commas
 
 
 def read_json_text(text: str, what: str, kind: str) -> Any:
     """Parse JSON `text` (the contents of `what`, a file of `kind`) with its size, nesting and
-    number of arrays capped first; SchemaError names the cap or the JSON error."""
+    numbers of arrays and values capped first; SchemaError names the cap or the JSON error."""
     cap = MAX_BYTES[kind]
     if len(text) > cap:
         raise SchemaError(f"{what} is {len(text)} bytes; a {kind} file holds at most {cap} bytes")
-    depth, arrays = _scan(text)
+    depth, arrays, commas = _scan(text)
     if depth > MAX_DEPTH:
         raise SchemaError(f"{what} nests brackets {depth} deep; a {kind} file nests at most "
                           f"{MAX_DEPTH} deep")
     if arrays > MAX_ARRAYS[kind]:
         raise SchemaError(f"{what} holds {arrays} arrays (points, lists); a {kind} file holds "
                           f"at most {MAX_ARRAYS[kind]}")
+    if commas >= MAX_ITEMS[kind]:
+        raise SchemaError(f"{what} holds over {commas} values and keys; a {kind} file holds at "
+                          f"most {MAX_ITEMS[kind]}")
     try:
         return json.loads(text)
     except (ValueError, RecursionError) as e:
@@ -469,15 +497,16 @@ def parse(schema: type[M], data: Any, what: str) -> M:
     try:
         return schema.model_validate(data)
     except ValidationError as e:
-        raise SchemaError(describe(e, what)) from None
+        raise SchemaError(describe(e, what, data)) from None
     except RecursionError:
         raise SchemaError(f"{what} nests too deep") from None
 
 
-def describe(error: ValidationError, what: str) -> str:
-    """One line for a ValidationError: where, what is wrong, the value given."""
-    errs = error.errors(include_url=False)
-    first = errs[0]
+def describe(error: ValidationError, what: str, data: Any = None) -> str:
+    """One line for a ValidationError: where, what is wrong, the value given (looked up in
+    `data`). Only the first error is decoded: a hostile file can hold a million of them."""
+    errors = error.json(include_url=False, include_context=False, include_input=False)
+    first, _ = json.JSONDecoder().raw_decode(errors, 1)
     path = list(first["loc"])
     if first["type"] == "missing":
         key = path.pop()
@@ -488,14 +517,29 @@ def describe(error: ValidationError, what: str) -> str:
     where = f"{what}: {loc}: " if loc else f"{what}: "
     if first["type"] == "missing":
         where = f"{what}: {loc} " if loc else f"{what} "
-    got = "" if first["type"] in ("value_error", "missing") else f" (got {_short(first['input'])})"
-    more = f" (and {len(errs) - 1} more problem(s))" if len(errs) > 1 else ""
+    got = "" if first["type"] in ("value_error", "missing") else \
+        _got(data, first["loc"])
+    n = error.error_count()
+    more = f" (and {n - 1} more problem(s))" if n > 1 else ""
     return f"{where}{msg}{got}{more}"
 
 
+def _got(data: Any, loc: list[Any]) -> str:
+    """' (got VALUE)' for the value at `loc` in `data`, or '' where the path leads nowhere (a
+    location pydantic names by a tag or an alias)."""
+    for key in loc:
+        try:
+            data = data[key]
+        except (KeyError, IndexError, TypeError):
+            return ""
+    return f" (got {_short(data)})"
+
+
 def _short(value: Any) -> str:
-    """`value`'s repr cut to one short line."""
-    r = repr(value).replace("\n", " ")
+    """`value`'s repr cut to one short line (bounded work, whatever `value`'s size)."""
+    short = reprlib.Repr()
+    short.maxlevel, short.maxlist, short.maxdict, short.maxstring = 2, 6, 4, 50
+    r = short.repr(value).replace("\n", " ")
     return r if len(r) <= 60 else r[:57] + "..."
 
 
