@@ -59,6 +59,8 @@ class MoveContext:
     temperature: float
     #: tag sets already warned about (no generator has them), so each is logged once
     unknown_tags: set[frozenset] = field(default_factory=set)
+    #: the last bounds found and the evaluator's change count they were found at
+    _bounds: tuple[int, list[Bound]] | None = field(default=None, init=False, repr=False)
 
     def mine(self) -> list[str]:
         """This room's objects of this stage, in name order (what moves may touch)."""
@@ -67,9 +69,13 @@ class MoveContext:
     def bounds(self) -> list[Bound]:
         """The count bounds of this stage's contexts in the current state (what may be added or
         deleted)."""
+        if self._bounds is not None and self._bounds[0] == self.ev.changes:
+            return self._bounds[1]  # nothing was notified since: the same state, the same bounds
         rooms = frozenset(self.state.rooms)
-        return [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
-                if b.stage(rooms) == self.stage]
+        found = [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
+                 if b.stage(rooms) == self.stage]
+        self._bounds = (self.ev.changes, found)
+        return found
 
     def pick(self, items: Sequence[_T]) -> _T:
         """One of `items`, uniformly at random."""
