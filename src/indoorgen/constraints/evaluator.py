@@ -86,6 +86,7 @@ class Evaluator:
         self._dirty: set[Key] = set()
         self._suspect: set[Key] = set()
         self._frames: list[_Frame] = []
+        self._key_vars: dict[int, tuple[int, ...]] = {}  # node uid -> its key_vars
         self._all_roots: list[tuple[RootKey, Node[float]]] = [
             (("c", n), c) for n, c in problem.constraints.items()]
         self._all_roots += [(("s", n), t.expr) for n, t in problem.score_terms.items()]
@@ -98,7 +99,11 @@ class Evaluator:
     # -- the interface nodes use while computing ------------------------------------------
     def get(self, node: Node[V], env: Env) -> V:
         """The value of `node` under loop bindings `env`, from cache when still valid."""
-        key = (node.uid, tuple([env[v] for v in node.key_vars]))
+        uid = node.uid
+        kv = self._key_vars.get(uid)
+        if kv is None:
+            kv = self._key_vars[uid] = node.key_vars
+        key = (uid, tuple([env[v] for v in kv]) if kv else ())
         e = self._entries.get(key)
         if e is None or key in self._suspect:  # else clean: its cached value holds
             e = self._refresh(key, node, env)
