@@ -1,6 +1,6 @@
 """Home benchmark: seconds per furnished home and how walkable it is.
 
-    python benchmarks/home.py [--homes1 30] [--homes2 10] [--seed0 0]
+    python benchmarks/home.py [--homes1 30] [--homes2 10] [--seed0 0] [--workers 1]
 
 Generates 1-storey homes for seeds seed0..seed0+homes1-1 and 2-storey homes for
 seed0..seed0+homes2-1 (`pipeline.generate_home`, default settings) and prints, per storey count:
@@ -22,10 +22,10 @@ from indoorgen.pipeline import HomeConfig, generate_home
 from indoorgen.quality.navigation import navigability, navigation_report
 
 
-def one(seed: int, floors: int) -> dict:
+def one(seed: int, floors: int, workers: int = 1) -> dict:
     t0 = time.perf_counter()
     try:
-        gen = generate_home(seed, HomeConfig(floors=floors))
+        gen = generate_home(seed, HomeConfig(floors=floors, workers=workers))
     except Exception as e:  # reported, not fatal: the benchmark counts failures
         return {"seed": seed, "error": f"{type(e).__name__}: {e}"}
     t1 = time.perf_counter()
@@ -80,11 +80,12 @@ def main() -> None:
     ap.add_argument("--homes1", type=int, default=30, help="1-storey homes")
     ap.add_argument("--homes2", type=int, default=10, help="2-storey homes")
     ap.add_argument("--seed0", type=int, default=0, help="first seed")
+    ap.add_argument("--workers", type=int, default=1, help="processes solving rooms")
     args = ap.parse_args()
     columns = {}
     for floors, n in ((1, args.homes1), (2, args.homes2)):
         if n > 0:
-            runs = [one(s, floors) for s in range(args.seed0, args.seed0 + n)]
+            runs = [one(s, floors, args.workers) for s in range(args.seed0, args.seed0 + n)]
             columns[floors] = summary(floors, runs)
             for r in runs:
                 if "error" in r:

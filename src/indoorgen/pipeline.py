@@ -5,6 +5,7 @@ room architecture -> constraint program -> staged solve -> full-mesh check -> Sc
 """
 from __future__ import annotations
 
+import functools
 import json
 import logging
 import time
@@ -44,8 +45,9 @@ from indoorgen.solver.anneal import AnnealConfig
 from indoorgen.solver.circulation import circulation_report
 from indoorgen.solver.full_mesh import full_mesh_check
 from indoorgen.solver.placement import planar
-from indoorgen.solver.stages import STAGES, solve
+from indoorgen.solver.stages import STAGES, evaluators_for, merge, solve
 from indoorgen.solver.state import State
+from indoorgen.solver.workers import solve_rooms
 
 log = logging.getLogger(__name__)
 
@@ -226,9 +228,13 @@ class HomeConfig:
     #: how the room doors stand: "open", "closed" or "random" (architecture.doors.DOOR_MODES)
     doors: str = "open"
     preset: str = "default"
+    #: processes solving rooms in parallel (1: in this process). Not recorded in scene.json:
+    #: any number gives the same scene, byte for byte.
+    workers: int = 1
 
     def to_json(self) -> dict:
-        """The settings as recorded in scene.json (a predefined floorplan as a flag)."""
+        """The settings as recorded in scene.json (a predefined floorplan as a flag; not the
+        number of workers, which changes nothing in the scene)."""
         return {"home": True, "floors": self.floors, "doors": self.doors,
                 "rooms": self.rooms if isinstance(self.rooms, (str, type(None))) else dict(self.rooms),
                 "area": self.area, "contour": self.contour,
@@ -242,6 +248,8 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     furnished by its program. Same seed + config + version => same scene."""
     cfg = config or HomeConfig()
     check_door_mode(cfg.doors)
+    if isinstance(cfg.workers, bool) or not isinstance(cfg.workers, int) or cfg.workers < 1:
+        raise ConfigError(f"workers must be a positive integer, got {cfg.workers!r}")
     preset = get_preset(cfg.preset)
     t0 = time.perf_counter()
     if cfg.floorplan is not None:
@@ -255,12 +263,14 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     arch = solidify(plan, seed=seed, doors=cfg.doors)
     geometry = room_geometries(arch)
     fullness = scene_fullness(seed, preset)
-    problems = {name: _problem(get_program(g.room.room_type, fullness), name)
+    problems = {name: _home_problem(g.room.room_type, fullness, name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
     timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
     gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
                    steps=stage_steps(preset, cfg.steps), check=cfg.check,
-                   progress=progress)
+                   progress=progress, workers=cfg.workers,
+                   make_problem=functools.partial(_room_problem, _room_types(geometry),
+                                                  fullness))
     gen.report["fullness"] = fullness
     gen.scene.floorplan = floorplan_json(plan)
     gen.scene.doors = arch.door_states
@@ -281,6 +291,21 @@ def _assess(gen: Generated) -> None:
     gen.report["timings_s"]["quality"] = round(time.perf_counter() - t, 4)
 
 
+def _home_problem(room_type: str, fullness: float, room: str) -> Problem:
+    """The built-in program of `room_type` at `fullness`, for the room called `room`."""
+    return _problem(get_program(room_type, fullness), room)
+
+
+def _room_types(geometry: dict[str, RoomGeometry]) -> dict[str, str]:
+    """Each room's type, by room name."""
+    return {name: g.room.room_type for name, g in geometry.items()}
+
+
+def _room_problem(room_types: dict[str, str], fullness: float, room: str) -> Problem:
+    """A home room's problem, built from picklable facts (what a worker process is sent)."""
+    return _home_problem(room_types[room], fullness, room)
+
+
 def _problem(program: Callable[..., Problem], room: str) -> Problem:
     problem = program(_room_set(room))
     if not isinstance(problem, Problem):
@@ -290,14 +315,26 @@ def _problem(program: Callable[..., Problem], room: str) -> Problem:
 
 
 def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, Problem],
-             config: dict, timings: dict[str, float], *, steps, check: bool, progress: bool
+             config: dict, timings: dict[str, float], *, steps, check: bool, progress: bool,
+             workers: int = 1, make_problem: Callable[[str], Problem] | None = None
              ) -> Generated:
-    """Solve every room's problem, re-check with full meshes and package the Scene."""
+    """Solve every room's problem (in `workers` processes if `make_problem` rebuilds each
+    room's problem there), re-check with full meshes and package the Scene."""
     cache = AssetCache()
     state = State(geometry, cache)
     t1 = time.perf_counter()
-    stats, evaluators = solve(state, problems, seed, config=AnnealConfig(check=check),
-                              steps=steps, progress=progress)
+    anneal = AnnealConfig(check=check)
+    if workers > 1 and make_problem is not None and len(problems) > 1:
+        solutions, full = solve_rooms(geometry, make_problem, sorted(problems), seed,
+                                      workers=min(workers, len(problems)), config=anneal,
+                                      steps=steps, progress=progress)
+        for generator, params, asset in full:
+            cache.adopt_full(generator, params, asset)
+        stats = merge(state, solutions)
+        evaluators = evaluators_for(state, problems, check=check)
+    else:
+        stats, evaluators = solve(state, problems, seed, config=anneal, steps=steps,
+                                  progress=progress)
     timings["solve"] = time.perf_counter() - t1
 
     t2 = time.perf_counter()

@@ -74,3 +74,26 @@ def test_make_namer_counts_per_generator_in_creation_order():
     assert [name("cup"), name("plate"), name("cup"), name("cup")] == ["cup_0", "plate_0", "cup_1",
                                                                        "cup_2"]
     assert make_namer()("cup") == "cup_0"  # each namer counts afresh
+
+
+def test_rooms_are_solved_apart_and_named_as_one_namer_would():
+    """Each room is solved in a state holding no other room's objects, with its own namer; the
+    merge then numbers every generator's objects room after room, so names stay unique."""
+    rooms = {r: build_room(Room(r, "living_room", rectangle(4.0, 3.0))) for r in ("a_room", "b_room")}
+    st = State(rooms, AssetCache())
+    solve(st, {r: _program(r) for r in rooms}, seed=3, steps=FEW)
+    alone = State({"b_room": rooms["b_room"]}, AssetCache())
+    solve(alone, {"b_room": _program("b_room")}, seed=3, steps=FEW)
+    assert_consistent(st)
+    # b_room's solution does not depend on a_room: the same poses as when solved alone
+    poses = sorted((o.generator, tuple(o.position.round(9)), o.yaw)
+                   for o in st.objects.values() if o.room == "b_room")
+    assert poses == sorted((o.generator, tuple(o.position.round(9)), o.yaw)
+                           for o in alone.objects.values())
+    by_gen: dict[str, list[int]] = {}
+    for name, ob in st.objects.items():
+        assert name.startswith(ob.generator + "_")
+        by_gen.setdefault(ob.generator, []).append(int(name.rpartition("_")[2]))
+        for p in ob.placements:  # parents renamed with their children
+            assert p.parent in st.rooms or st.objects[p.parent].room == ob.room
+    assert all(len(set(ns)) == len(ns) for ns in by_gen.values())

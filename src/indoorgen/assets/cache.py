@@ -60,6 +60,16 @@ class AssetCache:
             self.builds += 1
         return a
 
+    def adopt_placeholder(self, generator: str, params: dict[str, Any], asset: Asset) -> Asset:
+        """The cached placeholder for these params, or `asset` (built for them elsewhere, e.g.
+        in a worker process) cached as it."""
+        return self._placeholders.setdefault(params_key(generator, params), asset)
+
+    def adopt_full(self, generator: str, params: dict[str, Any], asset: Asset) -> Asset:
+        """The cached detailed asset for these params, or `asset` (built for them elsewhere)
+        cached as it."""
+        return self._full.setdefault(params_key(generator, params), asset)
+
     def full(self, generator: str, params: dict[str, Any]) -> Asset:
         """The generator's detailed asset for these params (built once)."""
         key = params_key(generator, params)

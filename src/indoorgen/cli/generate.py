@@ -48,6 +48,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
     home.add_argument("--doors", help="room door leaves: " + "|".join(DOOR_MODES)
                       + " (default open; random: each door open or shut, from the seed)")
+    home.add_argument("--workers", type=int, default=1,
+                      help="processes solving the home's rooms in parallel (default 1); any "
+                      "number gives the same scene")
     g.add_argument("--room",
                    help="one room of this type instead of a home: " + ", ".join(ROOM_TYPES))
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
@@ -127,6 +130,8 @@ def run_generate(args: argparse.Namespace) -> int:
     get_preset(args.preset)  # a bad name fails here, before any work
     if not 0 <= args.seed <= MAX_SEED:
         raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
+    if args.workers < 1:
+        raise ConfigError(f"--workers must be a positive integer, got {args.workers}")
     _check_sizes(args)
     progress = not args.quiet and sys.stderr.isatty()
     room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
@@ -194,4 +199,4 @@ def _home_config(args: argparse.Namespace) -> HomeConfig:
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
                       floorplan=plan, check=args.check, doors=args.doors or "open",
-                      preset=args.preset)
+                      preset=args.preset, workers=args.workers)

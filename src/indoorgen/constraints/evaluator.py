@@ -86,17 +86,27 @@ class Evaluator:
         self._dirty: set[Key] = set()
         self._suspect: set[Key] = set()
         self._frames: list[_Frame] = []
+        self._key_vars: dict[int, tuple[int, ...]] = {}  # node uid -> its key_vars
         self._all_roots: list[tuple[RootKey, Node[float]]] = [
             (("c", n), c) for n, c in problem.constraints.items()]
         self._all_roots += [(("s", n), t.expr) for n, t in problem.score_terms.items()]
         self._roots = self._all_roots
         self.recomputed = 0  # entries recomputed since construction (for tests and benchmarks)
+        #: how many times `notify` was called: while it stays the same, nothing changed, so a
+        #: caller may keep what it derived from the values (the solver's count bounds)
+        self.changes = 0
 
     # -- the interface nodes use while computing ------------------------------------------
     def get(self, node: Node[V], env: Env) -> V:
         """The value of `node` under loop bindings `env`, from cache when still valid."""
-        key = (node.uid, tuple([env[v] for v in node.key_vars]))
-        e = self._refresh(key, node, env)
+        uid = node.uid
+        kv = self._key_vars.get(uid)
+        if kv is None:
+            kv = self._key_vars[uid] = node.key_vars
+        key = (uid, tuple([env[v] for v in kv]) if kv else ())
+        e = self._entries.get(key)
+        if e is None or key in self._suspect:  # else clean: its cached value holds
+            e = self._refresh(key, node, env)
         if self._frames:
             self._frames[-1][1][key] = e.version
         value: V = e.value
@@ -123,6 +133,7 @@ class Evaluator:
         """Tell the evaluator which objects moved or changed relations/params (`changed`), were
         added or were deleted since the last evaluation, and which parents gained or lost a
         related object without an addition or deletion (`relinked`: a reassigned parent)."""
+        self.changes += 1
         added_l, removed_l = list(added), list(removed)
         dirty: set[Key] = set()
         for o in list(changed) + removed_l:
@@ -197,12 +208,14 @@ class Evaluator:
         if e is not None and key not in self._dirty:
             # suspect: recompute only if one of its inputs really changed
             unchanged = True
+            entries, suspect = self._entries, self._suspect
             for ck, ver in list(e.inputs.items()):
-                ce = self._entries.get(ck)
+                ce = entries.get(ck)
                 if ce is None:
                     unchanged = False
                     break
-                ce = self._refresh(ck, ce.node, ce.env)
+                if ck in suspect:  # a clean input is up to date already
+                    ce = self._refresh(ck, ce.node, ce.env)
                 if ce.version != ver:
                     unchanged = False
                     break

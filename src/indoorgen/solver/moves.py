@@ -59,6 +59,11 @@ class MoveContext:
     temperature: float
     #: tag sets already warned about (no generator has them), so each is logged once
     unknown_tags: set[frozenset] = field(default_factory=set)
+    #: generators by (tags, excluded tags): the catalogue does not change during a solve
+    _generators: dict[tuple[frozenset, frozenset], list[str]] = field(
+        default_factory=dict, init=False, repr=False)
+    #: the last bounds found and the evaluator's change count they were found at
+    _bounds: tuple[int, list[Bound]] | None = field(default=None, init=False, repr=False)
 
     def mine(self) -> list[str]:
         """This room's objects of this stage, in name order (what moves may touch)."""
@@ -67,9 +72,21 @@ class MoveContext:
     def bounds(self) -> list[Bound]:
         """The count bounds of this stage's contexts in the current state (what may be added or
         deleted)."""
+        if self._bounds is not None and self._bounds[0] == self.ev.changes:
+            return self._bounds[1]  # nothing was notified since: the same state, the same bounds
         rooms = frozenset(self.state.rooms)
-        return [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
-                if b.stage(rooms) == self.stage]
+        found = [b for b in find_bounds(self.problem, self.ev, self.active_constraints)
+                 if b.stage(rooms) == self.stage]
+        self._bounds = (self.ev.changes, found)
+        return found
+
+    def generators(self, tags: frozenset, excluded: frozenset) -> list[str]:
+        """Names of the generators with all of `tags` and none of `excluded` (sorted)."""
+        key = (frozenset(tags), frozenset(excluded))
+        got = self._generators.get(key)
+        if got is None:
+            got = self._generators[key] = factories_with(tags, excluded)
+        return got
 
     def pick(self, items: Sequence[_T]) -> _T:
         """One of `items`, uniformly at random."""
@@ -287,7 +304,7 @@ def add(ctx: MoveContext) -> MoveOutcome | None:
         return None
     below = [b for b in bounds if b.below]
     b = ctx.pick(below if below and ctx.rng.random() < 0.85 else bounds)
-    gens = factories_with(b.context.tags, b.context.excluded)
+    gens = ctx.generators(b.context.tags, b.context.excluded)
     if b.context.generator is not None:
         gens = [g for g in gens if g == b.context.generator]
     if not gens:

@@ -1,10 +1,18 @@
 """The staged solve (Infinigen Indoors, algorithm 1): per room, anneal the large objects, then the
 medium, then the small; each stage sees earlier stages' objects as fixed. Every room's program
-gets the circulation constraint here (`solver.circulation`), so every room keeps a walkway."""
+gets the circulation constraint here (`solver.circulation`), so every room keeps a walkway.
+
+Rooms are solved independently: each with its own random streams and its own namer, in a state
+holding no other room's objects (walls keep rooms apart), so a room's solution never depends on
+another's and rooms may be solved in any order or in parallel (`solver.workers`). Once all are
+solved, `merge` names every object as one namer counting room after room (in name order) would
+have, and puts them back into the state.
+"""
 from __future__ import annotations
 
 import logging
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, replace
 
 from tqdm import tqdm
 
@@ -14,7 +22,7 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.circulation import with_circulation
-from indoorgen.solver.state import State
+from indoorgen.solver.state import ObjState, State
 
 log = logging.getLogger(__name__)
 
@@ -24,9 +32,10 @@ STAGES = tuple(STAGE_ORDER)
 DEFAULT_STEPS = {"large": 350, "medium": 300, "small": 450}
 
 
-def make_namer() -> Callable[[str], str]:
-    """Names objects `<generator>_<n>`, counting per generator in the order they are created."""
-    counts: dict[str, int] = {}
+def make_namer(counts: dict[str, int] | None = None) -> Callable[[str], str]:
+    """Names objects `<generator>_<n>`, counting per generator in the order they are created
+    (into `counts`, if given, so the caller can read how many names each generator took)."""
+    counts = {} if counts is None else counts
 
     def name(generator: str) -> str:
         counts[generator] = counts.get(generator, 0) + 1
@@ -34,27 +43,92 @@ def make_namer() -> Callable[[str], str]:
     return name
 
 
-def solve(state: State, problems: dict[str, Problem], seed: int, *,
-          config: AnnealConfig | None = None, steps: dict[str, int] | None = None,
-          progress: bool = False) -> tuple[list[StageStats], dict[str, Evaluator]]:
-    """Solve every room's problem, with its circulation constraint added, in turn, stage by
-    stage, mutating `state`. The evaluators returned evaluate those extended problems."""
+@dataclass
+class RoomSolution:
+    """One room solved on its own: its stages' stats, its objects (names from the room's own
+    namer, no collision pieces: they can cross a process boundary) and how many names its namer
+    gave per generator (deleted objects' names included)."""
+
+    room: str
+    stats: list[StageStats]
+    objects: list[ObjState]
+    named: dict[str, int]
+
+
+def solve_room(state: State, room: str, problem: Problem, seed: int, *,
+               config: AnnealConfig | None = None, steps: dict[str, int] | None = None
+               ) -> RoomSolution:
+    """Solve one room's problem (circulation added), stage by stage, then take its objects out
+    of `state` (which must hold no object of this room to start with) into the solution."""
     config = config or AnnealConfig()
-    problems = {room: with_circulation(p, room) for room, p in problems.items()}
+    problem = with_circulation(problem, room)
     steps = {**DEFAULT_STEPS, **(steps or {})}
-    namer = make_namer()
-    stats: list[StageStats] = []
-    evaluators: dict[str, Evaluator] = {}
-    jobs = [(room, stage) for room in sorted(problems) for stage in STAGES]
-    bar = tqdm(jobs, desc="solving", unit="stage", disable=not progress, leave=False)
-    for room, stage in bar:
-        ev = evaluators.get(room)
-        if ev is None:
-            ev = evaluators[room] = Evaluator(problems[room], state, check=config.check)
-        bar.set_postfix_str(f"{room}: {stage}")
+    named: dict[str, int] = {}
+    namer = make_namer(named)
+    ev = Evaluator(problem, state, check=config.check)
+    stats = []
+    for stage in STAGES:
         rng = stream(seed, "room", room, "solve", stage)
-        st = Annealer(state, problems[room], ev, room, stage, rng, config, namer).run(steps[stage])
+        st = Annealer(state, problem, ev, room, stage, rng, config, namer).run(steps[stage])
         log.info("%s/%s: %d objects, violation %.3g, loss %.3g in %.2fs", room, stage,
                  st.objects, st.violation, st.loss, st.seconds)
         stats.append(st)
-    return stats, evaluators
+    mine = [n for n, ob in state.objects.items() if ob.room == room]
+    objects = [_detached(state.objects[n]) for n in mine]
+    for n in reversed(mine):
+        state.remove(n)
+    return RoomSolution(room, stats, objects, named)
+
+
+def _detached(ob: ObjState) -> ObjState:
+    """A copy of `ob` without what belongs to one process's solve (collision pieces, the counted
+    context it was added to): what `merge` needs, picklable."""
+    return replace(ob, cobjs=[], boxes=None, n_solid=0, free_pending=False, context=None,
+                   env={}, placements=[replace(p) for p in ob.placements])
+
+
+def merge(state: State, solutions: Iterable[RoomSolution]) -> list[StageStats]:
+    """Put every room's objects into `state` under their final names: counted per generator
+    room after room in name order, as one namer would have named them. Returns every stage's
+    stats, rooms in name order."""
+    offset: dict[str, int] = {}
+    stats: list[StageStats] = []
+    for sol in sorted(solutions, key=lambda s: s.room):
+        def final(name: str, sol: RoomSolution = sol) -> str:
+            gen, _, n = name.rpartition("_")
+            return f"{gen}_{offset.get(gen, 0) + int(n)}"
+        local = {ob.name for ob in sol.objects}
+        for ob in sol.objects:
+            ob.name = final(ob.name)
+            for p in ob.placements:
+                if p.parent in local:
+                    p.parent = final(p.parent)
+            ob.asset = state.cache.adopt_placeholder(ob.generator, ob.params, ob.asset)
+            state.add(ob)
+        for gen, k in sol.named.items():
+            offset[gen] = offset.get(gen, 0) + k
+        stats.extend(sol.stats)
+    return stats
+
+
+def evaluators_for(state: State, problems: dict[str, Problem], *, check: bool = False
+                   ) -> dict[str, Evaluator]:
+    """An evaluator per room of its problem with circulation added, over the merged state."""
+    return {room: Evaluator(with_circulation(p, room), state, check=check)
+            for room, p in sorted(problems.items())}
+
+
+def solve(state: State, problems: dict[str, Problem], seed: int, *,
+          config: AnnealConfig | None = None, steps: dict[str, int] | None = None,
+          progress: bool = False) -> tuple[list[StageStats], dict[str, Evaluator]]:
+    """Solve every room's problem, with its circulation constraint added, one room after the
+    other in this process, and put the results into `state`. The evaluators returned evaluate
+    those extended problems."""
+    config = config or AnnealConfig()
+    solutions = []
+    for room in tqdm(sorted(problems), desc="solving", unit="room", disable=not progress,
+                     leave=False):
+        solutions.append(solve_room(state, room, problems[room], seed, config=config,
+                                    steps=steps))
+    stats = merge(state, solutions)
+    return stats, evaluators_for(state, problems, check=config.check)

@@ -105,6 +105,9 @@ class State:
         self.objects: dict[str, ObjState] = {}
         self._room_tags = {n: frozenset({Semantics.Room, g.room.room_type}) for n, g in rooms.items()}
         self._room_surfaces = {n: {s.name: s for s in g.surfaces} for n, g in rooms.items()}
+        # rooms never change: their outlines are built once (terms ask for them every step)
+        self._room_polygons = {n: sg.Polygon(g.room.polygon) for n, g in rooms.items()}
+        self._room_rings = {n: p.exterior for n, p in self._room_polygons.items()}
         self._ids = frozenset(rooms)
         self._geo: dict[str, dict] = {}
         self._children: dict[str, set[str]] = {}
@@ -171,7 +174,7 @@ class State:
         half height)."""
         if o in self.rooms:
             g = self.rooms[o]
-            c = sg.Polygon(g.room.polygon).centroid
+            c = self._room_polygons[o].centroid
             return np.array([c.x, c.y, g.room.height / 2])
 
         def f():
@@ -217,7 +220,7 @@ class State:
         height)."""
         if o in self.rooms:
             g = self.rooms[o]
-            x0, y0, x1, y1 = sg.Polygon(g.room.polygon).bounds
+            x0, y0, x1, y1 = self._room_polygons[o].bounds
             return np.array([x1 - x0, y1 - y0, g.room.height])
         b = self.objects[o].asset.mesh.bounds
         return b[1] - b[0]
@@ -225,7 +228,7 @@ class State:
     def footprint(self, o: str) -> sg.Polygon:
         """Plan-view outline of the object (its placeholder's 2D hull, posed) or the room."""
         if o in self.rooms:
-            return sg.Polygon(self.rooms[o].room.polygon)
+            return self._room_polygons[o]
 
         def f():
             ob = self.objects[o]
@@ -238,7 +241,7 @@ class State:
         """What distances are measured to: a room's walls (its boundary ring), an object's
         footprint."""
         if o in self.rooms:
-            return sg.Polygon(self.rooms[o].room.polygon).exterior
+            return self._room_rings[o]
         return self.footprint(o)
 
     def world_mesh(self, o: str) -> trimesh.Trimesh:
