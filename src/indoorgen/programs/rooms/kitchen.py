@@ -29,6 +29,8 @@ WALL_CABINET_GAP = 0.5
 HOOD_GAP = 0.65
 #: appliances "in the run": this close (m) to a counter beside them
 IN_RUN = 0.05
+#: free floor round an island (m): NKBA Kitchen Planning Guideline 6, a walkway 36 in wide
+ISLAND_AISLE = 0.9
 
 
 def kitchen(room: ObjSet) -> Problem:
@@ -62,6 +64,8 @@ def kitchen(room: ObjSet) -> Problem:
             "a cooker": cookers.count() == 1,
             "a dishwasher at most": dishwashers.count().in_range(0, 1),
             "an island at most": islands.count().in_range(0, 1),
+            "an island stands free": islands.all(
+                lambda i: i.distance(along_walls | room) * 100 >= ISLAND_AISLE * 100),
             "stools only at the island": islands.all(
                 lambda i: stools.related_to(i, at_table).count().in_range(0, 4)),
             "wall cabinets": wall_cabinets.count().in_range(0, 3),
@@ -78,6 +82,9 @@ def kitchen(room: ObjSet) -> Problem:
             "the fridge at a run's end": fridges.mean(
                 lambda f: f.distance(cabinets).hinge(0.0, IN_RUN)).minimize(1),
             "counter space": cabinets.count().maximize(1),
+            "the dishwasher beside the sink": dishwashers.mean(
+                lambda d: d.distance(sinks).hinge(0.0, IN_RUN)).minimize(1),
+            "an island where it fits": islands.count().maximize(1),
             # the work triangle: each leg between sink, cooker and fridge 1.2-2.7 m (NKBA), aimed
             # well inside so the front centres the report measures land inside too (a guideline
             # a small kitchen may miss: a score, measured by the quality report)
