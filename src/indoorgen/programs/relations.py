@@ -39,12 +39,6 @@ side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
 #: a coffee table before a seat: its back 0.45 m from the seat's front, its centre within the
 #: seat's width (furniture-layout guidance: 0.3-0.6 m; quality's COFFEE_GAP)
 before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)
-#: in a counter run: a side 5 mm from a neighbouring unit's side (a filler strip), its centre
-#: within that side's depth and height (no gap between base units and appliances)
-in_run = SupportedBy(Subpart.Side, Subpart.Side, margin=0.005)
-#: round a run's corner: a side 5 mm from the front of the unit in the corner of the wall at
-#: right angles (an L-shaped run)
-round_corner = SupportedBy(Subpart.Side, Subpart.Front, margin=0.005)
 #: how far a seating group's rug reaches under the seat (m): under its front legs (layout
 #: guidance: at least the front legs of every seat of the group on the rug)
 RUG_UNDER_SEAT = 0.25
