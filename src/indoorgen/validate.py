@@ -3,9 +3,11 @@
 It rebuilds every object's *full* mesh from (generator, params) and the room from its polygon,
 then checks with manifold3d booleans and plain geometry:
 
-- no two meshes (objects, walls, floor, ceiling) interpenetrate by more than 1 mm;
+- no two meshes (objects, walls, floor, ceiling) interpenetrate by more than 1 mm (furniture
+  stands on the floor through a rug: a floor covering meets only the architecture and other
+  floor coverings);
 - every object rests on or hangs from its declared parent surface within 5 mm;
-- every door's clearance zone is free of objects;
+- every door's clearance zone is free of objects (but rugs, which a door swings over);
 - dining chairs face the table they are pulled up to;
 - the room's constraint program, evaluated from scratch, has no hard violation (its circulation
   constraint included, as the solver adds it: `solver.circulation`).
@@ -89,6 +91,7 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
         solids[f"{rn}/ceiling"] = g.ceiling
 
     # 1. interpenetration (AABB prefilter, then exact manifold intersection)
+    under = {n for n, o in scene.objects.items() if Semantics.FloorCovering.value in o.tags}
     names = sorted(solids)
     bounds = np.array([solids[n].bounds for n in names])
     man: dict[str, manifold3d.Manifold] = {}
@@ -97,6 +100,8 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
         a, b = names[i], names[j]
         if a not in meshes and b not in meshes:
             continue  # architecture against architecture
+        if a in meshes and b in meshes and (a in under) != (b in under):
+            continue  # a rug and what stands on it
         ma = man.setdefault(a, _manifold(solids[a]))
         mb = man.setdefault(b, _manifold(solids[b]))
         d = _penetration(ma, mb)
@@ -133,7 +138,8 @@ def validate_scene(scene: Scene, *, program_check: bool = True) -> dict[str, Any
     blocked = []
     for rn, g in rooms.items():
         floor_z = float(getattr(g, "elevation", 0.0))
-        footprints = {n: _footprint_below(scene.objects[n], assets[n], floor_z) for n in meshes}
+        footprints = {n: _footprint_below(scene.objects[n], assets[n], floor_z) for n in meshes
+                      if n not in under}  # a door swings over a rug
         for k, zone in enumerate(g.door_zones):
             for n, fp in footprints.items():
                 if fp is not None and fp.intersection(zone).area > 1e-6:

@@ -45,8 +45,12 @@ log = logging.getLogger(__name__)
 
 #: slots whose faces emit light (bulbs, diffusers, LED faces, flames)
 EMISSIVE_SLOTS = ("emissive", "bulb")
-#: tags of objects that hang from walls or ceilings (fixed in simulators)
-FIXED_TAGS = {"wall_mounted", "ceiling_mounted"}
+#: tags of objects that hang from walls or ceilings, or lie on the floor under furniture (fixed
+#: in simulators)
+FIXED_TAGS = {"wall_mounted", "ceiling_mounted", "floor_covering"}
+#: tags of objects other objects stand on the floor through (rugs): written without collision
+#: pieces, since furniture legs pass through their centimetre of pile
+UNDER_TAGS = {"floor_covering"}
 
 
 @dataclass(frozen=True)
@@ -157,6 +161,11 @@ class ExportBundle:
         """Whether `obj` hangs from a wall or ceiling (static in simulators) rather than resting
         on something (a free, movable body)."""
         return is_fixed(obj, set(self.scene.rooms) | set(self.room_types))
+
+    def lies_under(self, obj: SceneObject) -> bool:
+        """Whether `obj` lies under other objects (a rug): fixed, and written without collision
+        pieces (what stands on it stands on the floor through it)."""
+        return bool(UNDER_TAGS & set(obj.tags))
 
     def all_matrefs(self) -> list[MatRef]:
         """Every material used, deduplicated, in a stable order."""

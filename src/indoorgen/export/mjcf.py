@@ -5,7 +5,8 @@
 - Every movable object: a body at its pose with a `freejoint`; articulated parts as child
   bodies with `hinge` / `slide` joints (limits, damping and friction loss so flaps and doors
   stay shut under gravity until pushed).
-- Objects hanging from walls or ceilings: bodies welded to the world (no joint).
+- Objects hanging from walls or ceilings: bodies welded to the world (no joint); rugs too, with
+  no collision geoms (furniture legs stand on the floor through their pile).
 - Door leaves: a body each in the world with a `hinge` / `slide` joint (range from shut, 0, to
   fully open; `ref` the value the leaf stands at, so the model starts where the scene stands
   it); the leaf's contacts with the static architecture are excluded (its range keeps it
@@ -127,7 +128,7 @@ def _joint(body: ET.Element, name: str, j: Joint, damping: float,
 
 
 def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link: str,
-           frame: np.ndarray) -> None:
+           frame: np.ndarray, collide: bool = True) -> None:
     pos = _f(-frame)
     for vf in files.visuals(name):
         if vf.link == link:
@@ -135,7 +136,7 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
                                          "material": assets.material(
                                              vf.material, vf.slot in EMISSIVE_SLOTS),
                                          "pos": pos})
-    for plink, geom in files.collisions(name):
+    for plink, geom in files.collisions(name) if collide else ():
         if plink == link:
             body.append(_collision_geom(assets, geom, -frame))
 
@@ -154,7 +155,7 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
     if not fixed:
         ET.SubElement(base, "freejoint", name=f"{name}__free")
         _inertial(base, inertials["base"], frames["base"])
-    _geoms(base, assets, files, name, "base", frames["base"])
+    _geoms(base, assets, files, name, "base", frames["base"], not bundle.lies_under(obj))
     bodies = {"base": base}
     names = [name]
     pending = list(asset.joints)

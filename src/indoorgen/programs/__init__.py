@@ -1,6 +1,7 @@
 """Built-in constraint programs: one per room type (`rooms/`), what furniture holds in any room
 (`contents`), the relations they name (`relations`) and the floorplan objective (`floorplan`).
-`get_program(room_type)` gives a room type's program with the contents added."""
+`get_program(room_type)` gives a room type's program with the contents (and what every room
+asks of its rugs) added."""
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -8,6 +9,7 @@ from collections.abc import Callable
 from indoorgen.constraints import ObjSet, Problem
 from indoorgen.errors import UnknownRoomTypeError
 from indoorgen.programs.contents import DEFAULT_FULLNESS, contents
+from indoorgen.programs.relations import rugs_centred
 from indoorgen.programs.rooms.balcony import balcony
 from indoorgen.programs.rooms.bathroom import bathroom
 from indoorgen.programs.rooms.bedroom import bedroom
@@ -52,7 +54,7 @@ def get_program(room_type: str, fullness: float = DEFAULT_FULLNESS) -> RoomProgr
                                    + ", ".join(sorted(ROOM_PROGRAMS))) from None
 
     def program(room: ObjSet) -> Problem:
-        return furnish(room) + contents(room, fullness)
+        return furnish(room) + contents(room, fullness) + rugs_centred(room)
     program.__name__ = furnish.__name__
     program.__doc__ = furnish.__doc__
     return program

@@ -3,6 +3,7 @@ every room counts, and the reach and clearance requirements rooms share."""
 from indoorgen.constraints import (
     Constraint,
     ObjSet,
+    Problem,
     StableAgainst,
     SupportedBy,
     front_clearance,
@@ -38,8 +39,16 @@ side_to_wall = StableAgainst(Subpart.Side, Subpart.Wall, margin=0.02)
 #: a coffee table before a seat: its back 0.45 m from the seat's front, its centre within the
 #: seat's width (furniture-layout guidance: 0.3-0.6 m; quality's COFFEE_GAP)
 before_seat = SupportedBy(Subpart.Back, Subpart.Front, margin=0.45)
-#: a rug at the foot of a bed: its back edge 2 cm from the bed's foot, centred on it
-at_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=0.02)
+#: how far a seating group's rug reaches under the seat (m): under its front legs (layout
+#: guidance: at least the front legs of every seat of the group on the rug)
+RUG_UNDER_SEAT = 0.25
+#: a rug under a seating group: its back edge `RUG_UNDER_SEAT` behind the seat's front, its
+#: centre within the seat's width (the coffee table before the seat lies on it)
+under_seat_front = SupportedBy(Subpart.Back, Subpart.Front, margin=-RUG_UNDER_SEAT)
+#: how far a bed's rug reaches under it from the foot (m): its lower two-thirds, for a 2.1 m bed
+RUG_UNDER_BED = 1.4
+#: a rug under a bed's lower two-thirds: its back edge `RUG_UNDER_BED` in from the foot, centred
+under_bed_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=-RUG_UNDER_BED)
 #: beside: a side 5 cm from a seat's side, its centre within that side's depth (a side table at
 #: the sofa's arm)
 beside = SupportedBy(Subpart.Side, Subpart.Side, margin=0.05)
@@ -53,6 +62,33 @@ in_line_with = SupportedBy(Subpart.Side, Subpart.Side, margin=0.6)
 def ceiling_lights(room: ObjSet) -> ObjSet:
     """The lights hanging from `room`'s ceiling (every room program counts them)."""
     return scene()[Semantics.CeilingMounted, Semantics.Lighting].related_to(room, on_ceiling)
+
+
+def across_from(distance: float) -> StableAgainst:
+    """Facing the parent across the floor: its front `distance` metres from the parent's front,
+    turned to it, its centre within the parent's width (a sofa across from the TV stand)."""
+    return SupportedBy(Subpart.Front, Subpart.Front, margin=distance)
+
+
+def sized_rugs(floor: ObjSet, length: float, width: float, shape: str = "rect") -> ObjSet:
+    """Rugs on `floor` of one size (m: `length` along the group, `width` across it; a round rug's
+    diameter is its length, and its width is unused), big enough for what stands on them."""
+    return floor.of_generator("rug", shape=shape, length=length, width=width)
+
+
+def bed_rugs(floor: ObjSet) -> ObjSet:
+    """Rugs on `floor` sized for a bed: 2.4 m across it (0.3 m or more each side of a double) and
+    2.0 m along it, so one under its lower two-thirds (`under_bed_foot`) shows 0.6 m past its foot."""
+    return sized_rugs(floor, 2.4, 2.0)
+
+
+def rugs_centred(room: ObjSet) -> Problem:
+    """What every room asks of its rugs: one under a bed's foot centred across the bed (the
+    relation fixes how far under it lies, not where along the foot)."""
+    beds = scene()[Semantics.Bed].related_to(room, on_floor)
+    rugs = scene()[Semantics.Rug].related_to(room, on_floor).related_to(beds, under_bed_foot)
+    return Problem(score_terms={
+        "a bed's rug centred across it": rugs.mean(lambda r: r.center_distance(beds)).minimize(4)})
 
 
 def mounted_at(height: float) -> StableAgainst:

@@ -1,6 +1,7 @@
-"""Layout rules about how furniture is arranged and grouped: the TV facing the seats, the coffee
-table before the sofa, nightstands at the bed's head, the bed's head to a wall, dining chairs
-facing their table, and matching sets (chairs at one table, nightstands at one bed).
+"""Layout rules about how furniture is arranged and grouped: the TV facing the seats at a viewing
+distance, the coffee table before the sofa, nightstands at the bed's head, the bed's head to a
+wall, dining chairs facing their table, matching sets (chairs at one table, nightstands at one
+bed), and rugs under the group they belong to.
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ import shapely.geometry as sg
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.assets.materials.slots import choose_materials
 from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.rooms.living_room import VIEWING
 from indoorgen.quality.context import Check, Context, Placed, angle_deg, rule
 
 #: a TV and its seating face each other within 30 deg (viewing-angle guidance: THX / SMPTE
@@ -27,6 +29,19 @@ NIGHTSTAND_GAP = 0.15
 HEAD_ZONE = 0.7
 #: a bed's head within 0.1 m of a wall
 BED_WALL_GAP = 0.1
+#: how far in from a seat's front its front legs stand, and in from a bed's sides and foot the
+#: points a rug under it must reach (m)
+LEG_INSET = 0.1
+#: a bed's rug reaches under its lower two-thirds: the share of its length from the head where
+#: the rug must begin at the latest (less a margin for a bed longer than the rug is sized for)
+BED_RUG_FROM_HEAD = 0.4
+#: the share of a group's anchor points (the coffee table's corners and the sofa's front legs;
+#: the dining table's corners and its chairs' seats; a bed's lower part) that must lie on its
+#: rug: layout guidance puts every one on it; a quarter may miss (a chair at a long table's end
+#: pulled out past a round rug, a sofa leg at a short rug's edge)
+RUG_SHARE = 0.75
+#: a point this close (m) to a rug's outline counts as on it (placeholder hulls are polygons)
+RUG_TOL = 0.02
 #: a dining chair's front ray meets its table within 1 m (validate.py's FACING_REACH)
 CHAIR_REACH = 1.0
 
@@ -202,4 +217,73 @@ def matching_sets(ctx: Context) -> list[Check]:
             continue
         k = len({design(m) for m in members})
         out.append(Check(room, (anchor, *sorted(m.name for m in members)), float(k), 1, k == 1))
+    return out
+
+
+@rule("viewing_distance")
+def viewing_distance(ctx: Context) -> list[Check]:
+    """Each TV in a room with a sofa (else armchairs) is 1.8-3.5 m from the nearest, centre to
+    centre in plan (1.5-2.5 times a living room's screen diagonal); value: that distance (m)."""
+    out = []
+    for tv in ctx.with_tags(S.TV):
+        seats = _seats(ctx, tv.obj.room)
+        if not seats:
+            continue
+        c = _centre(tv)
+        d, _, seat = min((float(np.linalg.norm(_centre(q) - c)), q.name, q) for q in seats)
+        out.append(Check(tv.obj.room, (tv.name, seat.name), d, list(VIEWING),
+                         VIEWING[0] <= d <= VIEWING[1]))
+    return out
+
+
+def _local_points(p: Placed, pts: list[tuple[float, float]]) -> list[np.ndarray]:
+    return [p.world_point(q) for q in pts]
+
+
+def _corners(p: Placed, inset: float = 0.0) -> list[np.ndarray]:
+    return _local_points(p, [(x, y) for x in (p.lo[0] + inset, p.hi[0] - inset)
+                             for y in (p.lo[1] + inset, p.hi[1] - inset)])
+
+
+def _group_anchors(ctx: Context, rug: Placed) -> tuple[Placed, list[np.ndarray]] | None:
+    """The group `rug` lies under (the room's sofa, dining table or bed it overlaps most) and
+    that group's anchor points: what should stand on the rug."""
+    room = rug.obj.room
+    owners = [q for q in ctx.in_room(room, S.Sofa, S.DiningTable, S.Bed)
+              if q.footprint.intersects(rug.footprint)]
+    if not owners:
+        return None
+    owner = max(owners, key=lambda q: (q.footprint.intersection(rug.footprint).area, q.name))
+    if owner.has(S.Sofa):
+        front = [(owner.hi[0] - LEG_INSET, y) for y in (owner.lo[1] + LEG_INSET,
+                                                         owner.hi[1] - LEG_INSET)]
+        tables = [t for t in ctx.in_room(room, S.CoffeeTable)
+                  if _coffee_fit(owner, t)[0]]
+        pts = _local_points(owner, front) + [c for t in tables for c in _corners(t)]
+        return owner, pts
+    if owner.has(S.DiningTable):
+        chairs = [c for c in ctx.with_tags(S.Chair) if _table_of(ctx, c) is owner]
+        return owner, _corners(owner) + [_centre(c) for c in chairs]
+    head = owner.lo[0] + BED_RUG_FROM_HEAD * (owner.hi[0] - owner.lo[0])
+    pts = [(x, y) for x in (head, owner.hi[0] - LEG_INSET)
+           for y in (owner.lo[1] + LEG_INSET, owner.hi[1] - LEG_INSET)]
+    return owner, _local_points(owner, pts)
+
+
+@rule("rug_under_group")
+def rug_under_group(ctx: Context) -> list[Check]:
+    """Each rug lies under a group, not alone: under the sofa's front legs and the coffee table,
+    under a dining table and its chairs, or under a bed's lower two-thirds; value: the share of
+    the group's anchor points on the rug (0: under no group)."""
+    out = []
+    for rug in ctx.with_tags(S.Rug):
+        found = _group_anchors(ctx, rug)
+        if found is None:
+            out.append(Check(rug.obj.room, (rug.name,), 0.0, RUG_SHARE, False))
+            continue
+        owner, pts = found
+        area = rug.footprint.buffer(RUG_TOL)
+        share = float(np.mean([area.contains(sg.Point(q)) for q in pts]))
+        out.append(Check(rug.obj.room, (rug.name, owner.name), share, RUG_SHARE,
+                         share >= RUG_SHARE, {"anchors": float(len(pts))}))
     return out

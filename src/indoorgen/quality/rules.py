@@ -1,5 +1,6 @@
 """Layout rules about what a room holds and at what height: lights, the kitchen sink, the work
-triangle, wall cabinets and hoods, bathroom accessories, and everyday objects within reach.
+triangle, continuous counter runs, wall cabinets and hoods, bathroom accessories, and everyday
+objects within reach.
 
 Each rule is a function `Context -> list[Check]` registered with `context.rule`; its constants
 name their source.
@@ -13,8 +14,8 @@ import numpy as np
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 from indoorgen.programs.contents import EVERYDAY, REACH_HEIGHT
-from indoorgen.programs.rooms.kitchen import TRIANGLE_LEG
-from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, rule
+from indoorgen.programs.rooms.kitchen import IN_RUN, TRIANGLE_LEG
+from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, on_floor, rule
 
 #: room types that need no light of their own: a balcony is open to the sky and lit through the
 #: home's windows and doors (closets, hallways and garages are dark without one, so they do)
@@ -94,6 +95,29 @@ def kitchen_work_triangle(ctx: Context) -> list[Check]:
         out.append(Check(rn, tuple(p.name for p in triple), total,
                          {"leg": list(TRIANGLE_LEG), "sum_max": TRIANGLE_SUM}, ok,
                          {"sink_range": legs[0], "range_fridge": legs[1], "fridge_sink": legs[2]}))
+    return out
+
+
+#: what a kitchen's counter runs are made of: base units and the appliances set into them
+RUN_MEMBERS = (S.KitchenCabinet, S.KitchenSink, S.Range, S.Dishwasher)
+
+
+@rule("counter_runs")
+def counter_runs(ctx: Context) -> list[Check]:
+    """In a kitchen, every base unit, sink, range, dishwasher and fridge standing on the floor
+    joins a continuous counter run: within 5 cm (the program's IN_RUN) of another base unit or
+    appliance of the run (the fridge closing its end); value: that gap (m)."""
+    out = []
+    for rn in sorted(ctx.scene.rooms):
+        if ctx.room_type(rn) != "kitchen":
+            continue
+        standing = [p for p in ctx.in_room(rn, *RUN_MEMBERS, S.Fridge)
+                    if on_floor(p.obj) and not p.has(S.KitchenIsland, S.WallCabinet)]
+        run = [p for p in standing if not p.has(S.Fridge)]
+        for p in standing:
+            gap = min((float(p.footprint.distance(q.footprint)) for q in run if q is not p),
+                      default=None)
+            out.append(Check(rn, (p.name,), gap, IN_RUN, gap is not None and gap <= IN_RUN))
     return out
 
 

@@ -10,9 +10,11 @@ vectorised comparisons, then runs `fcl.collide` on the piece pairs whose boxes o
 Not every pair of pieces may collide. An object's *keep-free* pieces (`solver.keep_free`: a
 drawer's sweep, a toilet's clear space) meet walls and other objects' solid pieces only, and not
 the pieces of what the object carries (what rests on or in it), nor of what yields to them
-(rugs to everything, small objects to use zones, as the quality rules count them). Fixed pieces are
-of a `kind`: solid architecture, door keep-out zones (solid pieces only) and window keep-out
-zones (solid pieces of objects the window rule names only).
+(rugs to everything, small objects to use zones, as the quality rules count them). A floor
+covering lies *under* other objects: furniture stands on the floor through it, so its solid
+pieces meet only solid architecture and other floor coverings (a door swings over it). Fixed
+pieces are of a `kind`: solid architecture, door keep-out zones (solid pieces only) and window
+keep-out zones (solid pieces of objects the window rule names only).
 """
 from __future__ import annotations
 
@@ -29,8 +31,9 @@ SOLID, DOOR_ZONE, WINDOW_ZONE = 0, 1, 2
 #: (a toilet's clearance, a front's)
 PIECE_SOLID, PIECE_SWEEP, PIECE_ZONE = 0, 1, 2
 #: what an object's solid pieces yield to other objects' keep-free pieces: nothing; use zones
-#: (small objects: a cup may stand before a cabinet); everything (rugs: a drawer opens over them)
-YIELD_NONE, YIELD_ZONES, YIELD_ALL = 0, 1, 2
+#: (small objects: a cup may stand before a cabinet); everything (a drawer opens over it); and
+#: everything lies on it too, even solids (rugs: a sofa's legs stand on the floor through one)
+YIELD_NONE, YIELD_ZONES, YIELD_ALL, YIELD_UNDER = 0, 1, 2, 3
 
 
 def world_boxes(local: np.ndarray, rotation: np.ndarray, translation: np.ndarray) -> np.ndarray:
@@ -124,10 +127,11 @@ class Broadphase:
         # which of my pieces meet another's solid pieces, by what those yield
         meet = {YIELD_NONE: None, YIELD_ZONES: kinds != PIECE_ZONE if has_free else None,
                 YIELD_ALL: solid_only}
+        under = self._yields[name] == YIELD_UNDER
         for j in _overlapping(self._static_keys, own):
             kind = self._static_kinds[j]
-            if kind == WINDOW_ZONE and not windows:
-                continue
+            if (kind == WINDOW_ZONE and not windows) or (kind == DOOR_ZONE and under):
+                continue  # a rug may lie where a door swings and one walks through
             mask = None if kind == SOLID else solid_only
             if self._any_hit(pieces, keys, mask, self._static[j], self._static_keys[j], request):
                 return True
@@ -135,8 +139,8 @@ class Broadphase:
         mine = self._yields[name]
         for i in _overlapping(self._union, own):
             other = self._names[i]
-            if other == name:
-                continue
+            if other == name or (self._yields[other] == YIELD_UNDER) != under:
+                continue  # a floor covering and what stands on it
             other_pieces, _, other_keys, other_kinds = self._pieces[other]
             for k in _overlapping(other_keys, own):
                 ok = other_kinds[k]

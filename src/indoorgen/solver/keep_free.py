@@ -19,7 +19,7 @@ from scipy.spatial import ConvexHull
 from indoorgen.assets import Asset
 from indoorgen.assets.protocol import Joint
 from indoorgen.model.tags import Semantics
-from indoorgen.solver.broadphase import PIECE_SWEEP, PIECE_ZONE, YIELD_ALL, YIELD_NONE, YIELD_ZONES
+from indoorgen.solver.broadphase import PIECE_SWEEP, PIECE_ZONE, YIELD_NONE, YIELD_UNDER, YIELD_ZONES
 
 #: NKBA Bathroom Planning Guideline 11 / IRC R307: a toilet's centreline >= 15 in (0.38 m) from a
 #: side wall or obstacle, >= 21 in (0.53 m) clear in front
@@ -147,10 +147,11 @@ def keep_free_volumes(asset: Asset, tags: frozenset, size_class: str,
 
 def yields(tags: frozenset) -> int:
     """What an object's solid pieces yield to others' keep-free pieces, as the quality rules
-    count obstacles: a rug to everything; a small object, or a wall accessory that belongs
-    beside a toilet or basin, to use zones; anything else nothing."""
+    count obstacles: a rug to everything, solids too (furniture stands on it); a small object,
+    or a wall accessory that belongs beside a toilet or basin, to use zones; anything else
+    nothing."""
     if Semantics.FloorCovering in tags:
-        return YIELD_ALL
+        return YIELD_UNDER
     if Semantics.SmallObject in tags or any(t in tags for t in ACCESSORIES):
         return YIELD_ZONES
     return YIELD_NONE

@@ -68,6 +68,8 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
         pkey = bundle.proto_key(name)
         inertial = bundle.inertials(name) if physics else None
         fixed = bundle.is_fixed(obj)
+        # a rug: no collision pieces (furniture stands on the floor through it)
+        physics_here = physics and not bundle.lies_under(obj)
         if asset.joints:
             _write_articulated(stage, prim.GetPath(), obj, asset, mats, looks, cache,
                                inertial, physics, fixed)
@@ -75,13 +77,13 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
             if instancing and counts[pkey] > 1:
                 if pkey not in protos:
                     protos[pkey] = _define_prototype(stage, len(protos), asset, mats, looks,
-                                                     cache, physics)
+                                                     cache, physics_here)
                     _write_lights(stage, protos[pkey], asset)
                 prim.GetReferences().AddInternalReference(protos[pkey])
                 prim.SetInstanceable(True)
             else:
-                _write_link(stage, prim.GetPath(), asset, "base", mats, looks, cache, physics,
-                            whole=True)
+                _write_link(stage, prim.GetPath(), asset, "base", mats, looks, cache,
+                            physics_here, whole=True)
                 _write_lights(stage, prim.GetPath(), asset)
             if physics and not fixed:
                 assert inertial is not None  # computed whenever physics is on

@@ -18,13 +18,14 @@ from indoorgen.programs.relations import (
     DOOR_SWING,
     against_wall,
     at_bedside,
-    at_foot,
     at_table,
+    bed_rugs,
     ceiling_lights,
     fronts_free,
     on_floor,
     on_top,
     on_wall,
+    under_bed_foot,
     within_reach,
 )
 
@@ -49,7 +50,7 @@ def bedroom(room: ObjSet) -> Problem:
     desks = floor[S.Desk].related_to(room, against_wall)
     desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
     reading_chairs = floor[S.Armchair]
-    rugs = floor[S.Rug].related_to(beds, at_foot)
+    rugs = bed_rugs(floor).related_to(beds, under_bed_foot)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     mirrors = scene().of_generator("mirror").related_to(room, on_wall)

@@ -1,5 +1,6 @@
-"""A dining room: a table centred in the room with a matching set of chairs pulled up, a place
-laid before each chair, a light over the table, a sideboard with things on it, plants and art."""
+"""A dining room: a table centred in the room with a matching set of chairs pulled up, on a rug
+under them both, a place laid before each chair, a light over the table, a sideboard with things
+on it, plants and art."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -20,6 +21,7 @@ from indoorgen.programs.relations import (
     on_floor,
     on_top,
     on_wall,
+    sized_rugs,
     within_reach,
 )
 
@@ -29,6 +31,9 @@ TABLE_CLEAR = 0.9
 #: a sideboard's height (m): a low cabinet whose top serves the table (and as wide as the
 #: cabinet generator makes one)
 SIDEBOARD_HEIGHT = 0.9
+#: the rug under the table (m): round, wide enough that chairs pulled out stay on it (layout
+#: guidance: 0.6 m beyond the table's edges)
+RUG_DIAMETER = 2.8
 
 
 def dining_room(room: ObjSet) -> Problem:
@@ -52,6 +57,7 @@ def dining_room(room: ObjSet) -> Problem:
         S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile
     ).related_to(sideboards, on_top)
     lights = ceiling_lights(room)
+    table_rugs = sized_rugs(floor, RUG_DIAMETER, 2.0, shape="round")
     return Problem(
         constraints={
             "one table": tables.count() == 1,
@@ -71,6 +77,7 @@ def dining_room(room: ObjSet) -> Problem:
             "plants": plants.count().in_range(0, 2),
             "pictures": art.count().in_range(1, 2),
             "a light": lights.count().in_range(1, 1),
+            "a rug at most": table_rugs.count().in_range(0, 1),
             "sideboard front free": fronts_free(sideboards, blockers, room, margin=DOOR_SWING),
             "within reach": within_reach(on_sideboard),
         },
@@ -83,6 +90,9 @@ def dining_room(room: ObjSet) -> Problem:
             "table centred in the room": tables.mean(
                 lambda t: t.center_distance(room)).minimize(4),
             "table square to the room": angle_alignment_cost(tables, room).minimize(4),
+            "a rug under the table": table_rugs.count().maximize(3),
+            "the rug centred under the table": table_rugs.mean(
+                lambda r: r.center_distance(tables)).minimize(6),
             "as many chairs as fit": chairs.count().maximize(0.3),
             "places before the chairs": plates.mean(
                 lambda p: p.distance(chairs).hinge(0.0, 0.12)).minimize(3),

@@ -29,6 +29,12 @@ WALL_CABINET_GAP = 0.5
 HOOD_GAP = 0.65
 #: appliances "in the run": this close (m) to a counter beside them
 IN_RUN = 0.05
+#: weight of a run's gaps, per metre of gap (each gap is worth closing before another unit),
+#: and the gap the program aims at (a filler strip; IN_RUN is what the report allows)
+RUN_WEIGHT = 10
+RUN_AIM = 0.01
+#: free floor round an island (m): NKBA Kitchen Planning Guideline 6, a walkway 36 in wide
+ISLAND_AISLE = 0.9
 
 
 def kitchen(room: ObjSet) -> Problem:
@@ -62,6 +68,8 @@ def kitchen(room: ObjSet) -> Problem:
             "a cooker": cookers.count() == 1,
             "a dishwasher at most": dishwashers.count().in_range(0, 1),
             "an island at most": islands.count().in_range(0, 1),
+            "an island stands free": islands.all(
+                lambda i: i.distance(along_walls | room) * 100 >= ISLAND_AISLE * 100),
             "stools only at the island": islands.all(
                 lambda i: stools.related_to(i, at_table).count().in_range(0, 4)),
             "wall cabinets": wall_cabinets.count().in_range(0, 3),
@@ -73,11 +81,17 @@ def kitchen(room: ObjSet) -> Problem:
             "food out": food.count().in_range(0, 4),
         },
         score_terms={
+            # continuous runs: every unit and appliance slid up to a neighbour along its wall
             "sink, cooker and dishwasher in a run": set_in_runs.mean(
-                lambda a: a.distance(cabinets).hinge(0.0, IN_RUN)).minimize(2),
+                lambda a: a.distance(cabinets).hinge(0.0, RUN_AIM)).minimize(RUN_WEIGHT),
             "the fridge at a run's end": fridges.mean(
-                lambda f: f.distance(cabinets).hinge(0.0, IN_RUN)).minimize(1),
+                lambda f: f.distance(cabinets | set_in_runs).hinge(0.0, RUN_AIM)).minimize(RUN_WEIGHT),
+            "base units in runs": cabinets.mean(
+                lambda c: c.distance(cabinets | set_in_runs).hinge(0.0, RUN_AIM)).minimize(RUN_WEIGHT),
             "counter space": cabinets.count().maximize(1),
+            "the dishwasher beside the sink": dishwashers.mean(
+                lambda d: d.distance(sinks).hinge(0.0, IN_RUN)).minimize(1),
+            "an island where it fits": islands.count().maximize(1),
             # the work triangle: each leg between sink, cooker and fridge 1.2-2.7 m (NKBA), aimed
             # well inside so the front centres the report measures land inside too (a guideline
             # a small kitchen may miss: a score, measured by the quality report)

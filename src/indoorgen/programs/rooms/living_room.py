@@ -1,7 +1,7 @@
-"""A living room: a sofa facing the TV across a coffee table, armchairs in line with it, side
-tables with lamps at the arms, filled bookcases, plants, art over the sofa and things on the
-tables. (No rug yet: the solver keeps floor coverings clear of furniture, so one cannot lie
-under the group, and anywhere else it would take the coffee table's place.)"""
+"""A living room: a sofa facing the TV at a viewing distance across a coffee table, on a rug,
+armchairs in line with it, side tables with lamps at the arms, filled bookcases, plants, art
+over the sofa and things on the tables; in a room larger than the group needs, a second zone: a
+reading chair with its lamp, and a desk with its chair."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -17,7 +17,9 @@ from indoorgen.constraints import (
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import (
     DOOR_SWING,
+    across_from,
     against_wall,
+    at_table,
     before_seat,
     beside,
     ceiling_lights,
@@ -26,6 +28,8 @@ from indoorgen.programs.relations import (
     on_floor,
     on_top,
     on_wall,
+    sized_rugs,
+    under_seat_front,
     within_reach,
 )
 
@@ -40,21 +44,42 @@ SOFA_FRONT = 1.6
 #: weights let a badly placed sofa stay and stick against its wall)
 PER_DEGREE = 1 / 45
 PER_METRE = 0.5
+#: viewing distance, the sofa's centre to the screen's (m): 1.5-2.5 times the diagonal of the
+#: 48-55 in screens a living room holds (THX / SMPTE viewing-distance guidance); quality's
+#: `viewing_distance` rule measures the same
+VIEWING = (1.8, 3.5)
+#: how far the sofa's front stands from the TV stand's (m): the shortest fits a 3.4 m room with
+#: the sofa against the far wall, the longest lands the centres 3.3-3.4 m apart, within VIEWING;
+#: the solver takes whichever the room allows, preferring the sofa's back to a wall
+FRONT_GAPS = (1.9, 2.3, 2.7)
+#: the group's rug (m): along the sofa, and from under its front legs past the coffee table
+RUG_LENGTH, RUG_DEPTH = 2.6, 1.9
 
 
 def living_room(room: ObjSet) -> Problem:
     """The seating group about the coffee table facing the TV, storage, light and decor."""
     floor = scene().related_to(room, on_floor)
     blockers = floor.excluding(S.FloorCovering)
-    sofas = floor[S.Sofa].excluding(S.SectionalSofa).related_to(room, against_wall)
     stands = floor[S.TVStand].related_to(room, against_wall)
+    # the sofa across from the TV stand at a viewing distance: against the far wall where the
+    # room is small, out in the room where that wall is too far to see the screen from
+    sofa_sets = [floor[S.Sofa].excluding(S.SectionalSofa).related_to(stands, across_from(d))
+                 for d in FRONT_GAPS]
+    sofas = sofa_sets[0] | sofa_sets[1] | sofa_sets[2]
     # a TV stands wholly on its stand (a screen on feet at its ends tips over an overhang)
     tvs = scene()[S.TV].related_to(stands, on_top)
     coffee_tables = floor[S.CoffeeTable].related_to(sofas, before_seat)
     armchairs = floor[S.Armchair].related_to(sofas, in_line_with)
     side_tables = floor[S.SideTable].related_to(sofas | armchairs, beside)
-    seating = sofas | armchairs
-    lamps = floor[S.FloorLamp]
+    group_rugs = sized_rugs(floor, RUG_LENGTH, RUG_DEPTH).related_to(sofas, under_seat_front)
+    # the second zone's chair stands back to a wall (the group's armchairs stand in line with
+    # the sofa)
+    reading_chairs = floor[S.Armchair].related_to(room, against_wall)
+    desks = floor[S.Desk].related_to(room, against_wall)
+    desk_chairs = floor[S.Chair].excluding(S.DiningChair, S.Armchair).related_to(desks, at_table)
+    seating = sofas | armchairs | reading_chairs
+    # floor lamps at the seats' arms (placed with the seating, not before it in its way)
+    lamps = floor[S.FloorLamp].related_to(seating, beside)
     lights = ceiling_lights(room)
     table_lamps = scene()[S.TableLamp].related_to(side_tables, on_top)
     bookcases = floor[S.Bookcase].related_to(room, against_wall)
@@ -65,12 +90,12 @@ def living_room(room: ObjSet) -> Problem:
     table_things = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Balloon, S.Laptop, S.Textile,
         S.Box).related_to(
-        coffee_tables | side_tables | stands, on_top)
+        coffee_tables | side_tables, on_top)
     remotes = scene()[S.Remote].related_to(coffee_tables, on_top)
     everyday = books | table_things | remotes
     return Problem(
         constraints={
-            "a sofa": sofas.count() == 1,
+            "a sofa": sofa_sets[0].count() + sofa_sets[1].count() + sofa_sets[2].count() == 1,
             "a TV stand": stands.count() == 1,
             "the sofa faces the TV": sofas.all(
                 lambda s: facing_angle(s, stands) * PER_DEGREE <= FACING * PER_DEGREE),
@@ -87,6 +112,10 @@ def living_room(room: ObjSet) -> Problem:
             "armchairs face the TV too": armchairs.all(
                 lambda a: facing_angle(a, stands) * PER_DEGREE <= 2 * FACING * PER_DEGREE),
             "side tables at the arms": side_tables.count().in_range(0, 2),
+            "a rug under the group": group_rugs.count().in_range(0, 1),
+            "a reading chair at most": reading_chairs.count().in_range(0, 1),
+            "a desk at most": desks.count().in_range(0, 1),
+            "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
             "a lamp on each side table": side_tables.all(
                 lambda t: table_lamps.related_to(t, on_top).count() <= 1),
             "bookcases": bookcases.count().in_range(1, 2),
@@ -98,7 +127,7 @@ def living_room(room: ObjSet) -> Problem:
             "decor on the shelves": (vases.count() + baskets.count()).in_range(1, 4),
             "things on the tables": table_things.count().in_range(1, 5),
             "a remote": remotes.count().in_range(0, 1),
-            "storage fronts free": fronts_free(bookcases, blockers, room),
+            "storage fronts free": fronts_free(bookcases | desks, blockers, room),
             "TV stand doors free": fronts_free(stands, blockers, room, margin=DOOR_SWING),
             "everyday things within reach": within_reach(everyday),
         },
@@ -115,6 +144,17 @@ def living_room(room: ObjSet) -> Problem:
             "a side table at each arm": seating.mean(lambda s: reflectional_asymmetry(
                 side_tables.related_to(s, beside), s)).minimize(2),
             "armchairs and side tables": (armchairs.count() + side_tables.count()).maximize(0.5),
+            "the sofa's back to a wall": sofas.mean(
+                lambda s: s.distance(room).hinge(0.0, 0.1)).minimize(0.5),
+            "a rug under the group": group_rugs.count().maximize(3),
+            "a second zone: a reading chair and a desk": (
+                reading_chairs.count() + desks.count() + desk_chairs.count()).maximize(1),
+            "the reading chair apart from the group": reading_chairs.mean(
+                lambda r: r.distance(sofas).hinge(1.5, 20.0)).minimize(1),
+            "a lamp by the reading chair": reading_chairs.mean(
+                lambda r: r.distance(lamps).hinge(0.0, 0.3)).minimize(1),
+            "the rug centred on the coffee table": group_rugs.mean(
+                lambda r: r.center_distance(coffee_tables)).minimize(3),
             "nothing but the coffee table before the seating": accessibility_cost(
                 seating, blockers.excluding(S.CoffeeTable)).minimize(1),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
