@@ -1,7 +1,8 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
-food in the fridge, clothes in wardrobes, lamps and decor on dressers, tableware on dining
-tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to every
-room program, so the room programs only say which furniture stands where.
+food in the fridge, clothes and shoes in wardrobes, shoes on shoe racks, books in nightstands,
+lamps and decor on dressers, tableware on dining tables. `contents(room, fullness)` is one
+`Problem` that `programs.get_program` adds to every room program, so the room programs only say
+which furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -99,6 +100,7 @@ HOLDS: dict[str, tuple[Load, ...]] = {
     ),
     "wardrobes": (
         Load("folded clothes", (S.FoldedClothes,), inside, 14),
+        Load("shoes", (S.Shoes,), inside, 3),
         Load("boxes", (S.Box,), inside, 3),
         Load("baskets", (S.Basket,), inside, 2),
     ),
@@ -113,6 +115,13 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         decor(4),
         Load("books", (S.Book,), on_top, 3),
         Load("baskets", (S.Basket,), on_top, 1),
+    ),
+    "shoe racks": (
+        Load("shoes", (S.Shoes,), on_top, 8),
+    ),
+    "bedside cupboards": (
+        Load("books", (S.Book,), inside, 3),
+        Load("boxes", (S.Box,), inside, 1),
     ),
     "dining tables": (
         Load("cutlery", (S.Cutlery,), on_top, 10),
@@ -159,6 +168,8 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
         "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
         | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "shoe racks": floor[S.ShoeRack],
+        "bedside cupboards": floor[S.Nightstand],
         "dining tables": floor[S.DiningTable],
         "low tables": floor[S.CoffeeTable] | floor[S.SideTable],
         "desks": floor[S.Desk],
