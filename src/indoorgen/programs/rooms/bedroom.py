@@ -35,6 +35,13 @@ from indoorgen.programs.relations import (
 BED_SIDE = 0.6
 #: how far beside the bed its side clearance is probed (m)
 SIDE_PROBE = 1.0
+#: a bedroom whose plan box is larger than this (m^2) has a bookcase: a 12-15 m^2 bedroom holds
+#: the bed, nightstands and a wardrobe with their clearances, and about 1 m^2 more (a bookcase
+#: 0.3-0.4 m deep and its 0.6 m front) fits from 16 m^2 on
+BOOKCASE_AREA = 16.0
+#: a bedroom whose plan box is larger than this (m^2) has a wardrobe (a dresser alone is for
+#: the smallest rooms, or those with a closet)
+WARDROBE_AREA = 13.0
 #: the band a wall shelf's centre hangs in (m): above a nightstand or desk (0.7 m) and within
 #: reach, its top board no higher than eye level (the reach rule's 1.6 m)
 SHELF_BAND = (1.0, 1.45)
@@ -89,6 +96,11 @@ def bedroom(room: ObjSet) -> Problem:
             "a rug at most": rugs.count().in_range(0, 1),
             "up to two plants": plants.count().in_range(0, 2),
             "a bookcase at most": bookcases.count().in_range(0, 1),
+            # 0 up to the area, then 1 (a fraction below 1 still asks for one)
+            "a wardrobe in a larger room": wardrobes.count() >= (
+                room.volume((0, 1)) - WARDROBE_AREA).clip(0.0, 1.0),
+            "a bookcase in a larger room": bookcases.count() >= (
+                room.volume((0, 1)) - BOOKCASE_AREA).clip(0.0, 1.0),
             "up to two wall shelves": shelves.count().in_range(0, 2),
             "a floor lamp at most": floor_lamps.count().in_range(0, 1),
             "a lamp on the desk": desks.all(lambda d: desk_lamps.related_to(d, on_top).count() <= 1),
@@ -123,10 +135,14 @@ def bedroom(room: ObjSet) -> Problem:
             "a lamp on each nightstand": lamps.count().maximize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
-            "a lived-in room": (books.count() + clothes.count() + decor.count() + rugs.count()
-                                + plants.count() + mirrors.count() + art.count() + desk_lamps.count()
-                                + laptops.count() + floor_lamps.count()).maximize(0.3),
-            "shelving for books and things": (bookcases.count() * 2 + shelves.count()).maximize(0.5),
+            # one term per stage (a term counts from the stage of its latest set on): the
+            # furniture, what hangs on the walls, the things on and in the furniture
+            "a furnished room": (bookcases.count() * 3 + dressers.count() + rugs.count()
+                                 + plants.count() + floor_lamps.count()).maximize(0.3),
+            "things on the walls": (shelves.count() * 2 + art.count()
+                                    + mirrors.count()).maximize(0.3),
+            "a lived-in room": (books.count() + clothes.count() + decor.count() + desk_lamps.count()
+                                + laptops.count()).maximize(0.3),
             "wall shelves within reach": shelves.mean(
                 lambda s: height(s).hinge(*SHELF_BAND)).minimize(2),
             "shelves free": accessibility_cost(bookcases, blockers).minimize(1),
