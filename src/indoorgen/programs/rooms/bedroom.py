@@ -63,6 +63,8 @@ def bedroom(room: ObjSet) -> Problem:
     bookcases = floor[S.Bookcase].related_to(room, against_wall)
     shelves = scene()[S.WallShelf].related_to(room, on_wall)
     floor_lamps = floor[S.FloorLamp]
+    # a laundry basket and a pair of shoes stand on the floor by a wall
+    floor_things = floor[S.Basket] | floor[S.Shoes]
     rugs = floor[S.Rug].related_to(beds, at_foot)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
@@ -103,6 +105,8 @@ def bedroom(room: ObjSet) -> Problem:
                 room.volume((0, 1)) - BOOKCASE_AREA).clip(0.0, 1.0),
             "up to two wall shelves": shelves.count().in_range(0, 2),
             "a floor lamp at most": floor_lamps.count().in_range(0, 1),
+            "a laundry basket at most": floor[S.Basket].count().in_range(0, 1),
+            "shoes on the floor": floor[S.Shoes].count().in_range(0, 2),
             "a lamp on the desk": desks.all(lambda d: desk_lamps.related_to(d, on_top).count() <= 1),
             "a laptop on the desk": desks.all(lambda d: laptops.related_to(d, on_top).count() <= 1),
             "a ceiling light": ceiling_lights(room).count() == 1,
@@ -138,7 +142,10 @@ def bedroom(room: ObjSet) -> Problem:
             # one term per stage (a term counts from the stage of its latest set on): the
             # furniture, what hangs on the walls, the things on and in the furniture
             "a furnished room": (bookcases.count() * 3 + dressers.count() + rugs.count()
-                                 + plants.count() + floor_lamps.count()).maximize(0.3),
+                                 + plants.count() + floor_lamps.count()
+                                 + floor_things.count()).maximize(0.3),
+            "things on the floor by the walls": floor_things.mean(
+                lambda t: t.distance(room).hinge(0.0, 0.1)).minimize(2),
             "things on the walls": (shelves.count() * 2 + art.count()
                                     + mirrors.count()).maximize(0.3),
             "a lived-in room": (books.count() + clothes.count() + decor.count() + desk_lamps.count()
