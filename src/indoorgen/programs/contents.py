@@ -1,8 +1,8 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
-food in the fridge, clothes and shoes in wardrobes, shoes on shoe racks, books in nightstands,
-lamps and decor on dressers, tableware on dining tables. `contents(room, fullness)` is one
-`Problem` that `programs.get_program` adds to every room program, so the room programs only say
-which furniture stands where.
+food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes and shoes in
+wardrobes, shoes on shoe racks, books in nightstands, lamps and decor on dressers, tableware on
+dining tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to
+every room program, so the room programs only say which furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -98,6 +98,14 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("bottles", (S.Bottle,), inside, 5),
         Load("jars", (S.Jar,), inside, 3),
     ),
+    "dishwashers": (
+        Load("plates", (S.Plate,), inside, 6),
+        Load("bowls", (S.Bowl,), inside, 3, (S.Food,)),
+        Load("cups and glasses", (S.Cup,), inside, 4),
+    ),
+    "microwaves": (
+        Load("a bowl", (S.Bowl,), inside, 1, (S.Food,)),
+    ),
     "wardrobes": (
         Load("folded clothes", (S.FoldedClothes,), inside, 14),
         Load("shoes", (S.Shoes,), inside, 3),
@@ -164,6 +172,8 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "base cabinets": floor[S.KitchenCabinet].excluding(S.WallMounted),
         "wall cabinets": walls[S.WallCabinet],
         "fridges": floor[S.Fridge],
+        "dishwashers": floor[S.Dishwasher],
+        "microwaves": scene()[S.Microwave].related_to(floor, on_top),
         "wardrobes": floor[S.Wardrobe],
         "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
         "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
