@@ -15,7 +15,7 @@ from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs import ROOM_PROGRAMS, get_program
 from indoorgen.programs.contents import EVERYDAY, HOLDS, REACH_HEIGHT, cap, contents
-from indoorgen.programs.relations import inside, on_floor
+from indoorgen.programs.relations import inside, on_floor, on_top
 from indoorgen.validate import validate_scene
 from support.fakeview import FakeView
 
@@ -83,3 +83,21 @@ def test_a_kitchen_puts_things_away_wholly_inside_touching_nothing():
         if S.SmallObject.value in o.tags and any(t.value in o.tags for t in EVERYDAY):
             floor = gen.scene.rooms[o.room].elevation
             assert o.pose.position[2] - floor <= REACH_HEIGHT, o.name
+
+
+@pytest.mark.parametrize("tags,name,bound,relation", [
+    ({S.Storage, S.Wardrobe}, "wardrobe_0", "wardrobes hold shoes", inside),
+    ({S.Appliance, S.KitchenAppliance, S.Dishwasher}, "dishwasher_0", "dishwashers hold plates",
+     inside),
+    ({S.Storage, S.Nightstand}, "nightstand_0", "bedside cupboards hold books", inside),
+    ({S.Storage, S.Shelf, S.ShoeRack}, "shoe_rack_0", "shoe racks hold shoes", on_top),
+])
+def test_shoes_dishes_and_books_are_put_away_where_they_belong(tags, name, bound, relation):
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
+    view.add(name, {S.Object, S.Furniture, *tags}, center=(1, 1, 0.4), extents=(0.6, 0.6, 0.8),
+             relations=[(on_floor, "r")])
+    room = scene()[S.Room].named("r")
+    ev = Evaluator(contents(room, 1.0), view)
+    b = {b.name: b for b in find_bounds(contents(room, 1.0), ev)}[bound]
+    assert b.can_add and b.lo <= 0 and b.parents == ((relation, (name,)),)

@@ -70,6 +70,9 @@ class FakeView:
         return np.array([-math.sin(y), math.cos(y), 0.0])
 
     def extents(self, o):
+        if o in self.rooms:  # as the solver's view: plan bounds and a storey's height
+            x0, y0, x1, y1 = self.rooms[o].bounds
+            return np.array([x1 - x0, y1 - y0, 2.7])
         return self.objs[o]["extents"]
 
     def front_point(self, o):

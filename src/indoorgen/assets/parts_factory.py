@@ -19,8 +19,11 @@ from indoorgen.assets.shapes.mesh import box_uv, concat, manifold_to_trimesh, un
 from indoorgen.assets.shapes.primitives import Part
 from indoorgen.model.tags import Semantics, Subpart
 
-#: the objects things are put away in (their covered Interior surfaces get stowage boxes)
-STOWING = frozenset({Semantics.Storage, Semantics.Fridge})
+#: the objects things are put away in (their covered Interior surfaces get stowage boxes): storage
+#: furniture, fridges, and dishwashers and microwaves (plates in the baskets, a bowl on the
+#: turntable)
+STOWING = frozenset({Semantics.Storage, Semantics.Fridge, Semantics.Dishwasher,
+                     Semantics.Microwave})
 
 
 def default_value(p: Param) -> Any:
@@ -133,8 +136,8 @@ class PartsFactory(AssetFactory):
         """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
         `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
         what the solver may fill, clear of every part of every link (a drawer's bin, a door's
-        racks), so placeholders and simulators leave it free. Only storage furniture and fridges
-        have any (nothing is put in an oven or a shower; a bowl's inside is open above)."""
+        racks), so placeholders and simulators leave it free. Only `STOWING` objects have any
+        (nothing is put in a shower; a bowl's inside is open above)."""
         if self.size_class == "small" or not self.tags & STOWING:
             return []
         inner = [s for s in self.extra_surfaces(p)

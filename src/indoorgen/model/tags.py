@@ -151,6 +151,7 @@ class Semantics(str, Enum):
     FruitBowl = "fruit_bowl"
     Towel = "towel"
     FoldedClothes = "folded_clothes"
+    Shoes = "shoes"
     Laptop = "laptop"
     Remote = "remote"
     Basket = "basket"

@@ -1,7 +1,8 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
-food in the fridge, clothes in wardrobes, lamps and decor on dressers, tableware on dining
-tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to every
-room program, so the room programs only say which furniture stands where.
+food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes and shoes in
+wardrobes, shoes on shoe racks, books in nightstands, lamps and decor on dressers, tableware on
+dining tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to
+every room program, so the room programs only say which furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -97,8 +98,17 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("bottles", (S.Bottle,), inside, 5),
         Load("jars", (S.Jar,), inside, 3),
     ),
+    "dishwashers": (
+        Load("plates", (S.Plate,), inside, 6),
+        Load("bowls", (S.Bowl,), inside, 3, (S.Food,)),
+        Load("cups and glasses", (S.Cup,), inside, 4),
+    ),
+    "microwaves": (
+        Load("a bowl", (S.Bowl,), inside, 1, (S.Food,)),
+    ),
     "wardrobes": (
         Load("folded clothes", (S.FoldedClothes,), inside, 14),
+        Load("shoes", (S.Shoes,), inside, 3),
         Load("boxes", (S.Box,), inside, 3),
         Load("baskets", (S.Basket,), inside, 2),
     ),
@@ -113,6 +123,13 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         decor(4),
         Load("books", (S.Book,), on_top, 3),
         Load("baskets", (S.Basket,), on_top, 1),
+    ),
+    "shoe racks": (
+        Load("shoes", (S.Shoes,), on_top, 8),
+    ),
+    "bedside cupboards": (
+        Load("books", (S.Book,), inside, 3),
+        Load("boxes", (S.Box,), inside, 1),
     ),
     "dining tables": (
         Load("cutlery", (S.Cutlery,), on_top, 10),
@@ -155,10 +172,14 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "base cabinets": floor[S.KitchenCabinet].excluding(S.WallMounted),
         "wall cabinets": walls[S.WallCabinet],
         "fridges": floor[S.Fridge],
+        "dishwashers": floor[S.Dishwasher],
+        "microwaves": scene()[S.Microwave].related_to(floor, on_top),
         "wardrobes": floor[S.Wardrobe],
         "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
         "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
         | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "shoe racks": floor[S.ShoeRack],
+        "bedside cupboards": floor[S.Nightstand],
         "dining tables": floor[S.DiningTable],
         "low tables": floor[S.CoffeeTable] | floor[S.SideTable],
         "desks": floor[S.Desk],

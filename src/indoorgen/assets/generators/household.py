@@ -29,18 +29,10 @@ from indoorgen.assets.shapes.primitives import (
     torus,
 )
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
-from indoorgen.assets.shapes.sweeps import loft
+from indoorgen.assets.shapes.sweeps import loft, xz_extrude
 from indoorgen.model.scene import as_saved
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-
-
-def _xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
-    """Extrude a side profile drawn in (x, z) from y0 to y1 along Y."""
-    m = m3d.Manifold.extrude(cs, y1 - y0)
-    # (a, b, h) -> (x=a, y=y1-h, z=b): a proper rotation (det +1)
-    return m.transform(np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, y1],
-                                 [0.0, 1.0, 0.0, 0.0]]))
 
 
 def _seed(p: dict[str, Any]) -> int:
@@ -119,7 +111,7 @@ class Towel(PartsFactory):
                 out.append(Part(box_between((dx + x0, -w / 2, z0), (dx + x1, w / 2, z0 + n * t)),
                                 "fabric"))
                 continue
-            solid = _xz_extrude(prof, -w / 2, w / 2)
+            solid = xz_extrude(prof, -w / 2, w / 2)
             # soften the ends along Y (towels are folded there too)
             soft = bevel_box((d + 2 * ext + 0.01, w, n * t), (0.0, 0.0, n * t / 2),
                              min(0.45 * n * t, 0.02), 2)
@@ -177,7 +169,7 @@ class Towel(PartsFactory):
                                             (cx + hi[0], w / 2, cz + hi[1])), "fabric"))
                 continue
             cs = m3d.CrossSection([pts], m3d.FillRule.NonZero)
-            out.append(Part(_xz_extrude(cs, -w / 2, w / 2).translate((cx, 0.0, cz)), "fabric"))
+            out.append(Part(xz_extrude(cs, -w / 2, w / 2).translate((cx, 0.0, cz)), "fabric"))
         return out
 
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:

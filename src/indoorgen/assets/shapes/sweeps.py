@@ -22,6 +22,14 @@ def unit_rows(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
+def xz_extrude(cs: m3d.CrossSection, y0: float, y1: float) -> m3d.Manifold:
+    """Extrude a side profile drawn in (x, z) from y0 to y1 along Y."""
+    m = m3d.Manifold.extrude(cs, y1 - y0)
+    # (a, b, h) -> (x=a, y=y1-h, z=b): a proper rotation (det +1)
+    return m.transform(np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, y1],
+                                 [0.0, 1.0, 0.0, 0.0]]))
+
+
 def dedupe_points(points: ArrayLike) -> np.ndarray:
     """The points (N, 3) without those repeating their predecessor (zero-length segments)."""
     arr = np.asarray(points, float)

@@ -1,6 +1,7 @@
 """A bedroom: the bed's head to a wall with free access to both sides, matching nightstands at
 the head with lamps, a wardrobe or dresser with room before it, a rug at the bed's foot,
-clothes, books and decor; sometimes a desk or a reading chair."""
+clothes, books and decor; a bookcase and wall shelves where there is room, plants, pictures and
+a floor lamp; sometimes a desk with its lamp and laptop, or a reading chair."""
 from indoorgen.constraints import (
     Constraint,
     ObjSet,
@@ -35,6 +36,16 @@ from indoorgen.programs.relations import (
 BED_SIDE = 0.6
 #: how far beside the bed its side clearance is probed (m)
 SIDE_PROBE = 1.0
+#: a bedroom whose plan box is larger than this (m^2) has a bookcase: a 12-15 m^2 bedroom holds
+#: the bed, nightstands and a wardrobe with their clearances, and about 1 m^2 more (a bookcase
+#: 0.3-0.4 m deep and its 0.6 m front) fits from 16 m^2 on
+BOOKCASE_AREA = 16.0
+#: a bedroom whose plan box is larger than this (m^2) has a wardrobe (a dresser alone is for
+#: the smallest rooms, or those with a closet)
+WARDROBE_AREA = 13.0
+#: the band a wall shelf's centre hangs in (m): above a nightstand or desk (0.7 m) and within
+#: reach, its top board no higher than eye level (the reach rule's 1.6 m)
+SHELF_BAND = (1.0, 1.45)
 
 
 def bedroom(room: ObjSet) -> Problem:
@@ -50,14 +61,23 @@ def bedroom(room: ObjSet) -> Problem:
     desks = floor[S.Desk].related_to(room, against_wall)
     desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
     reading_chairs = floor[S.Armchair]
+    bookcases = floor[S.Bookcase].related_to(room, against_wall)
+    shelves = scene()[S.WallShelf].related_to(room, on_wall)
+    floor_lamps = floor[S.FloorLamp]
+    # a laundry basket and a pair of shoes stand on the floor by a wall
+    floor_things = floor[S.Basket] | floor[S.Shoes]
     rugs = bed_rugs(floor).related_to(beds, under_bed_foot)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     mirrors = scene().of_generator("mirror").related_to(room, on_wall)
     lamps = scene()[S.TableLamp].related_to(nightstands, on_top)
+    desk_lamps = scene()[S.DeskLamp].related_to(desks, on_top)
+    laptops = scene()[S.Laptop].related_to(desks, on_top)
     surfaces = nightstands | dressers | desks
     books = scene()[S.Book].related_to(surfaces, on_top)
-    clothes = scene()[S.FoldedClothes].related_to(dressers | beds, on_top)
+    # clothes laid on the bed, the dresser or a chair
+    clothes = scene()[S.FoldedClothes].related_to(dressers | beds | reading_chairs | desk_chairs,
+                                                   on_top)
     decor = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
         S.Electronics).related_to(surfaces, on_top)
@@ -77,21 +97,34 @@ def bedroom(room: ObjSet) -> Problem:
             "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
             "a reading chair at most": reading_chairs.count().in_range(0, 1),
             "a rug at most": rugs.count().in_range(0, 1),
-            "a plant at most": plants.count().in_range(0, 1),
+            "up to two plants": plants.count().in_range(0, 2),
+            "a bookcase at most": bookcases.count().in_range(0, 1),
+            # 0 up to the area, then 1 (a fraction below 1 still asks for one)
+            "a wardrobe in a larger room": wardrobes.count() >= (
+                room.volume((0, 1)) - WARDROBE_AREA).clip(0.0, 1.0),
+            "a bookcase in a larger room": bookcases.count() >= (
+                room.volume((0, 1)) - BOOKCASE_AREA).clip(0.0, 1.0),
+            "up to two wall shelves": shelves.count().in_range(0, 2),
+            "a floor lamp at most": floor_lamps.count().in_range(0, 1),
+            "a laundry basket at most": floor[S.Basket].count().in_range(0, 1),
+            "shoes on the floor": floor[S.Shoes].count().in_range(0, 2),
+            "a lamp on the desk": desks.all(lambda d: desk_lamps.related_to(d, on_top).count() <= 1),
+            "a laptop on the desk": desks.all(lambda d: laptops.related_to(d, on_top).count() <= 1),
             "a ceiling light": ceiling_lights(room).count() == 1,
             "a lamp per nightstand": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
-            "pictures": art.count().in_range(1, 2),
+            "pictures": art.count().in_range(1, 3),
             "a mirror at most": mirrors.count().in_range(0, 1),
             "books": books.count().in_range(0, 6),
-            "clothes": clothes.count().in_range(0, 3),
+            "clothes": clothes.count().in_range(0, 4),
             "decor": decor.count().in_range(0, 8),
             "wardrobe doors free": fronts_free(wardrobes, blockers, room, margin=DOOR_SWING),
-            "storage fronts free": fronts_free(dressers | desks | nightstands, blockers, room),
+            "storage fronts free": fronts_free(dressers | desks | nightstands | bookcases, blockers,
+                                               room),
             "the bed's foot free": fronts_free(beds, blockers, room),
             # a narrow room's bed stands along a wall, free on one side; the score below asks
             # for both
             "free access to a side": beds.all(lambda b: side_free(b, "left") | side_free(b, "right")),
-            "everyday things within reach": within_reach(books | decor),
+            "everyday things within reach": within_reach(books | decor | laptops),
         },
         score_terms={
             "nightstands match either side": beds.mean(
@@ -107,8 +140,20 @@ def bedroom(room: ObjSet) -> Problem:
             "a lamp on each nightstand": lamps.count().maximize(1),
             "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
-            "a lived-in room": (books.count() + clothes.count() + decor.count() + rugs.count()
-                                + plants.count() + mirrors.count()).maximize(0.3),
+            # one term per stage (a term counts from the stage of its latest set on): the
+            # furniture, what hangs on the walls, the things on and in the furniture
+            "a furnished room": (bookcases.count() * 3 + dressers.count() + rugs.count()
+                                 + plants.count() + floor_lamps.count()
+                                 + floor_things.count()).maximize(0.3),
+            "things on the floor by the walls": floor_things.mean(
+                lambda t: t.distance(room).hinge(0.0, 0.1)).minimize(2),
+            "things on the walls": (shelves.count() * 2 + art.count()
+                                    + mirrors.count()).maximize(0.3),
+            "a lived-in room": (books.count() + clothes.count() + decor.count() + desk_lamps.count()
+                                + laptops.count()).maximize(0.3),
+            "wall shelves within reach": shelves.mean(
+                lambda s: height(s).hinge(*SHELF_BAND)).minimize(2),
+            "shelves free": accessibility_cost(bookcases, blockers).minimize(1),
             "reading chair by a lamp or window": reading_chairs.mean(
                 lambda c: c.distance(room).hinge(0.0, 0.3)).minimize(0.5),
         },

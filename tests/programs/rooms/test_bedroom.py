@@ -1,0 +1,24 @@
+"""The bedroom program (`programs.rooms.bedroom`): what a larger bedroom must hold."""
+from __future__ import annotations
+
+import pytest
+
+from indoorgen.constraints import scene
+from indoorgen.constraints.bounds import find_bounds
+from indoorgen.constraints.evaluator import Evaluator
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.rooms.bedroom import BOOKCASE_AREA, WARDROBE_AREA, bedroom
+from support.fakeview import FakeView
+
+
+@pytest.mark.parametrize("width,depth", [(3.0, 3.0), (3.5, 4.0), (4.5, 4.0), (2.3, 5.3)])
+def test_a_larger_bedroom_asks_for_a_wardrobe_and_a_bookcase(width, depth):
+    view = FakeView()
+    view.add_room("r", [(0, 0), (width, 0), (width, depth), (0, depth)])
+    problem = bedroom(scene()[S.Room].named("r"))
+    bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
+    for name, area in (("a wardrobe in a larger room", WARDROBE_AREA),
+                       ("a bookcase in a larger room", BOOKCASE_AREA)):
+        b = bounds[name]
+        assert b.below == (width * depth > area), name
+        assert b.can_add
