@@ -1,20 +1,24 @@
-"""Home benchmark: seconds per furnished home and how walkable it is.
+"""Home benchmark: seconds per furnished home, how walkable it is and how often it fails.
 
-    python benchmarks/home.py [--homes1 30] [--homes2 10] [--seed0 0] [--workers 1]
+    python benchmarks/home.py [--homes1 30] [--homes2 10] [--seed0 0] [--preset default]
+                              [--workers 1]
 
 Generates 1-storey homes for seeds seed0..seed0+homes1-1 and 2-storey homes for
-seed0..seed0+homes2-1 (`pipeline.generate_home`, default settings) and prints, per storey count:
-seconds per home (median, p90), rooms and objects per home, the navigation figures of
-`quality.navigation` for a 0.25 m agent from the entrance (reachable share of free floor:
-median and minimum; homes with every room reachable; unreachable rooms and doors per home;
-large objects whose front cannot be reached per home), the community navigability (0.2 m robot)
-and the seconds `navigation_report` takes per storey (median, max).
+seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: the failure rate
+(homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
+commonest reasons are listed below the table), seconds per home (median, p90), rooms and objects
+per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
+(reachable share of free floor: median and minimum, per storey too; homes with every room
+reachable; doors passable of all doors; unreachable rooms per home; large objects whose front
+cannot be reached per home), the community navigability (0.2 m robot) and the seconds
+`navigation_report` takes per storey (median, max).
 """
 from __future__ import annotations
 
 import argparse
 import statistics
 import time
+from collections import Counter
 
 import numpy as np
 
@@ -22,10 +26,11 @@ from indoorgen.pipeline import HomeConfig, generate_home
 from indoorgen.quality.navigation import navigability, navigation_report
 
 
-def one(seed: int, floors: int, workers: int = 1) -> dict:
+def one(seed: int, floors: int, preset: str, workers: int = 1) -> dict:
+    """Generate and measure one home; an exception is recorded as the home's failure."""
     t0 = time.perf_counter()
     try:
-        gen = generate_home(seed, HomeConfig(floors=floors, workers=workers))
+        gen = generate_home(seed, HomeConfig(floors=floors, preset=preset, workers=workers))
     except Exception as e:  # reported, not fatal: the benchmark counts failures
         return {"seed": seed, "error": f"{type(e).__name__}: {e}"}
     t1 = time.perf_counter()
@@ -34,6 +39,7 @@ def one(seed: int, floors: int, workers: int = 1) -> dict:
     nav = navigability(gen.scene, gen.rooms, gen.cache, gen.architecture)
     return {"seed": seed, "seconds": t1 - t0, "rooms": len(gen.scene.rooms),
             "objects": len(gen.scene.objects), "report": rep, "navigability": nav,
+            "reasons": gen.report["status"]["reasons"],
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
 
 
@@ -41,9 +47,35 @@ def _p90(xs: list[float]) -> float:
     return float(np.percentile(xs, 90))
 
 
+def _reason_kind(reason: str) -> str:
+    """A failure reason without the names of rooms, doors and objects: what kind of fault."""
+    if reason.startswith("room ") and ": hard constraint " in reason:
+        return "hard constraint " + reason.split(": hard constraint ", 1)[1].split(" ")[0]
+    if reason.startswith("layout rule "):
+        return reason.split(":", 1)[0]
+    for kind in ("is not reachable from the entrance", "cannot be passed from the entrance"):
+        if kind in reason:
+            return f"{reason.split(' ', 1)[0]} {kind}"
+    return reason
+
+
+def failure_kinds(runs: list[dict]) -> Counter[str]:
+    """How many homes failed for each kind of reason (a raised error counts as its type)."""
+    kinds: Counter[str] = Counter()
+    for r in runs:
+        if "error" in r:
+            kinds["raised " + r["error"].split(":", 1)[0]] += 1
+        else:
+            kinds.update({_reason_kind(x) for x in r["reasons"]})
+    return kinds
+
+
 def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
+    """The table's rows for the homes of one storey count."""
     ok = [r for r in runs if "error" not in r]
-    rows = [("homes (failed)", f"{len(runs)} ({len(runs) - len(ok)})")]
+    failed = sum(1 for r in runs if "error" in r or r["reasons"])
+    rows = [("homes (raised)", f"{len(runs)} ({len(runs) - len(ok)})"),
+            ("failure rate", f"{failed / len(runs):.1%} ({failed})" if runs else "")]
     if not ok:
         return rows
     secs = [r["seconds"] for r in ok]
@@ -58,8 +90,9 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
          f"{sum(r['report']['passed'] for r in ok)} / {len(ok)}"),
         ("unreachable rooms per home: mean",
          f"{statistics.mean(len(r['report']['unreachable_rooms']) for r in ok):.2f}"),
-        ("unreachable doors per home: mean",
-         f"{statistics.mean(len(r['report']['unreachable_doors']) for r in ok):.2f}"),
+        ("doors passable",
+         f"{sum(r['report']['doors'] - len(r['report']['unreachable_doors']) for r in ok)} / "
+         f"{sum(r['report']['doors'] for r in ok)}"),
         ("large objects unreachable per home: mean",
          f"{statistics.mean(len(r['report']['large_objects_unreachable']) for r in ok):.2f}"),
         ("navigability (0.2 m robot): median / min",
@@ -68,9 +101,9 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
         ("navigation_report s per storey: median / max",
          f"{statistics.median(nav_s):.3f} / {max(nav_s):.3f}"),
     ]
-    if floors > 1:
-        up = [r["report"]["storeys"].get("1", {}).get("reachable_share", 0.0) for r in ok]
-        rows.append(("storey 1 reachable share: median / min",
+    for lv in range(1, floors):
+        up = [r["report"]["storeys"].get(str(lv), {}).get("reachable_share", 0.0) for r in ok]
+        rows.append((f"storey {lv} reachable share: median / min",
                      f"{statistics.median(up):.3f} / {min(up):.3f}"))
     return rows
 
@@ -80,16 +113,24 @@ def main() -> None:
     ap.add_argument("--homes1", type=int, default=30, help="1-storey homes")
     ap.add_argument("--homes2", type=int, default=10, help="2-storey homes")
     ap.add_argument("--seed0", type=int, default=0, help="first seed")
+    ap.add_argument("--preset", default="default", help="fast, default or dense")
     ap.add_argument("--workers", type=int, default=1, help="processes solving rooms")
     args = ap.parse_args()
     columns = {}
     for floors, n in ((1, args.homes1), (2, args.homes2)):
         if n > 0:
-            runs = [one(s, floors, args.workers) for s in range(args.seed0, args.seed0 + n)]
+            runs = [one(s, floors, args.preset, args.workers)
+                    for s in range(args.seed0, args.seed0 + n)]
             columns[floors] = summary(floors, runs)
             for r in runs:
                 if "error" in r:
-                    print(f"  {floors}-storey seed {r['seed']} failed: {r['error']}")
+                    print(f"  {floors}-storey seed {r['seed']} raised: {r['error']}")
+                elif r["reasons"]:
+                    print(f"  {floors}-storey seed {r['seed']} failed: "
+                          + "; ".join(r["reasons"][:4])
+                          + (f" (+{len(r['reasons']) - 4})" if len(r["reasons"]) > 4 else ""))
+            for kind, count in failure_kinds(runs).most_common():
+                print(f"  {floors}-storey homes failed by {kind}: {count}")
     labels = list(dict.fromkeys(k for rows in columns.values() for k, _ in rows))
     table = [["", *(f"{f}-storey" for f in columns)]]
     table += [[label, *(dict(rows).get(label, "") for rows in columns.values())]

@@ -39,6 +39,7 @@ from indoorgen.outputs import atomic_dir
 from indoorgen.programs import ROOM_PROGRAMS, get_program
 from indoorgen.quality.layout import quality_report
 from indoorgen.quality.navigation import navigation_report, write_nav_images
+from indoorgen.quality.verdict import scene_status
 from indoorgen.render.plan import draw_plan
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig
@@ -283,12 +284,14 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
 
 def _assess(gen: Generated) -> None:
     """Measure the finished scene (it changes nothing): the layout-quality rules and community
-    measures go into report.json's `quality` section, walkability for a robot into `navigation`."""
+    measures go into report.json's `quality` section, walkability for a robot into `navigation`,
+    and whether the scene failed (any hard requirement unmet) and why into `status`."""
     t = time.perf_counter()
     gen.report["quality"] = quality_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
     gen.report["navigation"] = navigation_report(gen.scene, gen.rooms, gen.cache,
                                                  gen.architecture)
     gen.report["timings_s"]["quality"] = round(time.perf_counter() - t, 4)
+    gen.report["status"] = scene_status(gen.report)
 
 
 def _home_problem(room_type: str, fullness: float, room: str) -> Problem:

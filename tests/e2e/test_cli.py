@@ -185,7 +185,11 @@ def test_nav_image_and_navigation_report(tmp_path):
             "--out", str(out))
     assert r.returncode == 0, r.stderr
     assert (out / "nav_0.png").is_file()
-    nav = json.loads((out / "report.json").read_text())["navigation"]
+    report = json.loads((out / "report.json").read_text())
+    nav = report["navigation"]
     assert 0.0 < nav["reachable_share"] <= 1.0
-    assert nav["passed"] == (not nav["unreachable_rooms"])
+    assert nav["passed"] == (not nav["unreachable_rooms"] and not nav["unreachable_doors"])
     assert "navigation" in r.stdout
+    # the scene's status: failed with its reasons, or ok; printed as one line
+    assert report["status"]["failed"] == bool(report["status"]["reasons"])
+    assert ("status FAILED" if report["status"]["failed"] else "status ok") in r.stdout

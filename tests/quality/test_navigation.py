@@ -37,9 +37,13 @@ def test_empty_room_is_reached_but_for_its_corners():
     # four room corners and the two far corners of the dead-end door passage
     assert rep["storeys"]["0"]["free_m2"] == pytest.approx(free, abs=1e-6)
     # the 5 cm grid misses about twice the corner area (10 cells a corner); 2 cm comes closer
-    assert rep["reachable_share"] == pytest.approx(1 - 6 * CORNER / free, abs=0.008)
-    fine = _report([room], cell=0.02)["reachable_share"]
+    assert rep["reachable_share_of_free"] == pytest.approx(1 - 6 * CORNER / free, abs=0.008)
+    fine = _report([room], cell=0.02)["reachable_share_of_free"]
     assert fine == pytest.approx(1 - 6 * CORNER / free, abs=0.003)
+    # no agent fits in a corner wherever it stands: the walkable floor leaves them out
+    s = rep["storeys"]["0"]
+    assert s["walkable_m2"] == pytest.approx(s["reachable_m2"])
+    assert rep["reachable_share"] == 1.0
     assert rep["passed"] and not rep["failures"]
     assert rep["unreachable_rooms"] == rep["unreachable_doors"] == []
     sc, geo = scene_of([room])
@@ -61,7 +65,8 @@ def test_furniture_across_the_room_cuts_off_the_far_part():
     rep = _report([room], row)
     assert rep["reachable_share"] < 0.6 * open_share
     assert rep["unreachable_doors"] == ["far"]
-    assert rep["unreachable_rooms"] == [] and rep["passed"]  # the room itself is entered
+    assert rep["unreachable_rooms"] == []  # the room itself is entered, but not its far door
+    assert not rep["passed"] and rep["failures"] == ["door far cannot be passed from the entrance"]
 
 
 def test_a_narrow_gap_passes_a_thin_agent_only():
@@ -86,7 +91,8 @@ def test_an_open_door_links_two_rooms():
     narrow = _report(_two_rooms(0.4))
     assert narrow["unreachable_rooms"] == ["b"] and narrow["unreachable_doors"] == ["d"]
     assert not narrow["passed"]
-    assert narrow["failures"] == ["room b is not reachable from the entrance"]
+    assert narrow["failures"] == ["room b is not reachable from the entrance",
+                                  "door d cannot be passed from the entrance"]
 
 
 def test_a_shut_door_cuts_off_the_room_behind_an_open_one_does_not():
@@ -99,6 +105,9 @@ def test_a_shut_door_cuts_off_the_room_behind_an_open_one_does_not():
         rep = navigation_report(sc, geo, BoxCache())
         assert rep["unreachable_rooms"] == (["b"] if cut_off else []), doors
         assert rep["unreachable_doors"] == (["d"] if cut_off else []), doors
+        # a shut door is the user's choice: the room behind it fails, the door does not
+        assert rep["failures"] == (["room b is not reachable from the entrance"]
+                                   if cut_off else []), doors
 
 
 def test_furniture_against_a_door_cuts_off_the_room_behind():
@@ -151,8 +160,10 @@ def test_report_is_json_ready_and_deterministic():
     rep = _report(_two_rooms(0.9), [box("sofa", "a", 2.0, 2.0, (1.0, 2.0, 0.8), tags=("sofa",))])
     again = _report(_two_rooms(0.9), [box("sofa", "a", 2.0, 2.0, (1.0, 2.0, 0.8), tags=("sofa",))])
     assert json.dumps(rep, sort_keys=True) == json.dumps(again, sort_keys=True)
-    assert set(rep) == {"agent_radius", "cell", "storeys", "reachable_share", "unreachable_rooms",
+    assert set(rep) == {"agent_radius", "cell", "storeys", "reachable_share",
+                        "reachable_share_of_free", "rooms", "doors", "unreachable_rooms",
                         "unreachable_doors", "large_objects_unreachable", "passed", "failures"}
+    assert (rep["rooms"], rep["doors"]) == (2, 2)
 
 
 def test_navigability_is_the_largest_region_share():
@@ -177,10 +188,10 @@ def test_generated_home_report_is_consistent():
     rep = navigation_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
     assert set(rep["storeys"]) == {"0"}
     for s in rep["storeys"].values():
-        assert 0 < s["reachable_m2"] <= s["free_m2"]
-        assert 0 <= s["reachable_share"] <= 1
+        assert 0 < s["reachable_m2"] <= s["walkable_m2"] <= s["free_m2"]
+        assert 0 <= s["reachable_share_of_free"] <= s["reachable_share"] <= 1
     assert 0 <= rep["reachable_share"] <= 1
     assert set(rep["unreachable_rooms"]) <= set(gen.scene.rooms)
     assert {o["object"] for o in rep["large_objects_unreachable"]} <= set(gen.scene.objects)
-    assert rep["passed"] == (not rep["unreachable_rooms"])
+    assert rep["passed"] == (not rep["unreachable_rooms"] and not rep["unreachable_doors"])
     assert 0 < navigability(gen.scene, gen.rooms, gen.cache, gen.architecture) <= 1

@@ -7,13 +7,16 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Arc
 
 from indoorgen.architecture.walls import WallThickness, door_frame, window_frame
+from indoorgen.model.floorplan import VehicleDoor
 from indoorgen.model.floorplan_io import from_json
 from indoorgen.render.symbols import (
+    DOOR_COLOUR,
     WINDOW_COLOUR,
     draw_storey_openings,
     leaf_width,
     nice_length,
     storey_walls,
+    vehicle_door_frame,
 )
 from support.plans import apartment
 
@@ -67,6 +70,23 @@ def test_walls_are_cut_at_every_opening():
     for d in storey.doors + storey.openings:
         f = door_frame(storey, d, t)
         assert walls.intersection(f.rect(d.width - 0.02, -0.05, 0.05)).area < 1e-9
+
+
+def test_vehicle_doors_cut_the_wall_and_are_drawn_at_their_width():
+    fp = from_json(apartment())
+    fp.vehicle_doors.append(VehicleDoor("kitchen_0", (8.0, 0.0), 2.4))  # its 4 m outside wall
+    t = WallThickness()
+    storey = fp.storeys[0]
+    f = vehicle_door_frame(storey, fp.vehicle_doors[0], t)
+    assert np.allclose(f.n, [0.0, -1.0])  # out of the house
+    walls = storey_walls(fp, storey, t)
+    assert walls.intersection(f.rect(2.38, -t.exterior / 2, t.exterior / 2)).area < 1e-9
+    ax, _ = _drawn(fp)
+    heavy = [np.asarray(ln.get_xydata()) for ln in ax.lines
+             if ln.get_color() == DOOR_COLOUR and ln.get_linewidth() > 2]
+    assert len(heavy) == 1  # the closed door, across the opening in the wall
+    assert abs(np.linalg.norm(heavy[0][1] - heavy[0][0]) - 2.4) < 1e-9
+    assert np.all(np.abs(heavy[0][:, 1]) < t.exterior / 2)
 
 
 def test_scale_bar_lengths_are_round():

@@ -155,6 +155,7 @@ def run_generate(args: argparse.Namespace) -> int:
               f"constraints violated, {rep['timings_s']['total']:.2f} s")
         print(f"{out}: layout quality {_quality_line(rep['quality'])}")
         print(f"{out}: navigation {_navigation_line(rep['navigation'])}")
+        print(f"{out}: status {_status_line(rep['status'])}")
     return 0
 
 
@@ -172,11 +173,22 @@ def _quality_line(quality: dict[str, Any]) -> str:
 
 def _navigation_line(nav: dict[str, Any]) -> str:
     """One line for the navigation report: the reachable share, and what cannot be reached."""
-    line = (f"{nav['reachable_share']:.0%} of the free floor reachable by a "
+    line = (f"{nav['reachable_share']:.0%} of the walkable floor reachable by a "
             f"{nav['agent_radius']:g} m-radius robot")
     if nav["unreachable_rooms"]:
         line += f"; unreachable rooms: {', '.join(nav['unreachable_rooms'])}"
+    if nav["unreachable_doors"]:
+        line += f"; doors not passable: {', '.join(nav['unreachable_doors'])}"
     return line
+
+
+def _status_line(status: dict[str, Any]) -> str:
+    """One line for the scene's status: ok, or failed with its first reason and a count."""
+    reasons = status["reasons"]
+    if not status["failed"]:
+        return "ok: every hard requirement met"
+    more = f" (+{len(reasons) - 1} more; see report.json)" if len(reasons) > 1 else ""
+    return f"FAILED: {reasons[0]}{more}"
 
 
 def _room_config(args: argparse.Namespace) -> GenerateConfig:

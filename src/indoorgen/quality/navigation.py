@@ -7,8 +7,14 @@ stairs, stairwells and everything 0.02-1.8 m above the floor), eroded by the age
 cells its centre may occupy), split into 4-connected components, and flooded from the components
 just inside the entrance door (a single room: its door). A stair joins the components at its
 foot (lower storey) to those at its head (upper storey). The floor *reached* is what the agent's
-body sweeps from every reachable centre, so an empty room counts as reached but for its corners
-(each loses (1 - pi/4) r^2).
+body sweeps from every reachable centre; the *walkable* floor is what it sweeps from every centre
+it could occupy, reachable or not. The reachable share is reached over walkable floor: free floor
+no agent of this radius could ever touch, wherever it stood (a right-angled corner loses
+(1 - pi/4) r^2, a slot between furniture or behind it narrower than the agent, the gaps between
+dining chairs pushed in round their table), is no walking agent's to reach, so it is left out of
+the share rather than counted as cut off; the floor an agent could stand on and cannot get to
+(a pocket sealed by furniture, a room behind a blocked door, an unreachable storey) is what the
+share misses. The share of all free floor is reported beside it (`reachable_share_of_free`).
 
 - a room is reachable when a reachable centre lies on its floor;
 - a door when reachable centres lie in front of it on each side it opens into (`APPROACH` beyond
@@ -56,21 +62,25 @@ from indoorgen.quality.occupancy import DoorSite, StoreyOccupancy, storey_occupa
 ROBOT_RADIUS = 0.2
 
 _COLOURS = {"outside": (1.0, 1.0, 1.0), "obstacle": (0.33, 0.33, 0.33),
-            "unreached": (0.88, 0.34, 0.35), "reached": (0.69, 0.86, 0.63),
+            "untouchable": (0.97, 0.80, 0.55), "unreached": (0.88, 0.34, 0.35),
+            "reached": (0.69, 0.86, 0.63),
             "centres": (0.35, 0.63, 0.31)}
-_LEGEND = {"obstacle": "obstacle (0.02-1.8 m)", "unreached": "free, not reached",
+_LEGEND = {"obstacle": "obstacle (0.02-1.8 m)",
+           "untouchable": "free, but no agent fits there", "unreached": "walkable, not reached",
            "reached": "reached by the agent's body", "centres": "agent centre can reach"}
 
 
 @dataclass
 class StoreyReach:
-    """One storey's occupancy with the agent's reachable centres and the floor they sweep."""
+    """One storey's occupancy with the centres an agent can occupy, those it can reach, the
+    floor the reachable ones sweep (`swept`) and the floor all of them sweep (`walkable`)."""
 
     occ: StoreyOccupancy
     centres: np.ndarray
     labels: np.ndarray
     reached: np.ndarray
     swept: np.ndarray
+    walkable: np.ndarray
 
     def hits(self, geom: sg.base.BaseGeometry) -> bool:
         """Whether a reachable centre lies in `geom`."""
@@ -110,6 +120,11 @@ def _railings(architecture: Architecture | None, level: int, elevation: float
     return out
 
 
+def shut_doors(scene: Scene) -> list[str]:
+    """The doors scene.json records as shut, by name."""
+    return sorted(n for n, v in (scene.doors or {}).items() if v <= SHUT)
+
+
 def occupancies(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
                 architecture: Architecture | None = None, *, cell: float = CELL
                 ) -> dict[int, StoreyOccupancy]:
@@ -117,7 +132,7 @@ def occupancies(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCac
     room_map = _room_map(scene, rooms)
     fp = _floorplan(scene, architecture)
     levels = sorted({r.storey for r in room_map.values()})
-    shut = [n for n, v in (scene.doors or {}).items() if v <= SHUT]
+    shut = shut_doors(scene)
     out = {}
     for lv in levels:
         elevation = next(r.elevation for r in room_map.values() if r.storey == lv)
@@ -192,7 +207,8 @@ def reach(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
         got = sorted(lab for level, lab in seen if level == lv)
         reached = np.isin(labels[lv], got) & centres[lv]
         storeys[lv] = StoreyReach(o, centres[lv], labels[lv], reached,
-                                  cover(reached, o.free, agent_radius, cell))
+                                  cover(reached, o.free, agent_radius, cell),
+                                  cover(centres[lv], o.free, agent_radius, cell))
     return Reach(agent_radius, cell, storeys, start)
 
 
@@ -220,22 +236,31 @@ def _r4(x: float) -> float:
     return round(float(x), 4)
 
 
+def _share(part: float, whole: float) -> float:
+    return _r4(part / whole if whole else 0.0)
+
+
 def navigation_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: AssetCache,
                       architecture: Architecture | None = None, *, agent_radius: float = AGENT_RADIUS,
                       cell: float = CELL) -> dict[str, Any]:
-    """The `navigation` section of report.json: per storey and overall, the share of free floor
-    an agent of `agent_radius` reaches from the entrance; rooms, doors and large objects it
-    cannot reach; `passed` when every room is reachable."""
+    """The `navigation` section of report.json: per storey and overall, the share of walkable
+    floor (and of all free floor) an agent of `agent_radius` reaches from the entrance; rooms,
+    doors and large objects it cannot reach; `passed` when every room is reachable and every
+    door standing open can be passed (`failures` says what is not: a shut door is the user's
+    choice, not a fault)."""
     rc = reach(scene, rooms, cache, architecture, agent_radius=agent_radius, cell=cell)
-    storeys, free_all, got_all = {}, 0.0, 0.0
-    bad_rooms, bad_doors = [], []
+    shut = set(shut_doors(scene))
+    storeys, free_all, walk_all, got_all = {}, 0.0, 0.0, 0.0
+    bad_rooms, bad_doors, n_doors = [], [], 0
     for lv, sr in rc.storeys.items():
         g = sr.occ.grid
-        free, got = g.area(sr.occ.free), g.area(sr.swept)
-        free_all, got_all = free_all + free, got_all + got
-        storeys[str(lv)] = {"free_m2": _r4(free), "reachable_m2": _r4(got),
-                            "reachable_share": _r4(got / free if free else 0.0)}
+        free, walk, got = g.area(sr.occ.free), g.area(sr.walkable), g.area(sr.swept)
+        free_all, walk_all, got_all = free_all + free, walk_all + walk, got_all + got
+        storeys[str(lv)] = {"free_m2": _r4(free), "walkable_m2": _r4(walk),
+                            "reachable_m2": _r4(got), "reachable_share": _share(got, walk),
+                            "reachable_share_of_free": _share(got, free)}
         bad_rooms += [n for n, poly in sr.occ.rooms.items() if not sr.hits(poly)]
+        n_doors += len(sr.occ.doors)
         bad_doors += [n for n, site in sr.occ.doors.items()
                       if not _door_ok(sr, site, agent_radius)]
     bad_objects = []
@@ -250,8 +275,12 @@ def navigation_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: As
             bad_objects.append({"object": name, "room": ob.room})
     failures = [] if rc.start is not None else ["no entrance door to start from"]
     failures += [f"room {n} is not reachable from the entrance" for n in sorted(bad_rooms)]
+    failures += [f"door {n} cannot be passed from the entrance" for n in sorted(set(bad_doors))
+                 if n not in shut]
     return {"agent_radius": _r4(agent_radius), "cell": _r4(cell), "storeys": storeys,
-            "reachable_share": _r4(got_all / free_all if free_all else 0.0),
+            "reachable_share": _share(got_all, walk_all),
+            "reachable_share_of_free": _share(got_all, free_all),
+            "rooms": sum(len(sr.occ.rooms) for sr in rc.storeys.values()), "doors": n_doors,
             "unreachable_rooms": sorted(bad_rooms), "unreachable_doors": sorted(set(bad_doors)),
             "large_objects_unreachable": bad_objects, "passed": not failures,
             "failures": failures}
@@ -285,7 +314,8 @@ def _picture(sr: StoreyReach) -> np.ndarray:
     img = np.empty((*o.grid.shape, 3))
     img[:] = _COLOURS["outside"]
     img[o.floor & o.obstacles] = _COLOURS["obstacle"]
-    img[o.free] = _COLOURS["unreached"]
+    img[o.free] = _COLOURS["untouchable"]
+    img[sr.walkable] = _COLOURS["unreached"]
     img[sr.swept] = _COLOURS["reached"]
     img[sr.reached] = _COLOURS["centres"]
     return img
@@ -314,9 +344,9 @@ def write_nav_images(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: Ass
             c = sr.occ.doors[rc.start[1]].centre
             ax.plot([c[0]], [c[1]], marker="*", markersize=16, color="#1f77b4",
                     markeredgecolor="black", label="entrance")
-        free = sr.occ.grid.area(sr.occ.free)
-        share = sr.occ.grid.area(sr.swept) / free if free else 0.0
-        ax.set_title(f"storey {lv}: {share:.0%} of free floor reached "
+        walk = sr.occ.grid.area(sr.walkable)
+        share = sr.occ.grid.area(sr.swept) / walk if walk else 0.0
+        ax.set_title(f"storey {lv}: {share:.1%} of walkable floor reached "
                      f"(agent radius {agent_radius} m)")
         ax.set_aspect("equal")
         handles = [Patch(color=_COLOURS[k], label=v) for k, v in _LEGEND.items()]

@@ -1,8 +1,8 @@
 """`plan.png` of a bare floorplan (what `indoorgen floorplan` writes): the storeys side by side
 at one scale, rooms coloured by type and named inside themselves (abbreviated, or numbered and
 named in the legend, when they are small), walls, doors with their swing, open connections,
-windows, stairs, the front door and a scale bar. Like `plan.py`, it draws on an Agg canvas
-without pyplot."""
+windows, garages' vehicle doors, stairs, the front door and a scale bar. Like `plan.py`, it
+draws on an Agg canvas without pyplot."""
 from __future__ import annotations
 
 from collections import Counter
@@ -77,7 +77,7 @@ def floorplan_figure(fp: Floorplan, walls: WallThickness | None = None,
         ax.tick_params(labelsize=7)
     if title:
         fig.suptitle(title, fontsize=11)
-    _legend(fig, axes[-1], sorted(kinds), numbered)
+    _legend(fig, axes[-1], sorted(kinds), numbered, bool(fp.vehicle_doors))
     return fig
 
 
@@ -93,8 +93,11 @@ def _draw_storey(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
     return draw_storey_openings(ax, fp, storey, t, depth) + [st.shape() for st in stairs]
 
 
-def _legend(fig: Figure, last: Axes, types: list[str], numbered: list[tuple[int, str]]) -> None:
-    """Room-type colours, and the names of rooms labelled by number, right of the panels."""
+def _legend(fig: Figure, last: Axes, types: list[str], numbered: list[tuple[int, str]],
+            vehicle_doors: bool) -> None:
+    """Room-type colours, the symbols, and the names of rooms labelled by number, right of the
+    panels."""
     handles: list[Artist] = [Patch(facecolor=room_colour(k), edgecolor="none",
                                    label=k.replace("_", " ")) for k in types]
-    side_legend(fig, last, handles + symbol_handles() + numbered_handles(numbered), "legend")
+    handles += symbol_handles(vehicle_doors=vehicle_doors)
+    side_legend(fig, last, handles + numbered_handles(numbered), "legend")

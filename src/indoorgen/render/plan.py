@@ -139,7 +139,8 @@ def plan_figure(scene: Scene, footprints: dict[str, sg.Polygon], *,
         fig.suptitle(heading, fontsize=11)
     _draw_legend(fig, axes[-1], dict(sorted(classes.items())),
                  bool(door_zones and any(door_zones.values())), numbered,
-                 fp is not None and any(s.windows for s in fp.storeys))
+                 fp is not None and any(s.windows for s in fp.storeys),
+                 fp is not None and bool(fp.vehicle_doors))
     return fig
 
 
@@ -183,11 +184,11 @@ def _finish_axes(ax: Axes, title: str) -> None:
 
 
 def _draw_legend(fig: Figure, last: Axes, classes: dict[str, str], zones: bool,
-                 numbered: list[tuple[int, str]], windows: bool) -> None:
-    """Walls, doors (and windows), door clearances, object classes and the rooms labelled by
+                 numbered: list[tuple[int, str]], windows: bool, vehicle_doors: bool) -> None:
+    """Walls, doors (and windows and vehicle doors), door clearances, object classes and the rooms labelled by
     number."""
     handles: list[Artist] = [Patch(facecolor=WALL_COLOUR, edgecolor=WALL_COLOUR, label="wall")]
-    handles += symbol_handles(windows)
+    handles += symbol_handles(windows, vehicle_doors)
     if zones:
         handles.append(Patch(facecolor="none", edgecolor=ZONE_COLOUR, hatch="///",
                              label="door clearance"))

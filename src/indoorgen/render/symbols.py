@@ -1,6 +1,8 @@
 """Architectural plan symbols shared by `plan.py` and `floorplan.py`: a storey's walls cut by
 its openings, doors (leaf and swing arc at the leaf's real width), open connections (a plain
-gap), windows (a thin double line in the wall), stairs, the front door and a scale bar."""
+gap), windows (a thin double line in the wall), garages' vehicle doors (the closed sectional door
+in the wall and, dashed, where it runs overhead when open), stairs, the front door and a scale
+bar."""
 from __future__ import annotations
 
 import math
@@ -18,11 +20,12 @@ from indoorgen.architecture.walls import (
     WallThickness,
     door_frame,
     entrance_frame,
+    exterior_frame,
     wall_footprint,
     window_frame,
 )
 from indoorgen.assets.shapes.architectural import LEAF_GAP
-from indoorgen.model.floorplan import Floorplan, StairSpec, Storey
+from indoorgen.model.floorplan import Floorplan, StairSpec, Storey, VehicleDoor
 from indoorgen.render.drawing import WALL_COLOUR, polygon_path
 from indoorgen.render.labels import LabelPlacer
 
@@ -80,6 +83,26 @@ def window_symbol(ax: Axes, f: WallFrame, width: float) -> None:
         ax.plot([a[0], b[0]], [a[1], b[1]], color=WALL_COLOUR, linewidth=0.6, zorder=5)
 
 
+def vehicle_door_frame(storey: Storey, v: VehicleDoor, t: WallThickness) -> WallFrame:
+    """The frame of a garage's vehicle door in its exterior wall; `n` points out."""
+    return exterior_frame(storey, v.room, v.center, t, f"the vehicle door of {v.room!r}")
+
+
+def vehicle_door_symbol(ax: Axes, f: WallFrame, v: VehicleDoor) -> sg.Polygon:
+    """A garage's sectional door: the closed door as a heavy line in the outer half of the wall
+    (where `architecture.solidify` builds its panels) and, dashed, the panels' place overhead
+    when it stands open (`v.height` deep into the garage). Returns the door's line in the wall,
+    for labels to keep clear of."""
+    outer = f.thickness / 4
+    a, b = f.center - v.width / 2 * f.u + outer * f.n, f.center + v.width / 2 * f.u + outer * f.n
+    ax.plot([a[0], b[0]], [a[1], b[1]], color=DOOR_COLOUR, linewidth=2.2,
+            solid_capstyle="butt", zorder=5)
+    overhead = f.rect(v.width, -f.thickness / 2 - v.height, -f.thickness / 2)
+    patch(ax, overhead, facecolor="none", edgecolor=DOOR_COLOUR, linewidth=0.7,
+          linestyle=(0, (3, 2)), zorder=5)
+    return f.rect(v.width, -f.thickness / 2, f.thickness / 2)
+
+
 def storey_walls(fp: Floorplan, storey: Storey, t: WallThickness) -> sg.base.BaseGeometry:
     """The storey's walls with a gap at every door, open connection, window and (on the ground
     floor) the front door."""
@@ -90,6 +113,9 @@ def storey_walls(fp: Floorplan, storey: Storey, t: WallThickness) -> sg.base.Bas
     if fp.entrance is not None and storey.level == 0:
         gaps.append(entrance_frame(storey, fp.entrance, t).rect(
             fp.entrance.width, -t.exterior, t.exterior))
+    if storey.level == 0:
+        gaps += [vehicle_door_frame(storey, v, t).rect(v.width, -t.exterior, t.exterior)
+                 for v in fp.vehicle_doors]
     walls = wall_footprint(storey, t)
     return walls.difference(sg.MultiPolygon(gaps).buffer(0)) if gaps else walls
 
@@ -97,8 +123,8 @@ def storey_walls(fp: Floorplan, storey: Storey, t: WallThickness) -> sg.base.Bas
 def draw_storey_openings(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickness,
                          depth: dict[str, int]) -> list[sg.Polygon]:
     """Walls, doors (swinging into the room farther from the front door, as built), open
-    connections as plain gaps, windows and the front door of `storey`; returns the doors'
-    swings and the front door's arrow."""
+    connections as plain gaps, windows, garages' vehicle doors and the front door of `storey`;
+    returns the doors' swings, the vehicle doors and the front door's arrow."""
     patch(ax, storey_walls(fp, storey, t), facecolor=WALL_COLOUR, edgecolor="none", zorder=3)
     for w in storey.windows:
         window_symbol(ax, window_frame(storey, w, t), w.width)
@@ -108,6 +134,9 @@ def draw_storey_openings(ax: Axes, fp: Floorplan, storey: Storey, t: WallThickne
         a, b = d.rooms
         into = b if depth.get(b, 0) >= depth.get(a, 0) else a
         swings.append(door_symbol(ax, f, d.width, f.n if into == b else -f.n))
+    if storey.level == 0:
+        swings += [vehicle_door_symbol(ax, vehicle_door_frame(storey, v, t), v)
+                   for v in fp.vehicle_doors]
     if fp.entrance is not None and storey.level == 0:
         f = entrance_frame(storey, fp.entrance, t)
         swings.append(door_symbol(ax, f, fp.entrance.width, -f.n))
@@ -197,10 +226,14 @@ def label_fixtures(placer: LabelPlacer, fp: Floorplan, storey: Storey,
         placer.place(["entrance"], entrance_anchors(fp, t), fontsize=7, color=ENTRANCE_COLOUR)
 
 
-def symbol_handles(windows: bool = True) -> list[Artist]:
-    """Legend rows for the door symbol and (when the plan has any) the window symbol."""
+def symbol_handles(windows: bool = True, vehicle_doors: bool = False) -> list[Artist]:
+    """Legend rows for the door symbol and (when the plan has any) the window and vehicle-door
+    symbols."""
     rows: list[Artist] = [Line2D([], [], color=DOOR_COLOUR, linewidth=0.9,
                                  linestyle=(0, (3, 2)), label="door and its swing")]
     if windows:
         rows.append(Line2D([], [], color=WINDOW_COLOUR, linewidth=1.0, label="window"))
+    if vehicle_doors:
+        rows.append(Line2D([], [], color=DOOR_COLOUR, linewidth=2.2,
+                           label="vehicle door"))
     return rows
