@@ -88,13 +88,15 @@ def sound_piece(piece: trimesh.Trimesh) -> trimesh.Trimesh | None:
     `MIN_THICKNESS` thick across every direction and has no zero-area face; the hull of its
     vertices when it only has degenerate faces; a box `MIN_THICKNESS` thick over its outline
     when it is a thin slab; None when it is a sliver (thin across two directions) or empty."""
-    v = np.unique(np.round(np.asarray(piece.vertices, float), 9), axis=0)
+    v, inverse = np.unique(np.round(np.asarray(piece.vertices, float), 9), axis=0,
+                           return_inverse=True)
     if len(v) < 3:
         return None
-    normal, width = _thinnest(v)
+    faces = inverse.reshape(-1)[np.asarray(piece.faces, int)] if len(piece.faces) else \
+        np.zeros((0, 3), int)
+    normal, width = _thinnest(v, faces)
     if width < MIN_THICKNESS:
         return _slab_box(v, normal)
-    faces = np.asarray(piece.faces)
     if len(v) == len(piece.vertices) and len(faces) and \
             np.asarray(piece.area_faces).min() > MIN_FACE_AREA:
         return piece
@@ -102,22 +104,23 @@ def sound_piece(piece: trimesh.Trimesh) -> trimesh.Trimesh | None:
     return hull.submesh([np.flatnonzero(hull.area_faces > MIN_FACE_AREA)], append=True)
 
 
-def _thinnest(v: np.ndarray) -> tuple[np.ndarray, float]:
+def _thinnest(v: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, float]:
     """The direction across which points `v` (N, 3) are thinnest, and their width across it:
-    over the hull's face normals (a convex solid is thinnest across one of them, or close), or
-    the normal of their best-fit plane when they have no volume."""
+    over the normals of the (convex) faces `faces` (F, 3) indexing `v` (a convex solid is
+    thinnest across one of them, or close), or the normal of the points' best-fit plane when
+    they have no face with area."""
     centred = v - v.mean(axis=0)
     plane = np.linalg.svd(centred, full_matrices=False)[2][-1]
     flat = float(np.ptp(centred @ plane))
-    if flat < MIN_THICKNESS or len(v) < 4:
+    tri = v[faces] if len(faces) else np.zeros((0, 3, 3))
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    length = np.linalg.norm(n, axis=1)
+    n = n[length > 2 * MIN_FACE_AREA] / length[length > 2 * MIN_FACE_AREA, None]
+    if flat < MIN_THICKNESS or len(n) == 0:
         return plane, flat
-    try:
-        normals = trimesh.convex.convex_hull(v).face_normals
-    except Exception:  # qhull refuses a flat set: flat after all
-        return plane, flat
-    widths = np.ptp(centred @ np.asarray(normals).T, axis=0)
+    widths = np.ptp(centred @ n.T, axis=0)
     k = int(np.argmin(widths))
-    return np.asarray(normals[k], float), float(widths[k])
+    return n[k], float(widths[k])
 
 
 def _slab_box(v: np.ndarray, normal: np.ndarray) -> trimesh.Trimesh | None:
