@@ -37,7 +37,7 @@ from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
 from indoorgen.assets.protocol import Asset, Joint
-from indoorgen.export.convex import convex_parts
+from indoorgen.export.convex import convex_parts, sound_pieces
 from indoorgen.export.physics import Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject
 
@@ -124,7 +124,7 @@ class ExportBundle:
         """Convex collision pieces (world coordinates) of an architectural element."""
         key = ("pieces", element.path)
         if key not in self._memo:
-            self._memo[key] = list(element.collision) or [
+            self._memo[key] = sound_pieces(list(element.collision)) or [
                 p for part in element.parts for p in convex_parts(part.mesh)]
         return self._memo[key]
 

@@ -7,6 +7,12 @@ whose cross-section does not change is a prism over a 2D polygon, split into con
 (ear-clipping triangulation, then merging neighbours while the union stays convex); a band whose
 section changes (a stair flight's sloped underside) goes out as the hull of its two end
 sections.
+
+Every piece any simulator exporter writes passes `sound_piece` first: sections are snapped to a
+10 um grid (float noise otherwise leaves 0.1 um wide slivers between two ear-clipped parts,
+whose hull MuJoCo refuses as "coplanar"), a piece thinner than `MIN_THICKNESS` becomes a box
+that thick (a slab) or is dropped (a sliver or needle, thin across two directions), and no
+zero-area face reaches a file.
 """
 from __future__ import annotations
 
@@ -25,6 +31,13 @@ log = logging.getLogger(__name__)
 LEVEL_TOL = 1e-3
 #: thinnest band kept (m)
 MIN_BAND = 1e-3
+#: grid the cross-sections are snapped to (m): far finer than any architectural feature
+GRID = 1e-5
+#: thinnest collision piece written (m): thinner slabs are thickened to this, thinner
+#: slivers dropped. Simulators hull every piece (MuJoCo with qhull) and refuse a flat one.
+MIN_THICKNESS = 1e-3
+#: smallest face area a piece may keep (m^2): zero-area faces are dropped
+MIN_FACE_AREA = 1e-12
 
 
 def convex_parts(mesh: trimesh.Trimesh, max_pieces: int = 256) -> list[trimesh.Trimesh]:
@@ -61,8 +74,75 @@ def convex_parts(mesh: trimesh.Trimesh, max_pieces: int = 256) -> list[trimesh.T
                     log.debug("skipping a flat band at z=%.3f", z0)
     if not out or len(out) > max_pieces:
         log.debug("convex_parts: %d pieces; falling back to the hull", len(out))
-        return [hull] if not out else out[:max_pieces]
-    return out
+        out = [hull] if not out else out[:max_pieces]
+    return sound_pieces(out)
+
+
+def sound_pieces(pieces: list[trimesh.Trimesh]) -> list[trimesh.Trimesh]:
+    """`pieces` each made sound by `sound_piece`, slivers left out."""
+    return [p for p in map(sound_piece, pieces) if p is not None]
+
+
+def sound_piece(piece: trimesh.Trimesh) -> trimesh.Trimesh | None:
+    """`piece` as a convex collision piece every simulator accepts: itself when it is at least
+    `MIN_THICKNESS` thick across every direction and has no zero-area face; the hull of its
+    vertices when it only has degenerate faces; a box `MIN_THICKNESS` thick over its outline
+    when it is a thin slab; None when it is a sliver (thin across two directions) or empty."""
+    v, inverse = np.unique(np.round(np.asarray(piece.vertices, float), 9), axis=0,
+                           return_inverse=True)
+    if len(v) < 3:
+        return None
+    faces = inverse.reshape(-1)[np.asarray(piece.faces, int)] if len(piece.faces) else \
+        np.zeros((0, 3), int)
+    normal, width = _thinnest(v, faces)
+    if width < MIN_THICKNESS:
+        return _slab_box(v, normal)
+    if len(v) == len(piece.vertices) and len(faces) and \
+            np.asarray(piece.area_faces).min() > MIN_FACE_AREA:
+        return piece
+    hull = trimesh.convex.convex_hull(v)
+    return hull.submesh([np.flatnonzero(hull.area_faces > MIN_FACE_AREA)], append=True)
+
+
+def _thinnest(v: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, float]:
+    """The direction across which points `v` (N, 3) are thinnest, and their width across it:
+    over the normals of the (convex) faces `faces` (F, 3) indexing `v` (a convex solid is
+    thinnest across one of them, or close), or the normal of the points' best-fit plane when
+    they have no face with area."""
+    centred = v - v.mean(axis=0)
+    plane = np.linalg.svd(centred, full_matrices=False)[2][-1]
+    flat = float(np.ptp(centred @ plane))
+    tri = v[faces] if len(faces) else np.zeros((0, 3, 3))
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    length = np.linalg.norm(n, axis=1)
+    n = n[length > 2 * MIN_FACE_AREA] / length[length > 2 * MIN_FACE_AREA, None]
+    if flat < MIN_THICKNESS or len(n) == 0:
+        return plane, flat
+    widths = np.ptp(centred @ n.T, axis=0)
+    k = int(np.argmin(widths))
+    return n[k], float(widths[k])
+
+
+def _slab_box(v: np.ndarray, normal: np.ndarray) -> trimesh.Trimesh | None:
+    """The box `MIN_THICKNESS` thick around thin points `v` (N, 3), across `normal`, over their
+    smallest enclosing rectangle in the plane; None if that rectangle is thin too (a sliver)."""
+    axis = int(np.argmin(np.abs(normal)))
+    u = np.cross(normal, np.eye(3)[axis])
+    u /= np.linalg.norm(u)
+    w = np.cross(normal, u)
+    xy = np.column_stack([v @ u, v @ w])
+    rect = sg.MultiPoint(xy).minimum_rotated_rectangle
+    if not isinstance(rect, sg.Polygon):
+        return None
+    corners = np.asarray(rect.exterior.coords)[:4]
+    sides = np.linalg.norm(np.diff(np.vstack([corners, corners[:1]]), axis=0), axis=1)
+    if sides.min() < MIN_THICKNESS:
+        return None
+    mid = float(np.mean([(v @ normal).min(), (v @ normal).max()]))
+    half = MIN_THICKNESS / 2
+    base = corners[:, :1] * u + corners[:, 1:] * w
+    pts = np.concatenate([base + (mid - half) * normal, base + (mid + half) * normal])
+    return trimesh.convex.convex_hull(pts)
 
 
 def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
@@ -70,7 +150,7 @@ def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
     segs = trimesh.intersections.mesh_plane(mesh, [0.0, 0.0, 1.0], [0.0, 0.0, z])
     if len(segs) == 0:
         return sg.Polygon()
-    segs = np.round(np.asarray(segs)[:, :, :2], 7)
+    segs = np.round(np.asarray(segs)[:, :, :2] / GRID) * GRID
     segs = segs[np.abs(segs[:, 0] - segs[:, 1]).max(axis=1) > 0]
     faces = list(shapely.polygonize(shapely.linestrings(segs)).geoms)
     if not faces:
@@ -82,7 +162,7 @@ def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
         depth = sum(1 for j, s in enumerate(shells) if j != i and s.area > f.area and s.contains(p))
         if depth % 2 == 0:
             keep.append(f)
-    return unary_union(keep)
+    return shapely.set_precision(unary_union(keep), GRID)
 
 
 def _ring_points(geom, z: float) -> np.ndarray:
@@ -156,7 +236,7 @@ def _hertel_mehlhorn(poly: sg.Polygon) -> list[sg.Polygon]:
 
 def _prism(poly: sg.Polygon, z0: float, z1: float) -> trimesh.Trimesh:
     """The closed prism over convex `poly` from z0 to z1 (outward normals)."""
-    xy = np.asarray(sg.polygon.orient(poly, 1.0).exterior.coords)[:-1]
+    xy = np.asarray(sg.polygon.orient(poly.simplify(GRID), 1.0).exterior.coords)[:-1]
     n = len(xy)
     verts = np.concatenate([np.column_stack([xy, np.full(n, z0)]),
                             np.column_stack([xy, np.full(n, z1)])])

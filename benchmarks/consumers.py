@@ -1,0 +1,225 @@
+"""Consumers benchmark: how the simulator exports behave in the engines users run.
+
+    python benchmarks/consumers.py [--rooms 2] [--homes1 2] [--homes2 1] [--cache DIR]
+                                   [--preset default] [--seconds 2]
+
+For living rooms (seeds 0..rooms-1) and 1- and 2-storey homes (seeds 0..N-1) it writes the MJCF
+and URDF exports and prints, per scene and then per kind (median and p90 over seeds):
+- MuJoCo: seconds to compile `scene.xml` (or the compile error), and stability: the share of
+  free bodies that moved < 2 cm in `--seconds` s under gravity and the largest drift (issue 12's
+  bar: >= 99 % and none > 10 cm);
+- PyBullet: seconds to load `scene.urdf`, then the same drift with every object URDF loaded as
+  a free body at its pose (objects hanging on walls fixed) on the fixed architecture, and the
+  joints that penetrate another body (> 1 cm) when opened to either limit;
+- Newton, when `import newton` works: load seconds and drift from `scene.usd`.
+`--cache DIR` keeps each generated scene.json there and re-exports it on later runs (so before
+and after an exporter change compare the same scenes).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pybullet as pb
+
+from indoorgen import GenerateConfig, HomeConfig, generate, generate_home
+from indoorgen.export import write_formats
+from indoorgen.export.bundle import ExportBundle, bundle_from_generated, bundle_from_scene
+from indoorgen.export.stability import simulate, stability
+from indoorgen.model.scene import Scene
+
+#: deepest a joint's part may reach into another body at a limit before it counts (m)
+PENETRATION = 0.01
+
+
+def scene_bundle(kind: str, seed: int, preset: str, cache: Path | None) -> ExportBundle:
+    """The export bundle of one scene, generated (or read back from `cache`)."""
+    path = cache / f"{kind}_{seed}.json" if cache else None
+    if path is not None and path.exists():
+        return bundle_from_scene(Scene.from_json(json.loads(path.read_text())))
+    if kind == "living_room":
+        gen = generate(seed, GenerateConfig(room_type="living_room", preset=preset))
+    else:
+        gen = generate_home(seed, HomeConfig(floors=int(kind[-1]), preset=preset))
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(gen.scene.dumps())
+    return bundle_from_generated(gen)
+
+
+def mujoco_figures(d: Path, seconds: float) -> dict:
+    """Compile seconds and drift of `scene.xml` in MuJoCo."""
+    t = time.perf_counter()
+    try:
+        mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    except Exception as e:  # reported: a refused file is a result
+        return {"mj_error": str(e).splitlines()[0][:160]}
+    out: dict = {"mj_load_s": time.perf_counter() - t}
+    st = stability(simulate(d / "scene.xml", seconds))
+    out.update(mj_free=st.free, mj_still=st.under_2cm, mj_max=st.max_m, mj_worst=st.worst)
+    return out
+
+
+def _quat(yaw: float) -> list[float]:
+    return [0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)]
+
+
+def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
+    """PyBullet: scene.urdf load seconds; free-body drift; joints penetrating at a limit."""
+    cid = pb.connect(pb.DIRECT)
+    try:
+        t = time.perf_counter()
+        pb.loadURDF(str(d / "scene.urdf"), useFixedBase=True, physicsClientId=cid)
+        out: dict = {"pb_load_s": time.perf_counter() - t}
+        pb.resetSimulation(physicsClientId=cid)
+        pb.setGravity(0, 0, -9.81, physicsClientId=cid)
+        pb.loadURDF(str(d / "urdf" / "architecture.urdf"), useFixedBase=True,
+                    physicsClientId=cid)
+        bodies = {}
+        for obj in bundle.objects:
+            fixed = bundle.is_fixed(obj)
+            bodies[obj.name] = (pb.loadURDF(
+                str(d / "urdf" / f"{obj.name}.urdf"), obj.pose.position, _quat(obj.pose.yaw),
+                useFixedBase=fixed, physicsClientId=cid), fixed)
+        out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid)
+        free = [b for b, fixed in bodies.values() if not fixed]
+        p0 = np.array([pb.getBasePositionAndOrientation(b, physicsClientId=cid)[0]
+                       for b in free]).reshape(-1, 3)
+        for _ in range(int(seconds * 240)):
+            pb.stepSimulation(physicsClientId=cid)
+        p1 = np.array([pb.getBasePositionAndOrientation(b, physicsClientId=cid)[0]
+                       for b in free]).reshape(-1, 3)
+        moved = np.linalg.norm(p1 - p0, axis=1)
+        out.update(pb_free=len(free), pb_still=float((moved < 0.02).mean()) if len(free) else 1.0,
+                   pb_max=float(moved.max()) if len(free) else 0.0)
+        return out
+    finally:
+        pb.disconnect(cid)
+
+
+def _limit_penetrations(bodies: dict, cid: int) -> tuple[int, int]:
+    """(joints whose part penetrates another body by > PENETRATION at a limit, joints)."""
+    bad = total = 0
+    others = [b for b, _ in bodies.values()]
+    for b, _ in bodies.values():
+        for j in range(pb.getNumJoints(b, physicsClientId=cid)):
+            info = pb.getJointInfo(b, j, physicsClientId=cid)
+            if info[2] not in (pb.JOINT_REVOLUTE, pb.JOINT_PRISMATIC):
+                continue
+            total += 1
+            deepest = 0.0
+            for q in (info[8], info[9]):
+                pb.resetJointState(b, j, q, physicsClientId=cid)
+                for o in others:
+                    if o == b:
+                        continue
+                    pts = pb.getClosestPoints(b, o, 0.0, linkIndexA=j, physicsClientId=cid)
+                    deepest = min([deepest, *[p[8] for p in pts]])
+            pb.resetJointState(b, j, 0.0, physicsClientId=cid)
+            bad += deepest < -PENETRATION
+    return bad, total
+
+
+def newton_figures(d: Path, seconds: float) -> dict:
+    """Newton (if installed): load seconds and drift of scene.usd's bodies."""
+    try:
+        import newton  # type: ignore[import-not-found]
+    except ImportError:
+        return {}
+    try:
+        t = time.perf_counter()
+        builder = newton.ModelBuilder()
+        builder.add_usd(str(d / "scene.usdc"))
+        model = builder.finalize(device="cpu")
+        out: dict = {"nt_load_s": time.perf_counter() - t}
+        solver = newton.solvers.SolverMuJoCo(model)
+        s0, s1, control = model.state(), model.state(), model.control()
+        p0 = s0.body_q.numpy()[:, :3].copy()
+        dt = 0.002
+        for _ in range(int(seconds / dt)):
+            contacts = model.collide(s0)
+            solver.step(s0, s1, control, contacts, dt)
+            s0, s1 = s1, s0
+        moved = np.linalg.norm(s0.body_q.numpy()[:, :3] - p0, axis=1)
+        out.update(nt_bodies=len(moved), nt_still=float((moved < 0.02).mean()),
+                   nt_max=float(moved.max()))
+        return out
+    except Exception as e:  # reported: an engine refusing the file is a result
+        return {"nt_error": f"{type(e).__name__}: {e}"[:160]}
+
+
+def run_one(kind: str, seed: int, args) -> dict:
+    """Every figure of one scene."""
+    bundle = scene_bundle(kind, seed, args.preset, args.cache)
+    fmts = "mjcf,urdf" + (",usd" if args.newton else "")
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        write_formats(bundle, d, fmts, texture_resolution=16)
+        out = {"kind": kind, "seed": seed, **mujoco_figures(d, args.seconds)}
+        if args.bullet:
+            out.update(bullet_figures(bundle, d, args.seconds))
+        if args.newton:
+            out.update(newton_figures(d, args.seconds))
+    return out
+
+
+def _stat(xs: list[float]) -> str:
+    if not xs:
+        return "-"
+    return f"{statistics.median(xs):.3g} / {float(np.percentile(xs, 90)):.3g}"
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--rooms", type=int, default=2, help="living rooms (seeds 0..N-1)")
+    ap.add_argument("--homes1", type=int, default=2, help="1-storey homes (seeds 0..N-1)")
+    ap.add_argument("--homes2", type=int, default=1, help="2-storey homes (seeds 0..N-1)")
+    ap.add_argument("--preset", default="default")
+    ap.add_argument("--seconds", type=float, default=2.0)
+    ap.add_argument("--cache", type=Path, default=None)
+    ap.add_argument("--no-bullet", dest="bullet", action="store_false")
+    ap.add_argument("--newton", action="store_true", help="also Newton from the USD")
+    args = ap.parse_args()
+    rows = []
+    jobs = ([("living_room", s) for s in range(args.rooms)]
+            + [("home1", s) for s in range(args.homes1)]
+            + [("home2", s) for s in range(args.homes2)])
+    for kind, seed in jobs:
+        r = run_one(kind, seed, args)
+        rows.append(r)
+        worst = ", ".join(f"{n} {m * 100:.1f} cm" for n, m in r.get("mj_worst", []))
+        mj = (f"MJ error: {r['mj_error']}" if "mj_error" in r else
+              f"MJ {r['mj_load_s']:.2f} s {r['mj_free']} free {100 * r['mj_still']:.1f}% "
+              f"max {100 * r['mj_max']:.1f} cm ({worst})")
+        pb_ = (f" | PB {r['pb_load_s']:.2f} s {100 * r['pb_still']:.1f}% "
+               f"max {100 * r['pb_max']:.1f} cm, {r['pb_bad_joints']}/{r['pb_joints']} joints "
+               f"penetrate" if "pb_load_s" in r else "")
+        nt = (f" | NT {r.get('nt_error') or ''}{r.get('nt_load_s', 0):.2f} s "
+              f"{100 * r.get('nt_still', 0):.1f}% max {100 * r.get('nt_max', 0):.1f} cm"
+              if args.newton else "")
+        print(f"{kind:11s} {seed:3d}  {mj}{pb_}{nt}", flush=True)
+    print("\nkind         n  compiled  MJ load s  MJ % still  MJ max cm  pass  PB load s  "
+          "PB % still  PB max cm  joints penetrating  (median / p90)")
+    for kind in dict.fromkeys(k for k, _ in jobs):
+        rs = [r for r in rows if r["kind"] == kind]
+        ok = [r for r in rs if "mj_error" not in r]
+        passes = sum(r["mj_still"] >= 0.99 and r["mj_max"] <= 0.10 for r in ok)
+        pbr = [r for r in rs if "pb_load_s" in r]
+        print(f"{kind:11s} {len(rs):2d}  {len(ok):4d}  {_stat([r['mj_load_s'] for r in ok]):>14s}"
+              f"  {_stat([100 * r['mj_still'] for r in ok]):>12s}"
+              f"  {_stat([100 * r['mj_max'] for r in ok]):>12s}  {passes:3d}"
+              f"  {_stat([r['pb_load_s'] for r in pbr]):>12s}"
+              f"  {_stat([100 * r['pb_still'] for r in pbr]):>12s}"
+              f"  {_stat([100 * r['pb_max'] for r in pbr]):>12s}"
+              f"  {sum(r['pb_bad_joints'] for r in pbr)}/{sum(r['pb_joints'] for r in pbr)}")
+
+
+if __name__ == "__main__":
+    main()
