@@ -68,9 +68,10 @@ def test_write_and_reopen(tmp_path, tiny, ext):
         assert prim.GetAttribute("indoorgen:room").Get() == "living room"
         assert prim.GetAttribute("indoorgen:parent").Get() == ""
         assert prim.GetAttribute("indoorgen:generator").Get() == tag
-        mesh = UsdGeom.Mesh(stage.GetPrimAtPath(f"{room_path}/{elem}/mesh"))
+        # the mesh is named for the room and element: importers show that name
+        mesh = UsdGeom.Mesh(stage.GetPrimAtPath(f"{room_path}/{elem}/living_room_{elem}"))
         assert len(mesh.GetPointsAttr().Get()) > 0
-    floor_mesh = UsdGeom.Mesh(stage.GetPrimAtPath(f"{room_path}/floor/mesh"))
+    floor_mesh = UsdGeom.Mesh(stage.GetPrimAtPath(f"{room_path}/floor/living_room_floor"))
     np.testing.assert_allclose(np.array(floor_mesh.GetExtentAttr().Get()),
                                rooms["living room"].floor.bounds, atol=1e-5)
 
@@ -91,14 +92,14 @@ def test_write_and_reopen(tmp_path, tiny, ext):
             Usd.TimeCode.Default())).T  # USD uses row vectors
         np.testing.assert_allclose(m, obj.pose.matrix(), atol=1e-9)
 
-        mesh_prim = stage.GetPrimAtPath(f"/World/Objects/{ident}/mesh")
+        mesh_prim = stage.GetPrimAtPath(f"/World/Objects/{ident}/{ident}")
         mesh = UsdGeom.Mesh(mesh_prim)
         pts = np.array(mesh.GetPointsAttr().Get())
         asset_mesh = assets[name].mesh
-        np.testing.assert_allclose(pts, asset_mesh.vertices, atol=1e-6)
+        # the same triangles in the same order (points welded, so indexed differently)
         assert list(mesh.GetFaceVertexCountsAttr().Get()) == [3] * len(asset_mesh.faces)
-        np.testing.assert_array_equal(np.array(mesh.GetFaceVertexIndicesAttr().Get()),
-                                      asset_mesh.faces.reshape(-1))
+        tri = pts[np.array(mesh.GetFaceVertexIndicesAttr().Get()).reshape(-1, 3)]
+        np.testing.assert_allclose(tri, asset_mesh.vertices[asset_mesh.faces], atol=1e-6)
         np.testing.assert_allclose(np.array(mesh.GetExtentAttr().Get()), asset_mesh.bounds,
                                    atol=1e-6)
         # world points of the mesh agree with the pose applied to the local vertices
@@ -113,7 +114,8 @@ def test_missing_asset_still_writes_object(tmp_path, tiny):
     write_usd(scene, out, object_assets={"table_0": assets["table_0"]}, rooms={})
     stage = Usd.Stage.Open(str(out))
     assert stage.GetPrimAtPath("/World/Objects/cup_0").IsValid()
-    assert not stage.GetPrimAtPath("/World/Objects/cup_0/mesh").IsValid()
+    assert not stage.GetPrimAtPath("/World/Objects/cup_0/cup_0").IsValid()
+    assert stage.GetPrimAtPath("/World/Objects/table_0/table_0").IsA(UsdGeom.Mesh)
     assert stage.GetPrimAtPath("/World/Architecture/living_room").IsValid()
 
 
@@ -166,6 +168,14 @@ def test_validators_report_no_errors(exported, room, record_property):
               "usdUtilsValidators:MissingReferenceValidator"):
         assert v in names
     assert len(names) >= 25
+    assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
+
+
+@pytest.mark.xdist_group("export_homes")
+@pytest.mark.parametrize("home", ["home1", "home2"])
+def test_validators_report_no_errors_on_homes(exported_homes, home):
+    _, d = exported_homes[home]
+    _, errors = _validate(Usd.Stage.Open(str(d / "scene.usdc")))
     assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
 
 
@@ -223,12 +233,13 @@ def test_every_material_texture_resolves(exported, room):
         surf = UsdShade.Material(mat).ComputeSurfaceSource()[0]
         assert surf and surf.GetIdAttr().Get() == "UsdPreviewSurface"
     assert n_tex >= 3 * len(materials) - 2
-    # meshes carry faceVarying UVs and normals
+    # meshes carry faceVarying UVs (indexed: repeated values stored once) and normals
     mesh = next(UsdGeom.Mesh(p) for p in stage.Traverse() if p.IsA(UsdGeom.Mesh)
                 and p.GetPath().pathString.startswith("/World/Objects"))
     st = UsdGeom.PrimvarsAPI(mesh).GetPrimvar("st")
     assert st.GetInterpolation() == UsdGeom.Tokens.faceVarying
-    assert len(st.Get()) == 3 * len(mesh.GetFaceVertexCountsAttr().Get())
+    assert st.IsIndexed() and len(st.Get()) < len(st.GetIndices())
+    assert len(st.ComputeFlattened()) == 3 * len(mesh.GetFaceVertexCountsAttr().Get())
     assert mesh.GetNormalsInterpolation() == UsdGeom.Tokens.faceVarying
 
 

@@ -1,13 +1,14 @@
 """`architecture.usda`: a solidified home as a USD stage (upAxis Z, metersPerUnit 1, default
 prim /World), following the export contract of DESIGN.md::
 
-    /World/Architecture/storey_<k>/<room>/{floor, ceiling, walls}
+    /World/Architecture/storey_<k>/<room>/{floor, ceiling, walls}/<room>_<part>
     /World/Architecture/storey_<k>/doors/<door>/{door | leaf, casing}
     /World/Architecture/storey_<k>/windows/<window>/{window | frame, glass}
     /World/Architecture/stairs/<stair>/{stair | flight}, .../<rail>/{railing | rail}
 
-(the first part name when the element comes from the asset catalogue, whose generator is then
-its `indoorgen:generator`; the others for the simple parametric solids.)
+(the part meshes named `<element>_<part>`, e.g. `door_2_casing`, so importers show them by
+name; the first part name when the element comes from the asset catalogue, whose generator is
+then its `indoorgen:generator`; the others for the simple parametric solids.)
 
 One Xform per element with its meshes (world coordinates) below; every element carries
 `indoorgen:generator`, `indoorgen:room`, `indoorgen:parent`, `indoorgen:semantics` (and
@@ -20,7 +21,14 @@ from os import PathLike
 from pxr import Usd, UsdGeom
 
 from indoorgen.architecture.solidify import Architecture
-from indoorgen.export.usd.prims import define_mesh, export_stage, new_stage, sanitize_name, tag_prim
+from indoorgen.export.usd.prims import (
+    define_mesh,
+    export_stage,
+    new_stage,
+    part_name,
+    sanitize_name,
+    tag_prim,
+)
 
 
 def build_architecture_stage(arch: Architecture) -> Usd.Stage:
@@ -44,7 +52,7 @@ def build_architecture_stage(arch: Architecture) -> Usd.Stage:
                 ep = rp.AppendChild(name)
                 tag_prim(UsdGeom.Xform.Define(stage, ep).GetPrim(), name=name,
                          generator=kind, room=r.name, parent="", semantics=[kind, "architecture"])
-                define_mesh(stage, ep.AppendChild("mesh"), mesh)
+                define_mesh(stage, ep.AppendChild(part_name(r.name, name)), mesh)
     groups = {"door": "doors", "window": "windows", "stair": "stairs", "railing": "stairs"}
     for el in arch.elements:
         group = groups.get(el.kind, "elements")
@@ -57,7 +65,7 @@ def build_architecture_stage(arch: Architecture) -> Usd.Stage:
                  generator=el.generator or f"{el.kind}_simple", room=el.room,
                  parent=el.room, semantics=el.semantics)
         for part, mesh in el.meshes.items():
-            define_mesh(stage, ep.AppendChild(sanitize_name(part)), mesh)
+            define_mesh(stage, ep.AppendChild(part_name(el.name, part)), mesh)
     return stage
 
 

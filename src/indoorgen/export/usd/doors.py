@@ -17,10 +17,9 @@ from trimesh.transformations import quaternion_matrix
 
 from indoorgen.export.bundle import ArchElement, ExportBundle
 from indoorgen.export.physics import matrix_to_quat, quat_between
-from indoorgen.export.usd.prims import define_mesh, rigid_body
+from indoorgen.export.usd.prims import add_drive, define_mesh, rigid_body
 
-#: damping of a door's drive: N m s/rad for a hinge (written per degree, as UsdPhysics wants
-#: for angular drives), N s/m for a slide
+#: damping of a door's drive: N m s/rad for a hinge, N s/m for a slide
 DOOR_DAMPING = 5.0
 #: the largest force or torque the damping drive exerts (N or N m)
 DRIVE_MAX_FORCE = 100.0
@@ -56,12 +55,11 @@ def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: Ar
     value = float(el.joint_value)
     if j.kind == "prismatic":
         joint = UsdPhysics.PrismaticJoint.Define(stage, jp)
-        lo, hi, drive, damping = float(j.lower), float(j.upper), "linear", DOOR_DAMPING
+        lo, hi = float(j.lower), float(j.upper)
         pos1, rot1 = origin + value * axis, rot0
     else:
         joint = UsdPhysics.RevoluteJoint.Define(stage, jp)
         lo, hi = math.degrees(j.lower), math.degrees(j.upper)
-        drive, damping = "angular", DOOR_DAMPING * math.pi / 180.0
         c, s = math.cos(value), math.sin(value)
         rot1 = rot0 @ np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
         pos1 = origin
@@ -75,10 +73,5 @@ def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: Ar
     joint.CreateLocalRot1Attr(_quat(rot1))
     joint.GetPrim().CreateAttribute("indoorgen:joint", Sdf.ValueTypeNames.String).Set(j.name)
     joint.GetPrim().CreateAttribute("indoorgen:state", Sdf.ValueTypeNames.Double).Set(value)
-    d = UsdPhysics.DriveAPI.Apply(joint.GetPrim(), drive)
-    d.CreateTypeAttr(UsdPhysics.Tokens.force)
-    d.CreateStiffnessAttr(0.0)
-    d.CreateDampingAttr(damping)
-    d.CreateTargetVelocityAttr(0.0)
-    d.CreateMaxForceAttr(DRIVE_MAX_FORCE)
+    add_drive(joint, j.kind != "prismatic", damping=DOOR_DAMPING, max_force=DRIVE_MAX_FORCE)
 

@@ -10,15 +10,18 @@ from collections import Counter
 import numpy as np
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdPhysics
 
-from indoorgen.assets.protocol import Asset
+from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
 from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names
 from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
 from indoorgen.export.usd.materials import Looks, bind_slots
 from indoorgen.export.usd.prims import (
+    GRAVITY,
+    add_drive,
     define_mesh,
     rigid_body,
     sanitize_name,
+    solid_faces,
     tag_prim,
     unique_names,
 )
@@ -26,8 +29,21 @@ from indoorgen.model.scene import SceneObject
 
 log = logging.getLogger(__name__)
 
-#: SphereLight intensity (nits) of a bulb
-LIGHT_INTENSITY = 8000.0
+#: damping of every furniture hinge (N m s/rad) and slide (N s/m)
+HINGE_DAMPING, SLIDE_DAMPING = 0.5, 10.0
+#: the sag a gravity-loaded joint's spring allows under the child's full weight: a hinge's
+#: (degrees) and a slide's (m)
+HOLD_ANGLE, HOLD_SLIDE = 1.0, 0.005
+#: luminous flux (lm) of each light fixture, shared among its lit links: household LED lamps
+#: (a ceiling lamp 1200 lm, about a 100 W incandescent bulb; a reading lamp 450 lm, 40 W); a
+#: candle flame 12 lm (one candela)
+FIXTURE_LUMENS = {"ceiling_light": 1200.0, "pendant_light": 800.0, "floor_lamp": 1000.0,
+                  "table_lamp": 450.0, "desk_lamp": 450.0, "wall_sconce": 400.0,
+                  "candle": 12.0}
+#: flux (lm) of any other object with emissive faces
+DEFAULT_LUMENS = 450.0
+#: warm white (2700 K) of the lights
+LIGHT_COLOR = (1.0, 0.88, 0.72)
 
 
 class _ObjectMeshes:
@@ -76,39 +92,44 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
         else:
             if instancing and counts[pkey] > 1:
                 if pkey not in protos:
-                    protos[pkey] = _define_prototype(stage, len(protos), asset, mats, looks,
-                                                     cache, physics_here)
-                    _write_lights(stage, protos[pkey], asset)
+                    protos[pkey] = _define_prototype(stage, len(protos), obj.generator, asset,
+                                                     mats, looks, cache, physics_here)
+                    _write_lights(stage, protos[pkey], sanitize_name(obj.generator), asset,
+                                  obj.generator)
                 prim.GetReferences().AddInternalReference(protos[pkey])
                 prim.SetInstanceable(True)
             else:
-                _write_link(stage, prim.GetPath(), asset, "base", mats, looks, cache,
-                            physics_here, whole=True)
-                _write_lights(stage, prim.GetPath(), asset)
+                _write_link(stage, prim.GetPath(), _body_name(idents[name], asset), asset,
+                            "base", mats, looks, cache, physics_here, whole=True)
+                _write_lights(stage, prim.GetPath(), idents[name], asset, obj.generator)
             if physics and not fixed:
                 assert inertial is not None  # computed whenever physics is on
                 rigid_body(prim, inertial["base"])
         if asset.joints:
-            _write_lights(stage, prim.GetPath(), asset)
+            _write_lights(stage, prim.GetPath(), idents[name], asset, obj.generator)
 
 
-def _define_prototype(stage: Usd.Stage, k: int, asset: Asset, mats: dict[str, MatRef],
-                      looks: Looks, cache: _ObjectMeshes, physics: bool) -> Sdf.Path:
-    """A class prim /World/Prototypes/proto_<k> holding the meshes of one distinct object."""
+def _define_prototype(stage: Usd.Stage, k: int, asset_name: str, asset: Asset,
+                      mats: dict[str, MatRef], looks: Looks, cache: _ObjectMeshes,
+                      physics: bool) -> Sdf.Path:
+    """A class prim /World/Prototypes/proto_<k> holding the meshes of one distinct object (its
+    mesh named `asset_name`, the generator's, which importers show for every instance)."""
     root = Sdf.Path("/World/Prototypes")
     if not stage.GetPrimAtPath(root):
         stage.CreateClassPrim(root)
     path = root.AppendChild(f"proto_{k}")
     stage.CreateClassPrim(path)
-    _write_link(stage, path, asset, "base", mats, looks, cache, physics, whole=True)
+    _write_link(stage, path, _body_name(sanitize_name(asset_name), asset), asset, "base", mats,
+                looks, cache, physics, whole=True)
     return path
 
 
-def _write_link(stage: Usd.Stage, path: Sdf.Path, asset: Asset, link: str,
+def _write_link(stage: Usd.Stage, path: Sdf.Path, mesh_name: str, asset: Asset, link: str,
                 mats: dict[str, MatRef], looks: Looks, cache: _ObjectMeshes, physics: bool,
                 whole: bool = False) -> None:
-    """`mesh` (render) and `collision/piece_<i>` below `path` for one link (or, with `whole`,
-    the whole asset as one mesh, for objects without joints)."""
+    """The render mesh `mesh_name` (the name importers show for the object) and
+    `collision/piece_<i>` below `path` for one link (or, with `whole`, the whole asset as one
+    mesh, for objects without joints)."""
     uv, nrm, fslots = cache.get(asset)
     if whole:
         faces = np.arange(len(asset.mesh.faces))
@@ -117,8 +138,8 @@ def _write_link(stage: Usd.Stage, path: Sdf.Path, asset: Asset, link: str,
         faces = asset.link_faces(link)
         sub = asset.link_mesh(link)
     if len(faces):
-        m = define_mesh(stage, path.AppendChild("mesh"), sub, uv[faces], nrm[faces])
-        bind_slots(m, fslots[faces], list(asset.slots), mats, looks)
+        m = define_mesh(stage, path.AppendChild(mesh_name), sub, uv[faces], nrm[faces])
+        bind_slots(m, fslots[faces][solid_faces(sub)], list(asset.slots), mats, looks)
     if physics:
         pieces = [p for ln, p in asset.collision if whole or ln == link]
         if pieces:
@@ -143,7 +164,8 @@ def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset
     for link in asset.links:
         lp = path.AppendChild(sanitize_name(link))
         UsdGeom.Xform.Define(stage, lp)
-        _write_link(stage, lp, asset, link, mats, looks, cache, physics)
+        _write_link(stage, lp, f"{path.name}_{lp.name}", asset, link, mats, looks, cache,
+                    physics)
         link_paths[link] = lp
         if physics and inertials is not None:
             rigid_body(stage.GetPrimAtPath(lp), inertials[link])
@@ -183,31 +205,70 @@ def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset
         joint.CreateLocalPos1Attr(origin)
         joint.CreateLocalRot1Attr(rot)
         joint.GetPrim().CreateAttribute("indoorgen:joint", Sdf.ValueTypeNames.String).Set(j.name)
+        if inertials is not None:
+            add_drive(joint, j.kind != "prismatic", **_joint_drive(j, inertials[j.child]))
 
 
-def _write_lights(stage: Usd.Stage, path: Sdf.Path, asset: Asset) -> None:
-    """A SphereLight at the emissive faces of each link (bulbs, diffusers, flames)."""
-    fs = face_slot_names(asset)
+def _joint_drive(j: Joint, child: Inertial) -> dict[str, float]:
+    """SI stiffness and damping of a furniture joint's drive: damping on every joint (a drawer
+    or door stays where it is pushed), and, where gravity turns or slides the child (a lamp's
+    arm, an oven door's bottom hinge), a spring to its rest pose that holds it there within
+    HOLD_ANGLE (HOLD_SLIDE) against its full weight, critically damped."""
+    axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
+    tilt = math.sqrt(max(0.0, 1.0 - axis[2] ** 2))  # share of gravity the joint feels
+    weight = child.mass * GRAVITY
+    if j.kind == "prismatic":
+        load, inertia, hold = weight * abs(axis[2]), child.mass, HOLD_SLIDE
+        damping = SLIDE_DAMPING
+    else:
+        lever = child.com - np.asarray(j.origin, float)
+        lever = lever - (lever @ axis) * axis
+        load, hold = weight * float(np.linalg.norm(lever)) * tilt, math.radians(HOLD_ANGLE)
+        inertia = float(axis @ child.inertia @ axis) + child.mass * float(lever @ lever)
+        damping = HINGE_DAMPING
+    stiffness = load / hold
+    return {"stiffness": stiffness,
+            "damping": max(damping, 2.0 * math.sqrt(stiffness * inertia))}
+
+
+def _emissive_faces(asset: Asset) -> np.ndarray:
+    """Whether each face of `asset` glows (an emissive slot: bulbs, diffusers, flames)."""
     emissive = [i for i, s in enumerate(asset.slots) if s in EMISSIVE_SLOTS]
-    if not emissive:
-        return
-    mask = np.isin(fs, emissive)
+    return np.isin(face_slot_names(asset), emissive)
+
+
+def _body_name(name: str, asset: Asset) -> str:
+    """The render mesh's name of a one-piece object: the object's, or `<name>_body` beside its
+    lights (an importer then keeps the object's name for the Xform holding both)."""
+    return f"{name}_body" if _emissive_faces(asset).any() else name
+
+
+def _write_lights(stage: Usd.Stage, path: Sdf.Path, owner: str, asset: Asset,
+                  generator: str) -> None:
+    """A SphereLight `<owner>_light_<k>` at the emissive faces of each link (bulbs, diffusers,
+    flames), together
+    emitting the fixture's FIXTURE_LUMENS: normalized (UsdLux: luminance = intensity x
+    2^exposure / area), so its flux is pi x intensity lumens whatever its radius."""
+    mask = _emissive_faces(asset)
     if not mask.any():
         return
     areas = np.asarray(asset.mesh.area_faces)
     centres = np.asarray(asset.mesh.triangles_center)
-    for k, link in enumerate(asset.links):
-        sel = np.intersect1d(np.nonzero(mask)[0], asset.link_faces(link))
-        if len(sel) == 0:
-            continue
+    lit = [(k, link, np.intersect1d(np.nonzero(mask)[0], asset.link_faces(link)))
+           for k, link in enumerate(asset.links)]
+    lit = [t for t in lit if len(t[2])]
+    lumens = FIXTURE_LUMENS.get(generator, DEFAULT_LUMENS) / len(lit)
+    for k, link, sel in lit:
         a = areas[sel]
         c = (centres[sel] * a[:, None]).sum(axis=0) / max(a.sum(), 1e-12)
         radius = float(np.clip(math.sqrt(a.sum() / (4 * math.pi)), 0.005, 0.25))
         parent = path if not asset.joints else path.AppendChild(sanitize_name(link))
-        light = UsdLux.SphereLight.Define(stage, parent.AppendChild(f"light_{k}"))
+        light = UsdLux.SphereLight.Define(stage, parent.AppendChild(f"{owner}_light_{k}"))
         light.CreateRadiusAttr(radius)
-        light.CreateIntensityAttr(LIGHT_INTENSITY)
-        light.CreateColorAttr(Gf.Vec3f(1.0, 0.88, 0.72))
+        light.CreateNormalizeAttr(True)
+        light.CreateIntensityAttr(lumens / math.pi)
+        light.CreateExposureAttr(0.0)
+        light.CreateColorAttr(Gf.Vec3f(*LIGHT_COLOR))
         light.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, c)))
 
 

@@ -3,6 +3,7 @@
 new Z-up stage in metres, and writing a stage to a file."""
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable
 from os import PathLike
@@ -19,6 +20,8 @@ ATTR_ROOM = "indoorgen:room"
 ATTR_PARENT = "indoorgen:parent"
 ATTR_SEMANTICS = "indoorgen:semantics"
 ATTR_NAME = "indoorgen:name"
+#: standard gravity (m/s^2) of the physics scene and of the joints' holding springs
+GRAVITY = 9.81
 #: the UsdSemantics taxonomy the labels are written under
 SEMANTICS_TAXONOMY = "class"
 
@@ -54,6 +57,13 @@ def sanitize_name(name: str) -> str:
     return "_" + ident if not ident or ident[0].isdigit() else ident
 
 
+def part_name(owner: str, part: str) -> str:
+    """The prim name of `owner`'s part mesh, which importers show as the object's name:
+    `<owner>_<part>` (`door_2_casing`), or just `owner` when it already ends in `part`
+    (`door_2_leaf`'s leaf)."""
+    return sanitize_name(owner if owner.endswith(part) else f"{owner}_{part}")
+
+
 def unique_names(names: Iterable[str]) -> dict[str, str]:
     """Map each name to a sanitised identifier, suffixing duplicates created by sanitising."""
     out: dict[str, str] = {}
@@ -82,15 +92,45 @@ def tag_prim(prim: Usd.Prim, *, name: str, generator: str, room: str, parent: st
     labels.CreateLabelsAttr().Set(Vt.TokenArray(tags))
 
 
+#: faces smaller than this (m^2, in the written float32 points) are dropped at write time
+MIN_FACE_AREA = 1e-12
+
+
+def solid_faces(mesh: trimesh.Trimesh) -> np.ndarray:
+    """Indices of the faces of `mesh` `define_mesh` writes: those whose area, measured on the
+    float32 points a stage stores, is above MIN_FACE_AREA (zero-area faces are dropped)."""
+    cross = _face_cross(mesh)
+    return np.nonzero(0.5 * np.linalg.norm(cross, axis=1) > MIN_FACE_AREA)[0]
+
+
+def _face_cross(mesh: trimesh.Trimesh) -> np.ndarray:
+    """(F, 3) cross products of the faces' edges, on the float32 points a stage stores."""
+    tri = np.asarray(mesh.vertices, np.float32).astype(float)[np.asarray(mesh.faces, int)]
+    if len(tri) == 0:
+        return np.zeros((0, 3))
+    return np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+
+
+def _indexed_points(mesh: trimesh.Trimesh, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(points, face vertex indices) of the faces `faces` of `mesh`: float32 points, co-located
+    points welded, points no face uses left out."""
+    verts = np.asarray(mesh.vertices, np.float32)
+    tri = np.asarray(mesh.faces, np.int64)[faces]
+    used, inverse = np.unique(verts[tri.reshape(-1)], axis=0, return_inverse=True)
+    return np.ascontiguousarray(used), inverse.reshape(-1, 3).astype(np.int32)
+
+
 def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
                 uv: np.ndarray | None = None, normals: np.ndarray | None = None
                 ) -> UsdGeom.Mesh:
     """A UsdGeom.Mesh at `path` holding the triangles of `mesh` (points, counts, indices,
-    extent; polygonal, no subdivision), with faceVarying normals and `primvars:st` when given
-    (per-corner arrays (F, 3, 3) and (F, 3, 2))."""
+    extent; polygonal, no subdivision), with faceVarying normals (the face normals when none
+    are given) and an indexed faceVarying `primvars:st` when given (per-corner arrays (F, 3, 3)
+    and (F, 3, 2)). Zero-area faces are dropped (`solid_faces`) and co-located points welded,
+    so the stage passes the asset validators' geometry rules."""
     usd_mesh = UsdGeom.Mesh.Define(stage, path)
-    verts = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
-    faces = np.ascontiguousarray(mesh.faces, dtype=np.int32)
+    keep = solid_faces(mesh)
+    verts, faces = _indexed_points(mesh, keep)
     usd_mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(verts))
     usd_mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(faces), 3, np.int32)))
     usd_mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(faces.reshape(-1)))
@@ -98,14 +138,21 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
     if len(verts):
         usd_mesh.CreateExtentAttr(Vt.Vec3fArray.FromNumpy(
             np.stack([verts.min(axis=0), verts.max(axis=0)])))
-    if normals is not None:
-        usd_mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(
-            np.ascontiguousarray(normals.reshape(-1, 3), np.float32)))
-        usd_mesh.SetNormalsInterpolation(UsdGeom.Tokens.faceVarying)
+    if normals is None:
+        cross = _face_cross(mesh)[keep]
+        corner = np.repeat((cross / np.linalg.norm(cross, axis=1)[:, None])[:, None], 3, axis=1)
+    else:
+        corner = np.asarray(normals, float)[keep]
+    usd_mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(
+        np.ascontiguousarray(corner.reshape(-1, 3), np.float32)))
+    usd_mesh.SetNormalsInterpolation(UsdGeom.Tokens.faceVarying)
     if uv is not None:
+        values, index = np.unique(np.asarray(uv, np.float32)[keep].reshape(-1, 2), axis=0,
+                                  return_inverse=True)
         pv = UsdGeom.PrimvarsAPI(usd_mesh).CreatePrimvar(
             "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.faceVarying)
-        pv.Set(Vt.Vec2fArray.FromNumpy(np.ascontiguousarray(uv.reshape(-1, 2), np.float32)))
+        pv.Set(Vt.Vec2fArray.FromNumpy(np.ascontiguousarray(values)))
+        pv.SetIndices(Vt.IntArray.FromNumpy(index.reshape(-1).astype(np.int32)))
     return usd_mesh
 
 
@@ -119,3 +166,20 @@ def rigid_body(prim: Usd.Prim, inertial: Inertial) -> None:
     mass.CreateDiagonalInertiaAttr(Gf.Vec3f(*map(float, moments)))
     q = matrix_to_quat(axes)
     mass.CreatePrincipalAxesAttr(Gf.Quatf(float(q[0]), Gf.Vec3f(*map(float, q[1:]))))
+
+
+def add_drive(joint: UsdPhysics.Joint, angular: bool, *, damping: float, stiffness: float = 0.0,
+              target: float = 0.0, max_force: float | None = None) -> UsdPhysics.DriveAPI:
+    """A force drive on `joint` from SI values (N m/rad, N m s/rad and rad for a hinge; N/m,
+    N s/m and m for a slide), written in the per-degree units UsdPhysics wants for angular
+    drives; no max force means unbounded."""
+    per = math.pi / 180.0 if angular else 1.0
+    drive = UsdPhysics.DriveAPI.Apply(joint.GetPrim(), "angular" if angular else "linear")
+    drive.CreateTypeAttr(UsdPhysics.Tokens.force)
+    drive.CreateStiffnessAttr(float(stiffness) * per)
+    drive.CreateDampingAttr(float(damping) * per)
+    drive.CreateTargetPositionAttr(float(target) / per)
+    drive.CreateTargetVelocityAttr(0.0)
+    if max_force is not None:
+        drive.CreateMaxForceAttr(float(max_force))
+    return drive

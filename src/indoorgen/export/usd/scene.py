@@ -36,19 +36,34 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics, UsdShade, UsdUtils
 
 from indoorgen.assets.protocol import Asset
 from indoorgen.errors import OutputError
-from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, elements_from_rooms, make_bundle
+from indoorgen.export.bundle import (
+    EMISSIVE_SLOTS,
+    ArchElement,
+    ExportBundle,
+    elements_from_rooms,
+    make_bundle,
+)
 from indoorgen.export.meshes import corner_normals, mesh_uv
 from indoorgen.export.textures import TextureStore
 from indoorgen.export.usd.doors import write_leaf_physics
 from indoorgen.export.usd.materials import Looks
 from indoorgen.export.usd.objects import write_objects
-from indoorgen.export.usd.prims import define_mesh, export_stage, new_stage, sanitize_name, tag_prim
+from indoorgen.export.usd.prims import (
+    GRAVITY,
+    define_mesh,
+    export_stage,
+    new_stage,
+    part_name,
+    sanitize_name,
+    tag_prim,
+)
 from indoorgen.model.scene import Scene
 
 log = logging.getLogger(__name__)
 
 USD_EXTENSIONS = (".usda", ".usdc", ".usd", ".usdz")
-GRAVITY = 9.81
+#: the element kinds that are a room's own surfaces
+ROOM_SURFACES = ("floor", "ceiling", "wall")
 
 
 def write_usd(scene: Scene, path: str | PathLike, *, object_assets: dict[str, Asset],
@@ -151,11 +166,11 @@ def _write_architecture(stage: Usd.Stage, bundle: ExportBundle, looks: Looks,
                 if i < len(el.path) - 1 and part in bundle.room_types:
                     _tag_room(prim, part, bundle)
         prim = stage.GetPrimAtPath(path)
-        generator = el.kind if el.kind in ("floor", "ceiling", "wall") else f"{el.kind}_simple"
+        generator = el.kind if el.kind in ROOM_SURFACES else f"{el.kind}_simple"
         tag_prim(prim, name=el.name, generator=generator, room=el.room, parent=el.parent,
                  semantics=el.semantics)
         for piece in el.parts:
-            mp = path.AppendChild(sanitize_name(piece.name))
+            mp = path.AppendChild(_part_name(el, piece.name))
             m = define_mesh(stage, mp, piece.mesh, mesh_uv(piece.mesh), corner_normals(piece.mesh))
             UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(
                 looks.get(piece.material, piece.slot in EMISSIVE_SLOTS))
@@ -165,6 +180,15 @@ def _write_architecture(stage: Usd.Stage, bundle: ExportBundle, looks: Looks,
                     UsdPhysics.Tokens.none)
         if physics and el.joint is not None:
             write_leaf_physics(stage, path, path.GetParentPath(), el, bundle)
+
+
+def _part_name(el: ArchElement, part: str) -> str:
+    """The prim name of an element's part mesh, the name importers show for it: the room's
+    and element's names for a room's floor, ceiling and walls (`living_room_0_floor`), the
+    element's and part's otherwise (`door_2_casing`; a door's leaf is `door_2_leaf`)."""
+    if part == "mesh":
+        return sanitize_name(f"{el.room}_{el.name}" if el.kind in ROOM_SURFACES else el.name)
+    return part_name(el.name, part)
 
 
 def _tag_room(prim: Usd.Prim, room: str, bundle: ExportBundle) -> None:
