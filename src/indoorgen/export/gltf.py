@@ -47,6 +47,9 @@ JPEG_QUALITY = 90
 Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
 #: emissive colour of bulbs and diffusers (linear RGB)
 EMISSIVE_FACTOR = (1.0, 0.9, 0.75)
+#: the last part of every mesh's name: importers that number the primitives of a mesh
+#: (trimesh: `<name>_1`, `<name>_2`...) then never meet the name of another mesh (`door_1`)
+MESH = "mesh"
 #: element kinds that belong to one room (their nodes are named `<room>/<element>`)
 ROOM_KINDS = {"floor", "ceiling", "wall"}
 
@@ -217,7 +220,7 @@ class _Writer:
         wanted = f"{el.room}/{el.name}" if el.kind in ROOM_KINDS and el.room else el.name
         made = [self.piece_primitive(mesh_piece(p.mesh), p.material) for p in el.parts]
         prims = [p for p in made if p is not None]
-        mesh = self.doc.mesh(wanted, prims) if prims else None
+        mesh = self.doc.mesh(f"{wanted}/{MESH}", prims) if prims else None
         node = self.doc.node(self.names(wanted, el.path), self.group(parent), mesh=mesh,
                              extras=meta)
         self.groups[el.path] = node
@@ -237,7 +240,7 @@ class _Writer:
                 prim = self.piece_primitive(local, ref, slot in EMISSIVE_SLOTS)
                 if prim is not None:
                     prims.append(prim)
-            self.meshes[key] = (self.doc.mesh(f"{self.bundle.mesh_key(name)}/{link}", prims)
+            self.meshes[key] = (self.doc.mesh(f"{self.bundle.mesh_key(name)}/{link}/{MESH}", prims)
                                 if prims else -1)
         index = self.meshes[key]
         return None if index < 0 else index
