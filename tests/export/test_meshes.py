@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from indoorgen.export.meshes import corner_normals, mesh_piece, weld
+from indoorgen.export.meshes import corner_normals, mesh_piece, tangents, weld
 
 
 def test_weld_shares_equal_corners_only():
@@ -35,3 +35,22 @@ def test_piece_transformed_moves_vertices_and_turns_normals():
     q = p.transformed(m)
     assert np.allclose(q.vertices, p.vertices @ m[:3, :3].T + [5, 0, 0])
     assert np.allclose(np.linalg.norm(q.normals, axis=1), 1) and np.array_equal(q.faces, p.faces)
+
+
+def test_tangents_follow_u_across_the_normal_with_v_handedness():
+    box = trimesh.creation.box([2.0, 1.0, 0.5])
+    piece = mesh_piece(box)
+    t = tangents(piece)
+    assert t.shape == (len(piece.vertices), 4)
+    assert np.allclose(np.linalg.norm(t[:, :3], axis=1), 1.0)
+    assert np.allclose(np.einsum("ij,ij->i", t[:, :3], piece.normals), 0.0, atol=1e-9)
+    assert set(np.unique(t[:, 3])) <= {-1.0, 1.0}
+    # on each face, moving along the tangent raises u, along cross(n, t) * w raises v
+    f = piece.faces
+    e = piece.vertices[f[:, 1]] - piece.vertices[f[:, 0]]
+    du = piece.uv[f[:, 1], 0] - piece.uv[f[:, 0], 0]
+    dv = piece.uv[f[:, 1], 1] - piece.uv[f[:, 0], 1]
+    tf = t[f[:, 0]]
+    bf = np.cross(piece.normals[f[:, 0]], tf[:, :3]) * tf[:, 3:]
+    assert np.allclose(np.einsum("ij,ij->i", e, tf[:, :3]), du, atol=1e-9)
+    assert np.allclose(np.einsum("ij,ij->i", e, bf), dv, atol=1e-9)

@@ -117,3 +117,32 @@ def joint_frames(asset: Asset) -> dict[str, np.ndarray]:
     for j in asset.joints:
         frames[j.child] = np.asarray(j.origin, float)
     return frames
+
+
+def tangents(piece: Piece) -> np.ndarray:
+    """Per-vertex tangents (V, 4) of `piece` for normal mapping: xyz the unit direction of
+    increasing u, orthogonal to the normal; w = +1 or -1, the handedness that makes
+    cross(normal, xyz) * w point along increasing v (glTF's convention). Where the UVs give no
+    direction (degenerate mapping), any unit vector orthogonal to the normal."""
+    v, f, uv, n = piece.vertices, piece.faces, piece.uv, piece.normals
+    e1, e2 = v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]]
+    d1, d2 = uv[f[:, 1]] - uv[f[:, 0]], uv[f[:, 2]] - uv[f[:, 0]]
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    inv = np.where(np.abs(det) < 1e-12, 0.0, 1.0 / np.where(det == 0.0, 1.0, det))[:, None]
+    t_face = (e1 * d2[:, 1:2] - e2 * d1[:, 1:2]) * inv
+    b_face = (e2 * d1[:, 0:1] - e1 * d2[:, 0:1]) * inv
+    t = np.zeros_like(v)
+    b = np.zeros_like(v)
+    for k in range(3):
+        np.add.at(t, f[:, k], t_face)
+        np.add.at(b, f[:, k], b_face)
+    t = t - n * np.einsum("ij,ij->i", n, t)[:, None]
+    length = np.linalg.norm(t, axis=1)
+    flat = length < 1e-9
+    if flat.any():  # any direction across the normal: cross with the axis least along it
+        axis = np.eye(3)[np.argmin(np.abs(n[flat]), axis=1)]
+        t[flat] = np.cross(n[flat], axis)
+        length[flat] = np.linalg.norm(t[flat], axis=1)
+    t = t / np.where(length < 1e-12, 1.0, length)[:, None]
+    w = np.where(np.einsum("ij,ij->i", np.cross(n, t), b) < 0.0, -1.0, 1.0)
+    return np.concatenate([t, w[:, None]], axis=1)
