@@ -8,11 +8,12 @@ manifest as it lands, shows a tqdm bar, and returns the run's `summary`.
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import statistics
 import sys
 import time
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -27,6 +28,7 @@ from indoorgen.batch.manifest import (
     read_manifest,
     scenes_dir,
     seeds_to_run,
+    write_batch_json,
 )
 from indoorgen.batch.runner import SceneJob, dask_client, run_dask, run_local
 from indoorgen.outputs import output_lock
@@ -42,37 +44,41 @@ def make_dataset(out: Path, seeds: Sequence[int], entry: Entry, options: Mapping
     (`local` or an address) or an existing Dask `client`; return the `summary` of the run."""
     out = Path(out)
     workers = workers or (os.cpu_count() or 1)
-    check_batch_dir(out, {"generate": dict(options)}, force=force)
-    with output_lock(out):
-        clean_leftovers(out)
-        todo = seeds_to_run(seeds, out, retry_failed=retry_failed)
-        job = SceneJob(entry, dict(options), scenes_dir(out), timeout, max_memory)
-        t0 = time.monotonic()
-        done: list[dict[str, Any]] = []
-        with _records(job, todo, workers, scheduler, client, connect_timeout) as records, \
-                Manifest(out) as manifest, \
-                tqdm(total=len(todo), unit="scene", file=sys.stderr, disable=not progress,
-                     dynamic_ncols=True) as bar:
-            for rec in records:
-                manifest.append(rec)
-                done.append(rec)
-                bar.update(1)
-                bar.set_postfix(failed=sum(r["status"] != "ok" for r in done), refresh=False)
-        return summary(done, time.monotonic() - t0, read_manifest(out), skipped=len(seeds) - len(todo))
+    settings = {"generate": dict(options)}
+    check_batch_dir(out, settings, force=force)
+    job = SceneJob(entry, dict(options), scenes_dir(out), timeout, max_memory)
+    with _runner(job, workers, scheduler, client, connect_timeout) as run:
+        out.mkdir(parents=True, exist_ok=True)
+        with output_lock(out):
+            write_batch_json(out, settings)
+            clean_leftovers(out)
+            todo = seeds_to_run(seeds, out, retry_failed=retry_failed)
+            t0 = time.monotonic()
+            done: list[dict[str, Any]] = []
+            with Manifest(out) as manifest, \
+                    tqdm(total=len(todo), unit="scene", file=sys.stderr, disable=not progress,
+                         dynamic_ncols=True) as bar:
+                for rec in run(todo):
+                    manifest.append(rec)
+                    done.append(rec)
+                    bar.update(1)
+                    bar.set_postfix(failed=sum(r["status"] != "ok" for r in done), refresh=False)
+    return summary(done, time.monotonic() - t0, read_manifest(out), skipped=len(seeds) - len(todo))
 
 
 @contextlib.contextmanager
-def _records(job: SceneJob, seeds: Sequence[int], workers: int, scheduler: str | None,
-             client: Any, connect_timeout: float) -> Iterator[Iterable[dict[str, Any]]]:
-    """The records of `seeds` as they finish, from the local pool or Dask."""
+def _runner(job: SceneJob, workers: int, scheduler: str | None, client: Any,
+            connect_timeout: float) -> Iterator[Callable[[Sequence[int]], Iterator[dict[str, Any]]]]:
+    """A function running seeds to their records as they finish, on the local pool or on Dask
+    (connected first, so a scheduler that does not answer fails before anything is written)."""
     if client is not None:
-        yield run_dask(job, seeds, client)
+        yield functools.partial(run_dask, job, client=client)
     elif scheduler is not None:
         with dask_client(scheduler, workers=workers, connect_timeout=connect_timeout,
                          max_memory=job.max_memory) as c:
-            yield run_dask(job, seeds, c)
+            yield functools.partial(run_dask, job, client=c)
     else:
-        yield run_local(job, seeds, workers)
+        yield functools.partial(run_local, job, workers=workers)
 
 
 def summary(run: Sequence[Mapping[str, Any]], elapsed: float,

@@ -100,14 +100,15 @@ def scenes_dir(directory: Path) -> Path:
 
 def check_batch_dir(directory: Path, settings: Mapping[str, Any], *, force: bool) -> None:
     """Refuse, before any work, a directory that is not a batch's, or one whose batch.json was
-    written by another indoorgen version or with other generate options (unless `force`); then
-    write this batch's batch.json."""
+    written by another indoorgen version or with other generate options (unless `force`)."""
     directory = Path(directory)
     path = directory / BATCH_JSON
     if directory.is_dir() and not path.is_file() and any(directory.iterdir()) and not force:
         raise BatchConfigError(f"{directory} is not empty and holds no {BATCH_JSON}: it is not a "
                                "batch's directory; choose another, or give --force to add to it")
     new = {"indoorgen_version": __version__, **settings}
+    if directory.exists() and not directory.is_dir():
+        raise BatchConfigError(f"{directory} exists and is not a directory")
     if path.is_file() and not force:
         try:
             old = json.loads(path.read_text())
@@ -124,9 +125,13 @@ def check_batch_dir(directory: Path, settings: Mapping[str, Any], *, force: bool
             raise BatchConfigError(f"{directory} was made with other generate options ({was}); "
                                    "give the same options, choose another directory, or give "
                                    "--force to mix them")
-    directory.mkdir(parents=True, exist_ok=True)
-    with atomic_file(path) as tmp:
-        tmp.write_text(json.dumps(new, indent=1, sort_keys=True) + "\n")
+
+
+def write_batch_json(directory: Path, settings: Mapping[str, Any]) -> None:
+    """Write the batch's batch.json: indoorgen's version and the `settings` (generate options)."""
+    with atomic_file(Path(directory) / BATCH_JSON) as tmp:
+        tmp.write_text(json.dumps({"indoorgen_version": __version__, **settings}, indent=1,
+                                  sort_keys=True) + "\n")
 
 
 def clean_leftovers(directory: Path) -> list[str]:

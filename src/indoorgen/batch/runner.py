@@ -137,7 +137,7 @@ def _finish(child: _Child, job: SceneJob) -> None:
     clean_stale(scene_dir(job.scenes, child.seed))
 
 
-def run_local(job: SceneJob, seeds: Sequence[int], workers: int) -> Iterator[dict[str, Any]]:
+def run_local(job: SceneJob, seeds: Sequence[int], *, workers: int) -> Iterator[dict[str, Any]]:
     """Generate `seeds` with up to `workers` children at a time, yielding each scene's record
     as it finishes (in finishing order). Stopping early (an exception, Ctrl-C, closing the
     iterator) kills the children still running."""
@@ -168,10 +168,10 @@ def supervise_one(job: SceneJob, seed: int) -> dict[str, Any]:
     own worker restarts and memory limits then hold it, and the timeout is not applied."""
     if multiprocessing.current_process().daemon:
         return run_scene(job.entry, job.options, seed, job.scenes)
-    return next(run_local(job, [seed], 1))
+    return next(run_local(job, [seed], workers=1))
 
 
-def run_dask(job: SceneJob, seeds: Sequence[int], client: Any) -> Iterator[dict[str, Any]]:
+def run_dask(job: SceneJob, seeds: Sequence[int], *, client: Any) -> Iterator[dict[str, Any]]:
     """Generate `seeds` on the Dask cluster of `client` (a `distributed.Client`), one task per
     scene, yielding each record as it finishes. A task whose workers died more often than the
     cluster allows (`distributed.scheduler.allowed-failures`) is recorded as failed."""
@@ -204,10 +204,12 @@ def dask_client(scheduler: str, *, workers: int, connect_timeout: float,
         from distributed import Client, LocalCluster  # noqa: PLC0415
     except ImportError:
         raise SchedulerError("--scheduler needs Dask: pip install 'indoorgen[dask]'") from None
+    # Dask logs each worker's start and stop at INFO on its own handlers: keep them to warnings
+    logging.getLogger("distributed").setLevel(max(logging.WARNING, logging.getLogger().level))
     if scheduler == "local":
         with dask.config.set({"distributed.worker.daemon": False}):
             cluster = LocalCluster(n_workers=max(1, workers), threads_per_worker=1,
-                                   processes=True, dashboard_address=None,
+                                   processes=True, dashboard_address=":0",
                                    memory_limit=max_memory or "auto")
         try:
             with Client(cluster) as client:
