@@ -4,29 +4,8 @@ from __future__ import annotations
 
 import pytest
 
+from support.batch import GENERATE, PROGRAM
 from support.cli import run
-
-#: the options every batch test passes through to generate: the cheapest scenes there are
-GENERATE = ["--room", "hallway", "--preset", "fast", "--formats", "mjcf"]
-#: the seed whose program raises
-BAD_SEED = 3
-
-#: a program that furnishes a hallway as the built-in one does, but raises while seed BAD_SEED
-#: is generated (it finds the seed in `pipeline.generate`'s frame: the program is not given it)
-PROGRAM = f'''
-import sys
-
-from indoorgen.programs import get_program
-
-
-def hallway(room):
-    frame = sys._getframe()
-    while frame is not None:
-        if frame.f_code.co_name == "generate" and frame.f_locals.get("seed") == {BAD_SEED}:
-            raise RuntimeError("seed {BAD_SEED} fails on purpose")
-        frame = frame.f_back
-    return get_program("hallway")(room)
-'''
 
 
 @pytest.fixture(scope="session")

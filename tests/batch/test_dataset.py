@@ -9,9 +9,8 @@ import pytest
 
 from indoorgen.batch.manifest import read_manifest
 from indoorgen.cli import main
+from support.batch import BAD_SEED, GENERATE
 from support.cli import run
-
-from .conftest import BAD_SEED, GENERATE
 
 pytestmark = pytest.mark.xdist_group("batch")
 

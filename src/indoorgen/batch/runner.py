@@ -39,6 +39,10 @@ POLL_S = 0.25
 _PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
 
 
+#: the process contexts a batch starts its children with
+_Context = multiprocessing.context.ForkServerContext | multiprocessing.context.SpawnContext
+
+
 @dataclass(frozen=True)
 class SceneJob:
     """What every scene of a batch shares: the generate entry and options, where scenes go, and
@@ -68,7 +72,7 @@ def _child_main(job: SceneJob, seed: int, conn: Connection) -> None:
     conn.close()
 
 
-def _context(job: SceneJob) -> multiprocessing.context.BaseContext:
+def _context(job: SceneJob) -> _Context:
     """The forkserver context (children fork from a server that imported the entry's module
     once); spawn where there is no forkserver."""
     if "forkserver" in multiprocessing.get_all_start_methods():
@@ -78,7 +82,7 @@ def _context(job: SceneJob) -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context("spawn")
 
 
-def _start(ctx: multiprocessing.context.BaseContext, job: SceneJob, seed: int) -> _Child:
+def _start(ctx: _Context, job: SceneJob, seed: int) -> _Child:
     """Start seed `seed`'s child."""
     recv, send = ctx.Pipe(duplex=False)
     proc = ctx.Process(target=_child_main, args=(job, seed, send), name=f"indoorgen-scene-{seed}",

@@ -116,8 +116,8 @@ def plot_stats(stats: Mapping[str, Any], path: Path) -> Path:
     ax = fig.subplots(2, 3).ravel()
     _bars(ax[0], stats["room_types"], "rooms by type")
     per_room = stats["series"]["objects_per_room"]
-    ax[1].boxplot(list(per_room.values()), vert=False)
-    ax[1].set_yticks(range(1, len(per_room) + 1), list(per_room), fontsize=8)
+    ax[1].boxplot(list(per_room.values()))
+    ax[1].set_xticks(range(1, len(per_room) + 1), list(per_room), fontsize=8, rotation=30)
     ax[1].set_title("objects per room, by room type")
     _bars(ax[2], dict(list(stats["categories"].items())[:TOP]), f"objects by category (top {TOP})")
     ax[3].hist([v for v in stats["series"]["rule_share"] if v is not None], bins=20,
