@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from support.batch import GENERATE, PROGRAM
-from support.cli import run
+from support.batch import GENERATE, PROGRAM, batch
 
 
 @pytest.fixture(scope="session")
@@ -18,9 +17,9 @@ def program(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def local_batch(tmp_path_factory, program):
-    """`indoorgen batch` of seeds 0-5 on 2 local workers: (its directory, the process)."""
+    """`indoorgen batch` of seeds 0-5 on 2 local workers: (its directory, what it printed)."""
     out = tmp_path_factory.mktemp("batch") / "data"
-    r = run("batch", "--count", "6", "--workers", "2", "--out", str(out), *GENERATE,
-            "--program", program)
-    assert r.returncode == 0, r.stderr
-    return out, r
+    code, printed = batch("--count", "6", "--workers", "2", "--out", str(out), *GENERATE,
+                          "--program", program)
+    assert code == 0
+    return out, printed

@@ -9,8 +9,7 @@ import pytest
 
 from indoorgen.batch.manifest import read_manifest
 from indoorgen.cli import main
-from support.batch import BAD_SEED, GENERATE
-from support.cli import run
+from support.batch import BAD_SEED, GENERATE, batch
 
 pytestmark = pytest.mark.xdist_group("batch")
 
@@ -22,7 +21,7 @@ def _leftovers(directory):
 
 
 def test_batch_makes_every_seed_and_records_the_failing_one(local_batch):
-    out, r = local_batch
+    out, printed = local_batch
     records = read_manifest(out)
     assert sorted(rec["seed"] for rec in records) == list(range(6))
     by_seed = {rec["seed"]: rec for rec in records}
@@ -38,7 +37,7 @@ def test_batch_makes_every_seed_and_records_the_failing_one(local_batch):
         assert scene["seed"] == seed and len(scene["objects"]) == rec["objects"]
         assert (out / "scenes" / str(seed) / "scene.xml").is_file()
     assert json.loads((out / "batch.json").read_text())["generate"]["room"] == "hallway"
-    assert "5 of 6 scenes made" in r.stdout and "1 failed" in r.stdout
+    assert "5 of 6 scenes made" in printed and "1 failed" in printed
     assert _leftovers(out) == []
 
 
@@ -53,14 +52,14 @@ def test_a_seed_gives_the_same_scene_in_a_batch_or_alone(local_batch, program, t
 def test_a_resume_skips_what_is_done_and_retries_failures_only_when_asked(local_batch, program):
     out, _ = local_batch
     before = len(read_manifest(out))
-    r = run("batch", "--count", "6", "--workers", "2", "--out", str(out), *GENERATE,
-            "--program", program)
-    assert r.returncode == 0, r.stderr
-    assert "0 of 0 scenes made" in r.stdout and "6 already done" in r.stdout
+    code, printed = batch("--count", "6", "--workers", "2", "--out", str(out), *GENERATE,
+                          "--program", program)
+    assert code == 0
+    assert "0 of 0 scenes made" in printed and "6 already done" in printed
     assert len(read_manifest(out)) == before
-    r = run("batch", "--seeds", str(_seeds_file(out.parent, "3\n")), "--out", str(out),
-            *GENERATE, "--program", program, "--retry-failed")
-    assert r.returncode == 0, r.stderr
+    code, _ = batch("--seeds", str(_seeds_file(out.parent, "3\n")), "--out", str(out),
+                    *GENERATE, "--program", program, "--retry-failed")
+    assert code == 0
     assert [(rec["seed"], rec["status"]) for rec in read_manifest(out)[before:]] == \
         [(BAD_SEED, "failed")]
 
@@ -71,14 +70,14 @@ def _seeds_file(directory, text):
     return path
 
 
-def test_the_same_batch_on_a_dask_local_cluster(local_batch, program, tmp_path):
+def test_the_same_batch_on_a_dask_local_cluster(local_batch, program, tmp_path, capfd):
     pytest.importorskip("distributed", reason="the dask extra is not installed")
     out, _ = local_batch
     dask_out = tmp_path / "dask"
-    r = run("batch", "--count", "6", "--workers", "2", "--scheduler", "local",
-            "--out", str(dask_out), *GENERATE, "--program", program)
-    assert r.returncode == 0, r.stderr
-    assert "INFO" not in r.stderr
+    code, _ = batch("--count", "6", "--workers", "2", "--scheduler", "local",
+                    "--out", str(dask_out), *GENERATE, "--program", program)
+    assert code == 0
+    assert "INFO" not in capfd.readouterr().err
     status = {rec["seed"]: rec["status"] for rec in read_manifest(dask_out)}
     assert status == {rec["seed"]: rec["status"] for rec in read_manifest(out)}
     for seed, st in status.items():

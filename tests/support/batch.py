@@ -1,6 +1,11 @@
 """What the batch tests share: the cheapest generate options and a program failing for one seed."""
 from __future__ import annotations
 
+import contextlib
+import io
+
+from indoorgen.cli import main
+
 #: the options every batch test passes through to generate: the cheapest scenes there are
 GENERATE = ["--room", "hallway", "--preset", "fast", "--formats", "mjcf"]
 #: the seed whose program raises
@@ -22,3 +27,12 @@ def hallway(room):
         frame = frame.f_back
     return get_program("hallway")(room)
 '''
+
+
+def batch(*args: str) -> tuple[int, str]:
+    """`indoorgen batch ARGS` in this process (its scenes still run in processes of their own):
+    the exit status and what it printed."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        code = main(["batch", *args])
+    return code, out.getvalue()

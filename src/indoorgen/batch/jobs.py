@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import argparse
 import json
+import resource
+import sys
 import time
 from collections.abc import Callable, Mapping
 from pathlib import Path
@@ -31,9 +33,12 @@ def scene_dir(scenes: Path, seed: int) -> Path:
 
 def run_scene(entry: Entry, options: Mapping[str, Any], seed: int, scenes: Path) -> dict[str, Any]:
     """Generate seed `seed` with the `generate` options `options` into `scenes/<seed>/` (written
-    atomically by the entry) and return its manifest record; an error becomes a `failed` record
-    with the error's first line as the reason."""
+    atomically by the entry) and return its manifest record (with the scene's CPU seconds and
+    the process's peak memory); an error becomes a `failed` record with the error's first line
+    as the reason."""
     t0 = time.perf_counter()
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    cpu0 = usage.ru_utime + usage.ru_stime
     out = scene_dir(scenes, seed)
     args = argparse.Namespace(**{**options, "seed": seed, "out": str(out), "quiet": True,
                                  "overwrite": False})
@@ -43,13 +48,25 @@ def run_scene(entry: Entry, options: Mapping[str, Any], seed: int, scenes: Path)
     except Exception as e:  # any error of one scene is that scene's alone
         return record(seed, "failed", f"{type(e).__name__}: {first_line(e)}",
                       wall=time.perf_counter() - t0)
-    return record(seed, "ok", "", report=report, wall=time.perf_counter() - t0)
+    rec = record(seed, "ok", "", report=report, wall=time.perf_counter() - t0)
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    rec["seconds"]["cpu"] = round(usage.ru_utime + usage.ru_stime - cpu0, 3)
+    rec["peak_rss_mb"] = peak_rss_mb()
+    return rec
+
+
+def peak_rss_mb() -> float:
+    """This process's peak resident memory so far, in MiB (a batch runs a scene per process, so
+    it is the scene's)."""
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    return round(peak / (2**20 if sys.platform == "darwin" else 2**10), 1)  # bytes on macOS
 
 
 def record(seed: int, status: str, reason: str, *, report: Mapping[str, Any] | None = None,
            wall: float | None = None) -> dict[str, Any]:
     """One manifest line: seed, status, reason, seconds per stage (report.json's timings and the
-    attempt's wall time), objects, the quality and navigation figures, and indoorgen's version."""
+    attempt's wall time), objects, the quality and navigation figures, and indoorgen's version
+    (`run_scene` adds the scene process's peak memory)."""
     rec: dict[str, Any] = {"seed": int(seed), "status": status, "reason": reason,
                            "version": __version__, "record": RECORD_VERSION}
     seconds = dict(report.get("timings_s", {})) if report else {}
