@@ -46,7 +46,7 @@ def make_dataset(out: Path, seeds: Sequence[int], entry: Entry, options: Mapping
     workers = workers or (os.cpu_count() or 1)
     settings = {"generate": dict(options)}
     check_batch_dir(out, settings, force=force)
-    job = SceneJob(entry, dict(options), scenes_dir(out), timeout, max_memory)
+    job = SceneJob(entry, dict(options), scenes_dir(out.resolve()), timeout, max_memory)
     with _runner(job, workers, scheduler, client, connect_timeout) as run:
         out.mkdir(parents=True, exist_ok=True)
         with output_lock(out):
