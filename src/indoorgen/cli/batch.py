@@ -56,19 +56,20 @@ def add_parsers(subparsers: argparse._SubParsersAction) -> None:
     """Register `batch` and `dataset-stats` on the top-level subparsers."""
     b = subparsers.add_parser("batch", help="generate a dataset: many seeds, resumable, on local "
                               "processes or a Dask cluster")
-    b.add_argument("--count", type=int, help="how many scenes (with --seeds: the first COUNT)")
+    b.add_argument("--count", type=int, metavar="N", help="how many scenes (with --seeds: the first COUNT)")
     seeds = b.add_mutually_exclusive_group()
-    seeds.add_argument("--start-seed", type=int, default=0, help="the first seed (default 0)")
-    seeds.add_argument("--seeds", help="a file of seeds: integers separated by spaces, commas or "
-                       "lines (# starts a comment)")
-    b.add_argument("--out", required=True, help="the dataset directory")
-    b.add_argument("--workers", type=int, help="local processes (default: the number of cores)")
-    b.add_argument("--scheduler", help="run on Dask: 'local' (a LocalCluster of --workers "
-                   "processes) or a scheduler address tcp://HOST:PORT")
-    b.add_argument("--scheduler-timeout", type=float, default=10.0,
+    seeds.add_argument("--start-seed", type=int, default=0, metavar="S", help="the first seed (default 0)")
+    seeds.add_argument("--seeds", metavar="FILE", help="a file of seeds: integers separated by "
+                       "spaces, commas or lines (# starts a comment)")
+    b.add_argument("--out", required=True, metavar="DIR", help="the dataset directory")
+    b.add_argument("--workers", type=int, metavar="K", help="local processes (default: the number of cores)")
+    b.add_argument("--scheduler", metavar="local|tcp://HOST:PORT",
+                   help="run on Dask: 'local' (a LocalCluster of --workers processes) or a "
+                   "scheduler address")
+    b.add_argument("--scheduler-timeout", type=float, default=10.0, metavar="SEC",
                    help="seconds to wait for the scheduler to answer (default 10)")
-    b.add_argument("--timeout-per-scene", type=float, help="kill a scene after SEC seconds")
-    b.add_argument("--max-memory-per-worker", help="kill a scene whose process holds more "
+    b.add_argument("--timeout-per-scene", type=float, metavar="SEC", help="kill a scene after SEC seconds")
+    b.add_argument("--max-memory-per-worker", metavar="SIZE", help="kill a scene whose process holds more "
                    "memory than this (e.g. 4G, 1500M)")
     b.add_argument("--retry-failed", action="store_true",
                    help="also retry seeds that failed or timed out")
