@@ -171,6 +171,8 @@ def supervise_one(job: SceneJob, seed: int) -> dict[str, Any]:
     process, which may not have children, the scene runs in this process instead: the cluster's
     own worker restarts and memory limits then hold it, and the timeout is not applied."""
     if multiprocessing.current_process().daemon:
+        log.warning("seed %d runs in the Dask worker's own process (a daemonic worker may not "
+                    "start children; set distributed.worker.daemon to False): no time limit", seed)
         return run_scene(job.entry, job.options, seed, job.scenes)
     return next(run_local(job, [seed], workers=1))
 
