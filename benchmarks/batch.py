@@ -7,12 +7,13 @@ Runs `make_dataset` (what `indoorgen batch` runs) over seeds 0..scenes-1 into a 
 directory, once with 1 worker and once with 2, and prints scenes per hour for each and the ratio
 (the target is >= 1.9x on two idle cores). To tell start-up cost from the work itself it prints,
 per run, the median seconds a scene spends in the pipeline (report.json's total plus export)
-and the wall time of the run not spent in scenes (process starts, the
-manifest); a warm-up scene first starts the forkserver (imports paid once per run) and is timed
-apart. The load average
-is printed beside the figures: on a shared machine the ratio measures the neighbours too. Then
-it makes `--homes2` 2-storey homes (default preset, every default format) with 1 worker and
-prints each scene process's peak resident memory (the manifest's `peak_rss_mb`).
+and its CPU seconds (equal with 1 and 2 workers: the workers do not slow each other through
+memory bandwidth or caches), and the wall time of the run not spent in scenes (process starts,
+the manifest); a warm-up scene first starts the forkserver (imports paid once per run) and is
+timed apart. The load average is printed beside the figures: on a shared machine the ratio
+measures the neighbours too. Then it makes `--homes2` 2-storey homes (default preset, every
+default format) with 1 worker and prints each scene process's peak resident memory (the
+manifest's `peak_rss_mb`).
 """
 from __future__ import annotations
 
@@ -39,6 +40,7 @@ def run(out: Path, seeds: list[int], workers: int, options: dict) -> dict:
     return {"workers": workers, "ok": s["ok"], "failed": s["failed"] + s["timeout"],
             "wall": wall, "per_hour": s["ok"] * 3600 / wall, "inside": statistics.median(inside),
             "overhead": wall - sum(inside) / workers, "load": load,
+            "cpu": statistics.median(r["seconds"]["cpu"] for r in recs),
             "rss": max(r.get("peak_rss_mb", 0.0) for r in recs)}
 
 
@@ -64,7 +66,8 @@ def main() -> None:
         for r in results:
             print(f"  {r['workers']} worker(s): {r['per_hour']:.0f} scenes/hour ({r['ok']} ok, "
                   f"{r['failed']} failed, {r['wall']:.1f} s); per scene median "
-                  f"{r['inside']:.2f} s in the pipeline; {r['overhead']:.1f} s of the run's wall "
+                  f"{r['inside']:.2f} s in the pipeline, {r['cpu']:.2f} CPU s; "
+                  f"{r['overhead']:.1f} s of the run's wall "
                   "time outside scenes; "
                   f"peak RSS {r['rss']:.0f} MiB; load average at start {r['load']:.1f}")
         print(f"  ratio 2/1 workers: {results[1]['per_hour'] / results[0]['per_hour']:.2f}x "
