@@ -12,6 +12,7 @@ import fcntl
 import json
 import os
 import re
+import shutil
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any, TextIO
@@ -24,7 +25,7 @@ MANIFEST = "manifest.jsonl"
 BATCH_JSON = "batch.json"
 SCENES = "scenes"
 #: a temporary or old directory `outputs.atomic_dir` made for a scene (`.<seed>.tmp-<pid>-...`)
-_SCENE_LEFTOVER = re.compile(r"\.(?P<seed>[0-9]+)\.(tmp|old)-[0-9]+(-.*)?")
+_SCENE_LEFTOVER = re.compile(r"\.(?P<seed>[0-9]+)\.(tmp|old)-(?P<pid>[0-9]+)(-.*)?")
 #: a scene's writer lock (`outputs.output_lock`), left behind when its writer was killed
 _SCENE_LOCK = re.compile(r"\.(?P<seed>[0-9]+)\.lock")
 
@@ -144,6 +145,8 @@ def clean_leftovers(directory: Path) -> list[str]:
     removed = []
     for p in sorted(scenes.iterdir()):
         if (m := _SCENE_LEFTOVER.fullmatch(p.name)) is not None:
+            if m[2] == "tmp" and _zombie(int(m["pid"])):  # killed, not yet reaped: as dead
+                shutil.rmtree(p, ignore_errors=True)
             clean_stale(scenes / m["seed"])
             if not p.exists():
                 removed.append(p.name)
@@ -151,6 +154,16 @@ def clean_leftovers(directory: Path) -> list[str]:
             p.unlink(missing_ok=True)
             removed.append(p.name)
     return removed
+
+
+def _zombie(pid: int) -> bool:
+    """Whether process `pid` has exited but not been reaped (its parent was killed too and no
+    init process has collected it yet): what it wrote is as dead as its writer."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] == "Z"
+    except (OSError, IndexError):
+        return False
 
 
 def _unheld(lock: Path) -> bool:
