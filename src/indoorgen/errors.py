@@ -35,3 +35,12 @@ class ParameterError(ConfigError):
 
 class UnknownPresetError(ConfigError):
     """A `--preset` name that is not one of the presets."""
+
+
+class BatchConfigError(ConfigError):
+    """A batch's seeds, counts or output directory that cannot make a dataset (a seeds file that
+    does not parse, a directory written with other options or another version)."""
+
+
+class SchedulerError(IndoorGenError):
+    """A Dask scheduler that does not answer, or Dask not installed."""

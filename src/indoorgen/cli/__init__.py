@@ -11,12 +11,13 @@ import argparse
 import logging
 import sys
 
-from indoorgen.cli import assets, export, floorplan, generate, validate
+from indoorgen.cli import assets, batch, export, floorplan, generate, validate
 from indoorgen.errors import IndoorGenError
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The whole command line: generate, validate, export, assets, asset, floorplan."""
+    """The whole command line: generate, validate, export, assets, asset, floorplan, batch,
+    dataset-stats."""
     p = argparse.ArgumentParser(prog="indoorgen",
                                 description="Procedural furnished homes and rooms.")
     p.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
@@ -28,6 +29,7 @@ def build_parser() -> argparse.ArgumentParser:
     assets.add_parsers(sub)
     export.add_parser(sub)
     floorplan.add_parser(sub)
+    batch.add_parsers(sub)
     return p
 
 

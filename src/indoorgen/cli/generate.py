@@ -126,26 +126,12 @@ def run_generate(args: argparse.Namespace) -> int:
     """`indoorgen generate`: a furnished home (default) or one room, written atomically."""
     out = Path(args.out or f"scene_{args.seed}")
     check_writable(out, overwrite=args.overwrite)
-    formats = parse_formats(args.formats)
-    get_preset(args.preset)  # a bad name fails here, before any work
-    if not 0 <= args.seed <= MAX_SEED:
-        raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
-    if args.workers < 1:
-        raise ConfigError(f"--workers must be a positive integer, got {args.workers}")
-    _check_sizes(args)
+    formats, config = check_options(args)
     progress = not args.quiet and sys.stderr.isatty()
-    room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
-    if args.doors is not None:
-        check_door_mode(args.doors)
-    home_opts = [o for o in ("floors", "rooms", "area", "floorplan", "doors")
-                 if getattr(args, o) is not None]
-    if room_opts and home_opts:
-        raise ConfigError(f"--{room_opts[0]} makes a single room and --{home_opts[0]} a whole "
-                          "home; give options of one kind only")
-    if room_opts:
-        gen = generate(args.seed, _room_config(args), progress=progress)
+    if isinstance(config, GenerateConfig):
+        gen = generate(args.seed, config, progress=progress)
     else:
-        gen = generate_home(args.seed, _home_config(args), progress=progress)
+        gen = generate_home(args.seed, config, progress=progress)
     write_scene_dir(gen, out, usd_ext=args.usd_format, formats=formats, nav_images=args.nav_image,
                     overwrite=args.overwrite)
     if not args.quiet:
@@ -157,6 +143,27 @@ def run_generate(args: argparse.Namespace) -> int:
         print(f"{out}: navigation {_navigation_line(rep['navigation'])}")
         print(f"{out}: status {_status_line(rep['status'])}")
     return 0
+
+
+def check_options(args: argparse.Namespace) -> tuple[list[str], GenerateConfig | HomeConfig]:
+    """Check every option before any work (`batch` checks a dataset's options once with it):
+    the export formats and the room's or the home's configuration; ConfigError if one is bad."""
+    formats = parse_formats(args.formats)
+    get_preset(args.preset)  # a bad name fails here, before any work
+    if not 0 <= args.seed <= MAX_SEED:
+        raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
+    if args.workers < 1:
+        raise ConfigError(f"--workers must be a positive integer, got {args.workers}")
+    _check_sizes(args)
+    room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
+    if args.doors is not None:
+        check_door_mode(args.doors)
+    home_opts = [o for o in ("floors", "rooms", "area", "floorplan", "doors")
+                 if getattr(args, o) is not None]
+    if room_opts and home_opts:
+        raise ConfigError(f"--{room_opts[0]} makes a single room and --{home_opts[0]} a whole "
+                          "home; give options of one kind only")
+    return formats, (_room_config(args) if room_opts else _home_config(args))
 
 
 def _quality_line(quality: dict[str, Any]) -> str:
