@@ -113,6 +113,8 @@ def _scene(mutate):
     (lambda d: d.update(format_version=2), "format_version"),
     (lambda d: d.pop("rooms"), "has no 'rooms'"),
     (lambda d: d["objects"][0].update(colour="red"), "Extra inputs"),
+    # found by the long fuzz run: an integer too large for a float
+    (lambda d: d["objects"][0]["params"].update(width=10**60), "params.width"),
 ])
 def test_bad_scenes_name_the_entry(mutate, needle):
     with pytest.raises(SchemaError, match=needle) as e:
@@ -129,6 +131,7 @@ def test_a_custom_program_may_name_its_own_room_type():
 @pytest.mark.parametrize("data, needle", [
     ({"storeys": [{"rooms": ["a_0"], "edges": [["a_0", "b_0"]]}]}, "not on storey 0"),
     ({"storeys": []}, "at least 1 item"),
+    ({"storeys": [{}]}, "has no 'rooms'"),  # found by the long fuzz run: a storey of no rooms
     ({"storeys": [{"rooms": "living_room_0"}]}, "valid list"),
 ])
 def test_bad_graphs(data, needle):

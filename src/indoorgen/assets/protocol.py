@@ -60,7 +60,7 @@ class Param:
             else:
                 v = value
                 ok = v in self.choices
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             ok, v = False, value
         if not ok:
             raise ParameterError(f"parameter {name}={value!r} is invalid; valid: {self.describe()}")

@@ -82,7 +82,7 @@ Text = Annotated[str, Strict(), Field(max_length=MAX_NAME)]
 Length = Annotated[float, Strict(), Field(gt=0, le=MAX_OPENING, allow_inf_nan=False)]
 Level = Annotated[int, Strict(), Field(ge=0, lt=MAX_STOREYS)]
 Polygon = Annotated[list[Point], Field(min_length=3, max_length=MAX_VERTICES)]
-Scalar = (Annotated[bool, Strict()] | Annotated[int, Strict()]
+Scalar = (Annotated[bool, Strict()] | Annotated[int, Strict(), Field(ge=-10**6, le=10**6)]
           | Annotated[float, Strict(), Field(ge=-1e6, le=1e6, allow_inf_nan=False)] | Text)
 ParamValue = Scalar | Annotated[list[Scalar], Field(max_length=MAX_LIST)]
 
@@ -385,7 +385,7 @@ class HomeContour(_Model):
 class GraphStorey(_Model):
     """One storey of a room graph: room names `<type>_<k>` and the doors between them."""
 
-    rooms: Annotated[list[Name], Field(max_length=MAX_ROOMS)] = []
+    rooms: Annotated[list[Name], Field(min_length=1, max_length=MAX_ROOMS)]
     edges: Annotated[list[tuple[Name, Name]], Field(max_length=MAX_ROOMS * 4)] = []
 
 
