@@ -237,10 +237,12 @@ def viewing_distance(ctx: Context) -> list[Check]:
 
 
 def _local_points(p: Placed, pts: list[tuple[float, float]]) -> list[np.ndarray]:
+    """Local plan points of `p` in world coordinates."""
     return [p.world_point(q) for q in pts]
 
 
 def _corners(p: Placed, inset: float = 0.0) -> list[np.ndarray]:
+    """The corners of `p`'s local bounding box in plan, `inset` in from its edges, in world."""
     return _local_points(p, [(x, y) for x in (p.lo[0] + inset, p.hi[0] - inset)
                              for y in (p.lo[1] + inset, p.hi[1] - inset)])
 
@@ -255,7 +257,7 @@ def _group_anchors(ctx: Context, rug: Placed) -> tuple[Placed, list[np.ndarray]]
         return None
     owner = max(owners, key=lambda q: (q.footprint.intersection(rug.footprint).area, q.name))
     if owner.has(S.Sofa):
-        front = [(owner.hi[0] - LEG_INSET, y) for y in (owner.lo[1] + LEG_INSET,
+        front = [(float(owner.hi[0] - LEG_INSET), float(y)) for y in (owner.lo[1] + LEG_INSET,
                                                          owner.hi[1] - LEG_INSET)]
         tables = [t for t in ctx.in_room(room, S.CoffeeTable)
                   if _coffee_fit(owner, t)[0]]
@@ -265,9 +267,9 @@ def _group_anchors(ctx: Context, rug: Placed) -> tuple[Placed, list[np.ndarray]]
         chairs = [c for c in ctx.with_tags(S.Chair) if _table_of(ctx, c) is owner]
         return owner, _corners(owner) + [_centre(c) for c in chairs]
     head = owner.lo[0] + BED_RUG_FROM_HEAD * (owner.hi[0] - owner.lo[0])
-    pts = [(x, y) for x in (head, owner.hi[0] - LEG_INSET)
-           for y in (owner.lo[1] + LEG_INSET, owner.hi[1] - LEG_INSET)]
-    return owner, _local_points(owner, pts)
+    lower = [(float(x), float(y)) for x in (head, owner.hi[0] - LEG_INSET)
+             for y in (owner.lo[1] + LEG_INSET, owner.hi[1] - LEG_INSET)]
+    return owner, _local_points(owner, lower)
 
 
 @rule("rug_under_group")
