@@ -60,3 +60,21 @@ def test_fixed_objects_are_welded(exported):
         has_free = any(m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
                        for j in range(m.body_jntadr[b.id], m.body_jntadr[b.id] + m.body_jntnum[b.id]))
         assert has_free != bundle.is_fixed(o), o.name
+
+
+def test_rugs_lie_fixed_and_furniture_stands_through_them(exported):
+    """A rug is welded to the world with no collision geom: the sofa's and the dining chairs'
+    legs standing on it stand on the floor through its pile."""
+    rugs = 0
+    for room in ("living_room", "dining_room"):
+        bundle, d, _ = exported[room]
+        m = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+        for o in bundle.objects:
+            if not bundle.lies_under(o):
+                continue
+            rugs += 1
+            b = m.body(o.name).id
+            geoms = [g for g in range(m.ngeom) if m.geom_bodyid[g] == b]
+            assert geoms and all(m.geom_contype[g] == 0 and m.geom_conaffinity[g] == 0 for g in geoms)
+            assert m.body_jntnum[b] == 0
+    assert rugs >= 1

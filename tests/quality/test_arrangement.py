@@ -1,5 +1,6 @@
-"""Arrangement rules on hand-built rooms: a TV facing the sofa, the coffee table before it, the
-bed's head at a wall, dining chairs facing their table and matching sets."""
+"""Arrangement rules on hand-built rooms: a TV facing the sofa at a viewing distance, the coffee
+table before it, the bed's head at a wall, dining chairs facing their table, matching sets and
+rugs under their group."""
 from __future__ import annotations
 
 import math
@@ -13,7 +14,9 @@ from indoorgen.quality.arrangement import (
     coffee_table_in_front_of_sofa,
     dining_chairs_face_table,
     matching_sets,
+    rug_under_group,
     tv_faces_seating,
+    viewing_distance,
 )
 from support.qualityscene import FACE_DOWN, FACE_LEFT, FACE_RIGHT, FACE_UP, context, new_scene, put, size
 
@@ -90,3 +93,41 @@ def test_matching_sets_count_designs():
     (mixed,) = matching_sets(context(_dining((1, 2))))
     assert same.ok and same.value == 1
     assert not mixed.ok and mixed.value == 2
+
+
+def test_viewing_distance_from_the_sofa_to_the_screen():
+    for tv_y, ok in ((3.4, True), (4.6, False)):
+        sc = new_scene(depth=6.0)
+        put(sc, "sofa", 3.0, 0.6, FACE_UP)
+        put(sc, "tv", 3.0, tv_y, FACE_DOWN)
+        (c,) = viewing_distance(context(sc))
+        assert c.ok == ok and abs(c.value - (tv_y - 0.6)) < 0.05
+
+
+def _group_on_rug(rug_y: float):
+    """A sofa, its coffee table and a 2.6 x 1.9 m rug centred at `rug_y`; and the rug centre
+    that puts its back edge 0.25 m under the sofa's front."""
+    sofa_depth = size("sofa")[0]
+    table_depth = size("coffee_table")[0]
+    sc = new_scene()
+    put(sc, "sofa", 3.0, 1.0, FACE_UP)
+    put(sc, "coffee_table", 3.0, 1.0 + sofa_depth / 2 + 0.45 + table_depth / 2, FACE_UP)
+    put(sc, "rug", 3.0, rug_y, FACE_UP, params={"shape": "rect", "length": 2.6, "width": 1.9,
+                                               "thickness": 0.01, "corner_radius": 0.0,
+                                               "binding_width": 0.0})
+    return sc, 1.0 + sofa_depth / 2 - 0.25 + 0.95
+
+
+def test_a_rug_under_the_seating_group_passes_and_one_lying_off_it_fails():
+    _, under = _group_on_rug(0.0)
+    good, _ = _group_on_rug(under)
+    (c,) = rug_under_group(context(good))
+    assert c.ok and c.value == 1.0 and c.objects[1] == "sofa_0"
+    off, _ = _group_on_rug(under + 1.2)  # only the coffee table's far edge on it
+    (c,) = rug_under_group(context(off))
+    assert not c.ok and c.value < 0.75
+    alone = new_scene()
+    put(alone, "sofa", 3.0, 1.0, FACE_UP)
+    put(alone, "rug", 3.0, 4.0, FACE_UP)
+    (c,) = rug_under_group(context(alone))
+    assert not c.ok and c.value == 0.0 and c.objects == ("rug_1",)

@@ -1,9 +1,10 @@
-"""Presence and height rules on hand-built rooms: lights, the kitchen sink, accessory heights,
-wall cabinets and reach."""
+"""Presence and height rules on hand-built rooms: lights, the kitchen sink, counter runs,
+accessory heights, wall cabinets and reach."""
 from __future__ import annotations
 
 from indoorgen.quality.rules import (
     accessory_heights,
+    counter_runs,
     hood_over_range,
     kitchen_has_sink,
     reach,
@@ -39,6 +40,19 @@ def test_kitchen_sink_passes():
     put(sc, "kitchen_sink", 2.0, 0.3, FACE_UP)
     (c,) = kitchen_has_sink(context(sc))
     assert c.ok and c.objects == ("kitchen_sink_0",)
+
+
+def test_a_counter_run_has_no_gaps_and_the_fridge_closes_it():
+    sink_w, cab_w, fridge_w = (size(g)[1] for g in ("kitchen_sink", "kitchen_base_cabinet", "fridge"))
+    for gap, ok in ((0.01, True), (0.3, False)):
+        sc = new_scene("kitchen")
+        x = 1.0
+        for g, w in (("kitchen_base_cabinet", cab_w), ("kitchen_sink", sink_w), ("fridge", fridge_w)):
+            put(sc, g, x + w / 2, 0.4, FACE_UP)
+            x += w + gap
+        checks = counter_runs(context(sc))
+        assert [c.objects[0] for c in checks] == ["kitchen_base_cabinet_0", "kitchen_sink_1", "fridge_2"]
+        assert all(c.ok == ok and abs(c.value - gap) < 0.02 for c in checks)
 
 
 def test_toilet_roll_height_is_measured_at_its_centre():

@@ -10,6 +10,7 @@ from indoorgen.assets.cache import convex_shape, mesh_bvh
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics as S
 from indoorgen.solver.broadphase import (
+    DOOR_ZONE,
     PIECE_SOLID,
     PIECE_SWEEP,
     PIECE_ZONE,
@@ -17,6 +18,7 @@ from indoorgen.solver.broadphase import (
     WINDOW_ZONE,
     YIELD_ALL,
     YIELD_NONE,
+    YIELD_UNDER,
     YIELD_ZONES,
     Broadphase,
     world_boxes,
@@ -178,3 +180,29 @@ def test_keep_free_pieces_meet_walls_and_unrelated_solids_only():
     tall, tb = _box([0.4, 0.4, 2.0], [-3.0, 0.0, 1.0])
     bp.add("wardrobe", tall, tb)
     assert not bp.collides("wardrobe") and bp.collides("wardrobe", windows=True)
+
+
+def test_furniture_stands_on_a_rug_and_a_door_swings_over_it():
+    """A rug lies under a sofa's legs and in a door's zone, but not in a wall or on another rug."""
+    wall = trimesh.creation.box([0.2, 4.0, 2.5])
+    wall.apply_translation([3.0, 0.0, 1.25])
+    door = trimesh.creation.box([1.0, 1.0, 2.0])
+    door.apply_translation([-2.0, 0.0, 1.0])
+    bp = Broadphase([fcl.CollisionObject(mesh_bvh(wall), fcl.Transform()),
+                     fcl.CollisionObject(convex_shape(door), fcl.Transform())],
+                    np.array([np.ravel(wall.bounds), np.ravel(door.bounds)]),
+                    np.array([SOLID, DOOR_ZONE]))
+    rug, rb = _box([2.0, 1.5, 0.01], [0.0, 0.0, 0.005])
+    bp.add("rug", rug, rb, yields=YIELD_UNDER)
+    sofa, sb = _box([0.9, 2.0, 0.8], [0.3, 0.0, 0.4])
+    bp.add("sofa", sofa, sb)
+    assert not bp.collides("rug") and not bp.collides("sofa")
+    other, ob = _box([1.0, 1.0, 0.01], [0.9, 0.0, 0.005])
+    bp.add("other rug", other, ob, yields=YIELD_UNDER)
+    assert bp.collides("rug") and bp.collides("other rug") and not bp.collides("sofa")
+    bp.remove("other rug")
+    for at, hit in (([-2.0, 0.0, 0.005], False), ([2.9, 0.0, 0.005], True)):
+        bp.remove("rug")
+        rug, rb = _box([1.0, 1.0, 0.01], at)
+        bp.add("rug", rug, rb, yields=YIELD_UNDER)
+        assert bp.collides("rug") == hit

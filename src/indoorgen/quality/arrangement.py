@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Iterator
 
 import numpy as np
 import shapely.geometry as sg
@@ -55,18 +56,23 @@ def _seats(ctx: Context, room: str) -> list[Placed]:
     return ctx.in_room(room, S.Sofa) or ctx.in_room(room, S.Armchair)
 
 
+def _tv_seats(ctx: Context) -> Iterator[tuple[Placed, Placed, np.ndarray]]:
+    """Each TV in a room with a sofa (else armchairs), the nearest of those seats, and the plan
+    vector from the TV's centre to the seat's."""
+    for tv in ctx.with_tags(S.TV):
+        seats = _seats(ctx, tv.obj.room)
+        if seats:
+            c = _centre(tv)
+            seat = min(seats, key=lambda q: (float(np.linalg.norm(_centre(q) - c)), q.name))
+            yield tv, seat, _centre(seat) - c
+
+
 @rule("tv_faces_seating")
 def tv_faces_seating(ctx: Context) -> list[Check]:
     """Each TV in a room with a sofa (else armchairs) faces the nearest one within 30 deg, and
     that seat faces the TV within 30 deg; value: the larger of the two angles (deg)."""
     out = []
-    for tv in ctx.with_tags(S.TV):
-        seats = _seats(ctx, tv.obj.room)
-        if not seats:
-            continue
-        c = _centre(tv)
-        seat = min(seats, key=lambda q: (float(np.linalg.norm(_centre(q) - c)), q.name))
-        to_seat = _centre(seat) - c
+    for tv, seat, to_seat in _tv_seats(ctx):
         a_tv, a_seat = angle_deg(tv.front, to_seat), angle_deg(seat.front, -to_seat)
         out.append(Check(tv.obj.room, (tv.name, seat.name), max(a_tv, a_seat), TV_ANGLE,
                          max(a_tv, a_seat) <= TV_ANGLE, {"tv_angle": a_tv, "seat_angle": a_seat}))
@@ -225,22 +231,20 @@ def viewing_distance(ctx: Context) -> list[Check]:
     """Each TV in a room with a sofa (else armchairs) is 1.8-3.5 m from the nearest, centre to
     centre in plan (1.5-2.5 times a living room's screen diagonal); value: that distance (m)."""
     out = []
-    for tv in ctx.with_tags(S.TV):
-        seats = _seats(ctx, tv.obj.room)
-        if not seats:
-            continue
-        c = _centre(tv)
-        d, _, seat = min((float(np.linalg.norm(_centre(q) - c)), q.name, q) for q in seats)
+    for tv, seat, to_seat in _tv_seats(ctx):
+        d = float(np.linalg.norm(to_seat))
         out.append(Check(tv.obj.room, (tv.name, seat.name), d, list(VIEWING),
                          VIEWING[0] <= d <= VIEWING[1]))
     return out
 
 
 def _local_points(p: Placed, pts: list[tuple[float, float]]) -> list[np.ndarray]:
+    """Local plan points of `p` in world coordinates."""
     return [p.world_point(q) for q in pts]
 
 
 def _corners(p: Placed, inset: float = 0.0) -> list[np.ndarray]:
+    """The corners of `p`'s local bounding box in plan, `inset` in from its edges, in world."""
     return _local_points(p, [(x, y) for x in (p.lo[0] + inset, p.hi[0] - inset)
                              for y in (p.lo[1] + inset, p.hi[1] - inset)])
 
@@ -255,7 +259,7 @@ def _group_anchors(ctx: Context, rug: Placed) -> tuple[Placed, list[np.ndarray]]
         return None
     owner = max(owners, key=lambda q: (q.footprint.intersection(rug.footprint).area, q.name))
     if owner.has(S.Sofa):
-        front = [(owner.hi[0] - LEG_INSET, y) for y in (owner.lo[1] + LEG_INSET,
+        front = [(float(owner.hi[0] - LEG_INSET), float(y)) for y in (owner.lo[1] + LEG_INSET,
                                                          owner.hi[1] - LEG_INSET)]
         tables = [t for t in ctx.in_room(room, S.CoffeeTable)
                   if _coffee_fit(owner, t)[0]]
@@ -265,9 +269,9 @@ def _group_anchors(ctx: Context, rug: Placed) -> tuple[Placed, list[np.ndarray]]
         chairs = [c for c in ctx.with_tags(S.Chair) if _table_of(ctx, c) is owner]
         return owner, _corners(owner) + [_centre(c) for c in chairs]
     head = owner.lo[0] + BED_RUG_FROM_HEAD * (owner.hi[0] - owner.lo[0])
-    pts = [(x, y) for x in (head, owner.hi[0] - LEG_INSET)
-           for y in (owner.lo[1] + LEG_INSET, owner.hi[1] - LEG_INSET)]
-    return owner, _local_points(owner, pts)
+    lower = [(float(x), float(y)) for x in (head, owner.hi[0] - LEG_INSET)
+             for y in (owner.lo[1] + LEG_INSET, owner.hi[1] - LEG_INSET)]
+    return owner, _local_points(owner, lower)
 
 
 @rule("rug_under_group")

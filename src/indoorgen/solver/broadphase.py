@@ -126,7 +126,7 @@ class Broadphase:
         solid_only = ~free if has_free else None
         # which of my pieces meet another's solid pieces, by what those yield
         meet = {YIELD_NONE: None, YIELD_ZONES: kinds != PIECE_ZONE if has_free else None,
-                YIELD_ALL: solid_only}
+                YIELD_ALL: solid_only, YIELD_UNDER: solid_only}
         under = self._yields[name] == YIELD_UNDER
         for j in _overlapping(self._static_keys, own):
             kind = self._static_kinds[j]

@@ -100,9 +100,12 @@ def kitchen(room: ObjSet) -> Problem:
                 + s.center_distance(fridges).hinge(*TRIANGLE_LEG)).minimize(20),
             "the work triangle at the fridge": fridges.mean(
                 lambda f: f.center_distance(cookers).hinge(*TRIANGLE_LEG)).minimize(20),
+            # as strong as the runs' gaps: appliances slid together must not close the triangle
             "a comfortable triangle": sinks.mean(lambda s: s.center_distance(cookers).hinge(*TRIANGLE_AIM)
                                                  + s.center_distance(fridges).hinge(*TRIANGLE_AIM))
-            .minimize(3),
+            .minimize(RUN_WEIGHT),
+            "a comfortable triangle at the fridge": fridges.mean(
+                lambda f: f.center_distance(cookers).hinge(*TRIANGLE_AIM)).minimize(RUN_WEIGHT),
             "fronts free": accessibility_cost(along_walls, floor).minimize(2),
             "island clear of the runs": islands.mean(
                 lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
