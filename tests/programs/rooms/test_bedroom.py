@@ -7,15 +7,24 @@ from indoorgen.constraints import scene
 from indoorgen.constraints.bounds import find_bounds
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.relations import against_wall, on_floor
 from indoorgen.programs.rooms.bedroom import BOOKCASE_AREA, WARDROBE_AREA, bedroom
 from support.fakeview import FakeView
 
 
 @pytest.mark.parametrize("width,depth", [(3.0, 3.0), (3.5, 4.0), (4.5, 4.0), (2.3, 5.3)])
-def test_a_larger_bedroom_asks_for_a_wardrobe_and_a_bookcase(width, depth):
+def test_a_larger_bedroom_asks_for_a_wardrobe_and_a_bookcase_once_the_bed_stands(width, depth):
     view = FakeView()
     view.add_room("r", [(0, 0), (width, 0), (width, depth), (0, depth)])
-    problem = bedroom(scene()[S.Room].named("r"))
+    room = scene()[S.Room].named("r")
+    problem = bedroom(room)
+    # nothing is asked for before the bed stands (the bed comes first)
+    assert not {b.name for b in find_bounds(problem, Evaluator(problem, view))} & {
+        "a wardrobe in a larger room", "a bookcase in a larger room"}
+    view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(1, 1, 0.3), extents=(2, 1.6, 0.6),
+             relations=[(on_floor, "r"), (against_wall, "r")], generator="bed",
+             params={"drawers": False})
+    problem = bedroom(room)
     bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
     for name, area in (("a wardrobe in a larger room", WARDROBE_AREA),
                        ("a bookcase in a larger room", BOOKCASE_AREA)):

@@ -43,6 +43,8 @@ BOOKCASE_AREA = 16.0
 #: a bedroom whose plan box is larger than this (m^2) has a wardrobe (a dresser alone is for
 #: the smallest rooms, or those with a closet)
 WARDROBE_AREA = 13.0
+#: the violation of a larger room's missing wardrobe or bookcase (a missing bed weighs 1)
+LARGER_ROOM = 0.5
 #: the band a wall shelf's centre hangs in (m): above a nightstand or desk (0.7 m) and within
 #: reach, its top board no higher than eye level (the reach rule's 1.6 m)
 SHELF_BAND = (1.0, 1.45)
@@ -99,11 +101,12 @@ def bedroom(room: ObjSet) -> Problem:
             "a rug at most": rugs.count().in_range(0, 1),
             "up to two plants": plants.count().in_range(0, 2),
             "a bookcase at most": bookcases.count().in_range(0, 1),
-            # 0 up to the area, then 1 (a fraction below 1 still asks for one)
-            "a wardrobe in a larger room": wardrobes.count() >= (
-                room.volume((0, 1)) - WARDROBE_AREA).clip(0.0, 1.0),
-            "a bookcase in a larger room": bookcases.count() >= (
-                room.volume((0, 1)) - BOOKCASE_AREA).clip(0.0, 1.0),
+            # asked for once the bed stands, 0 up to the area, then up to LARGER_ROOM (any
+            # fraction asks for one): a missing one weighs less than the bed, which comes first
+            "a wardrobe in a larger room": beds.all(lambda b: wardrobes.count() >= (
+                (room.volume((0, 1)) - WARDROBE_AREA) * LARGER_ROOM).clip(0.0, LARGER_ROOM)),
+            "a bookcase in a larger room": beds.all(lambda b: bookcases.count() >= (
+                (room.volume((0, 1)) - BOOKCASE_AREA) * LARGER_ROOM).clip(0.0, LARGER_ROOM)),
             "up to two wall shelves": shelves.count().in_range(0, 2),
             "a floor lamp at most": floor_lamps.count().in_range(0, 1),
             "a laundry basket at most": floor[S.Basket].count().in_range(0, 1),
