@@ -240,7 +240,9 @@ def test_every_material_texture_resolves(exported, room):
     assert st.GetInterpolation() == UsdGeom.Tokens.faceVarying
     assert st.IsIndexed() and len(st.Get()) < len(st.GetIndices())
     assert len(st.ComputeFlattened()) == 3 * len(mesh.GetFaceVertexCountsAttr().Get())
-    assert mesh.GetNormalsInterpolation() == UsdGeom.Tokens.faceVarying
+    normals = UsdGeom.PrimvarsAPI(mesh).GetPrimvar("normals")
+    assert normals.GetInterpolation() == UsdGeom.Tokens.faceVarying and normals.IsIndexed()
+    assert len(normals.ComputeFlattened()) == 3 * len(mesh.GetFaceVertexCountsAttr().Get())
 
 
 def test_articulations_and_lights(articulated):

@@ -124,9 +124,9 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
                 uv: np.ndarray | None = None, normals: np.ndarray | None = None
                 ) -> UsdGeom.Mesh:
     """A UsdGeom.Mesh at `path` holding the triangles of `mesh` (points, counts, indices,
-    extent; polygonal, no subdivision), with faceVarying normals (the face normals when none
-    are given) and an indexed faceVarying `primvars:st` when given (per-corner arrays (F, 3, 3)
-    and (F, 3, 2)). Zero-area faces are dropped (`solid_faces`) and co-located points welded,
+    extent; polygonal, no subdivision), with indexed faceVarying `primvars:normals` (the face
+    normals when none are given) and `primvars:st` when given (per-corner arrays (F, 3, 3) and
+    (F, 3, 2)). Zero-area faces are dropped (`solid_faces`) and co-located points welded,
     so the stage passes the asset validators' geometry rules."""
     usd_mesh = UsdGeom.Mesh.Define(stage, path)
     keep = solid_faces(mesh)
@@ -143,17 +143,22 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
         corner = np.repeat((cross / np.linalg.norm(cross, axis=1)[:, None])[:, None], 3, axis=1)
     else:
         corner = np.asarray(normals, float)[keep]
-    usd_mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(
-        np.ascontiguousarray(corner.reshape(-1, 3), np.float32)))
-    usd_mesh.SetNormalsInterpolation(UsdGeom.Tokens.faceVarying)
+    _indexed_primvar(usd_mesh, "normals", Sdf.ValueTypeNames.Normal3fArray, Vt.Vec3fArray,
+                     corner.reshape(-1, 3))
     if uv is not None:
-        values, index = np.unique(np.asarray(uv, np.float32)[keep].reshape(-1, 2), axis=0,
-                                  return_inverse=True)
-        pv = UsdGeom.PrimvarsAPI(usd_mesh).CreatePrimvar(
-            "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.faceVarying)
-        pv.Set(Vt.Vec2fArray.FromNumpy(np.ascontiguousarray(values)))
-        pv.SetIndices(Vt.IntArray.FromNumpy(index.reshape(-1).astype(np.int32)))
+        _indexed_primvar(usd_mesh, "st", Sdf.ValueTypeNames.TexCoord2fArray, Vt.Vec2fArray,
+                         np.asarray(uv)[keep].reshape(-1, 2))
     return usd_mesh
+
+
+def _indexed_primvar(mesh: UsdGeom.Mesh, name: str, type_name: Sdf.ValueTypeName, array,
+                     corners: np.ndarray) -> None:
+    """A faceVarying primvar `name` of per-corner values (N, k): each distinct float32 value
+    stored once, with an index per corner."""
+    values, index = np.unique(np.asarray(corners, np.float32), axis=0, return_inverse=True)
+    pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(name, type_name, UsdGeom.Tokens.faceVarying)
+    pv.Set(array.FromNumpy(np.ascontiguousarray(values)))
+    pv.SetIndices(Vt.IntArray.FromNumpy(index.reshape(-1).astype(np.int32)))
 
 
 def rigid_body(prim: Usd.Prim, inertial: Inertial) -> None:
