@@ -49,7 +49,8 @@ def _p90(xs: list[float]) -> float:
 def _reason_kind(reason: str) -> str:
     """A failure reason without the names of rooms, doors and objects: what kind of fault."""
     if reason.startswith("room ") and ": hard constraint " in reason:
-        return "hard constraint " + reason.split(": hard constraint ", 1)[1].split(" ")[0]
+        name = reason.split(": hard constraint ", 1)[1].rsplit(" violated (", 1)[0]
+        return f"hard constraint {name!r}"
     if reason.startswith("layout rule "):
         return reason.split(":", 1)[0]
     for kind in ("is not reachable from the entrance", "cannot be passed from the entrance"):
