@@ -7,9 +7,9 @@ seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: t
 (homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
 commonest reasons are listed below the table), seconds per home (median, p90), rooms and objects
 per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
-(reachable share of free floor: median and minimum, per storey too; homes with every room
-reachable; doors passable of all doors; unreachable rooms per home; large objects whose front
-cannot be reached per home), the community navigability (0.2 m robot) and the seconds
+(reachable share of walkable floor, and of all free floor: median and minimum, per storey too;
+homes with every room reachable; doors passable of all doors; unreachable rooms per home; large
+objects whose front cannot be reached per home), the community navigability (0.2 m robot) and the seconds
 `navigation_report` takes per storey (median, max).
 """
 from __future__ import annotations
@@ -80,12 +80,15 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
         return rows
     secs = [r["seconds"] for r in ok]
     share = [r["report"]["reachable_share"] for r in ok]
+    of_free = [r["report"]["reachable_share_of_free"] for r in ok]
     nav_s = [r["nav_s_per_storey"] for r in ok]
     rows += [
         ("seconds per home: median / p90", f"{statistics.median(secs):.1f} / {_p90(secs):.1f}"),
         ("rooms per home: median", f"{statistics.median(r['rooms'] for r in ok):g}"),
         ("objects per home: median", f"{statistics.median(r['objects'] for r in ok):g}"),
         ("reachable share: median / min", f"{statistics.median(share):.3f} / {min(share):.3f}"),
+        ("of all free floor: median / min", f"{statistics.median(of_free):.3f} / "
+                                            f"{min(of_free):.3f}"),
         ("homes with every room reachable",
          f"{sum(r['report']['passed'] for r in ok)} / {len(ok)}"),
         ("unreachable rooms per home: mean",
