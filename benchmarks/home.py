@@ -42,6 +42,18 @@ def one(seed: int, floors: int, preset: str) -> dict:
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
 
 
+def _progress(floors: int, r: dict) -> str:
+    """One line as each home finishes (a long run shows how it goes)."""
+    if "error" in r:
+        return f"  {floors}-storey seed {r['seed']}: raised {r['error']}"
+    rep = r["report"]
+    return (f"  {floors}-storey seed {r['seed']}: {r['seconds']:.1f} s, {r['objects']} objects, "
+            f"reachable {rep['reachable_share']:.3f} ({rep['reachable_share_of_free']:.3f} of "
+            f"free floor), {len(rep['unreachable_rooms'])} rooms and "
+            f"{len(rep['unreachable_doors'])} doors cut off, "
+            f"{'failed' if r['reasons'] else 'ok'}")
+
+
 def _p90(xs: list[float]) -> float:
     return float(np.percentile(xs, 90))
 
@@ -121,7 +133,10 @@ def main() -> None:
     columns = {}
     for floors, n in ((1, args.homes1), (2, args.homes2)):
         if n > 0:
-            runs = [one(s, floors, args.preset) for s in range(args.seed0, args.seed0 + n)]
+            runs = []
+            for s in range(args.seed0, args.seed0 + n):
+                runs.append(one(s, floors, args.preset))
+                print(_progress(floors, runs[-1]), flush=True)
             columns[floors] = summary(floors, runs)
             for r in runs:
                 if "error" in r:
