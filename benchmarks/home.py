@@ -8,9 +8,9 @@ seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: t
 (homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
 commonest reasons are listed below the table), seconds per home (median, p90), rooms and objects
 per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
-(reachable share of free floor: median and minimum, per storey too; homes with every room
-reachable; doors passable of all doors; unreachable rooms per home; large objects whose front
-cannot be reached per home), the community navigability (0.2 m robot) and the seconds
+(reachable share of walkable floor, and of all free floor: median and minimum, per storey too;
+homes with every room reachable; doors passable of all doors; unreachable rooms per home; large
+objects whose front cannot be reached per home), the community navigability (0.2 m robot) and the seconds
 `navigation_report` takes per storey (median, max).
 """
 from __future__ import annotations
@@ -43,6 +43,18 @@ def one(seed: int, floors: int, preset: str, workers: int = 1) -> dict:
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
 
 
+def _progress(floors: int, r: dict) -> str:
+    """One line as each home finishes (a long run shows how it goes)."""
+    if "error" in r:
+        return f"  {floors}-storey seed {r['seed']}: raised {r['error']}"
+    rep = r["report"]
+    return (f"  {floors}-storey seed {r['seed']}: {r['seconds']:.1f} s, {r['objects']} objects, "
+            f"reachable {rep['reachable_share']:.3f} ({rep['reachable_share_of_free']:.3f} of "
+            f"free floor), {len(rep['unreachable_rooms'])} rooms and "
+            f"{len(rep['unreachable_doors'])} doors cut off, "
+            f"{'failed' if r['reasons'] else 'ok'}")
+
+
 def _p90(xs: list[float]) -> float:
     return float(np.percentile(xs, 90))
 
@@ -50,7 +62,8 @@ def _p90(xs: list[float]) -> float:
 def _reason_kind(reason: str) -> str:
     """A failure reason without the names of rooms, doors and objects: what kind of fault."""
     if reason.startswith("room ") and ": hard constraint " in reason:
-        return "hard constraint " + reason.split(": hard constraint ", 1)[1].split(" ")[0]
+        name = reason.split(": hard constraint ", 1)[1].rsplit(" violated (", 1)[0]
+        return f"hard constraint {name!r}"
     if reason.startswith("layout rule "):
         return reason.split(":", 1)[0]
     for kind in ("is not reachable from the entrance", "cannot be passed from the entrance"):
@@ -80,12 +93,15 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
         return rows
     secs = [r["seconds"] for r in ok]
     share = [r["report"]["reachable_share"] for r in ok]
+    of_free = [r["report"]["reachable_share_of_free"] for r in ok]
     nav_s = [r["nav_s_per_storey"] for r in ok]
     rows += [
         ("seconds per home: median / p90", f"{statistics.median(secs):.1f} / {_p90(secs):.1f}"),
         ("rooms per home: median", f"{statistics.median(r['rooms'] for r in ok):g}"),
         ("objects per home: median", f"{statistics.median(r['objects'] for r in ok):g}"),
         ("reachable share: median / min", f"{statistics.median(share):.3f} / {min(share):.3f}"),
+        ("of all free floor: median / min", f"{statistics.median(of_free):.3f} / "
+                                            f"{min(of_free):.3f}"),
         ("homes with every room reachable",
          f"{sum(r['report']['passed'] for r in ok)} / {len(ok)}"),
         ("unreachable rooms per home: mean",
@@ -119,8 +135,10 @@ def main() -> None:
     columns = {}
     for floors, n in ((1, args.homes1), (2, args.homes2)):
         if n > 0:
-            runs = [one(s, floors, args.preset, args.workers)
-                    for s in range(args.seed0, args.seed0 + n)]
+            runs = []
+            for s in range(args.seed0, args.seed0 + n):
+                runs.append(one(s, floors, args.preset, args.workers))
+                print(_progress(floors, runs[-1]), flush=True)
             columns[floors] = summary(floors, runs)
             for r in runs:
                 if "error" in r:

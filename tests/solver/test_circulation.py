@@ -88,19 +88,6 @@ def test_a_picture_on_a_wall_above_the_band_does_not_block():
     assert walkway(st, ROOM).violation == 0
 
 
-def test_floor_sealed_off_by_furniture_is_a_pocket():
-    # a 1.3 m corridor with one door at its left end: a wardrobe across it, facing the door,
-    # leaves its front reachable but seals the floor behind it
-    st = make_state(W, 1.3, (Door("a", 3, 0.65, 0.9),))
-    ward = put(st, "wardrobe", floor(), (3.4, 0.65), math.pi, seed=0, name="wardrobe")
-    w = walkway(st, ROOM)
-    assert w.violation == 1 and len(w.unreachable) == 1
-    assert w.unreachable[0].startswith("floor pocket at (4.")
-    # pushed to the corridor's end it seals nothing
-    st.set_pose(ward, np.array([W - 0.35, 0.65, st.objects[ward].position[2]]), math.pi)
-    assert walkway(st, ROOM).violation == 0
-
-
 def test_a_door_the_empty_room_cannot_serve_is_reported_not_counted():
     # a door at the end of a 0.5 m wide nook no agent fits into
     poly = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (2.25, 3.0), (2.25, 4.0), (1.75, 4.0),

@@ -15,14 +15,11 @@ components: the centres an agent can reach from one another. The *targets* are
   for a bed either side point, within `FRONT_TOLERANCE`; or beside a seat standing on the floor
   that is related to it (the chair at a desk stands where its user would).
 
-The violation is the number of targets outside the component that serves the most of them,
-plus the number of *pockets*: components that serve no target, where the empty room's floor was
-one with the targets' (a corner or a closet's end sealed off by a cabinet, floor behind a bed an
-agent could stand on and never get to), at least `POCKET_CELLS` cells. It is weighted by
-`CIRCULATION_WEIGHT` in the room's problem, so 0 means every door, landing and front can be
-reached from every other and no floor an agent could stand on is cut off from them. Doors or
-landings that even the empty room cannot serve (an architectural fault no furniture can fix) are
-left out and logged.
+The violation is the number of targets outside the component that serves the most of them
+(weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
+front can be reached from every other. Doors or landings that
+even the empty room cannot serve (an architectural fault no furniture can fix) are left out and
+logged.
 
 `Circulation` is the constraint node; `with_circulation` adds it to a room's problem (the stage
 runner does so for every room). Each evaluation is cached on the solver state by the poses of
@@ -73,9 +70,6 @@ CIRCULATION_WEIGHT = 2.0
 DOOR_ZONE_GAP = 0.05
 #: Stages whose objects have fronts the agent must reach (the navigation measure's "large").
 FRONT_STAGES = frozenset({"large"})
-#: The fewest centre cells a sealed pocket of floor has to count: a single cell is a place an
-#: agent could stand, sweeping about pi r^2 (0.2 m^2) of floor.
-POCKET_CELLS = 1
 
 
 @dataclass
@@ -96,8 +90,6 @@ class RoomFloor:
     centres: np.ndarray
     targets: list[Target]
     unservable: list[str]
-    #: the empty room's centres that reach its targets: where furniture may not seal a pocket
-    connected: np.ndarray
 
 
 @dataclass
@@ -145,9 +137,8 @@ def static_targets(shape: RoomShape, grid: Grid, radius: float) -> list[Target]:
     return out
 
 
-def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str], set[int]]:
-    """The component serving most targets: the count of the others, their names, and every
-    component that serves a target."""
+def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str]]:
+    """The component serving most targets: the count of the others, and their names."""
     hit = [{int(v) for p in t.patches for v in np.unique(patch_values(labels, p)) if v}
            for t in targets]
     counts: dict[int, int] = {}
@@ -155,27 +146,10 @@ def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str], se
         for lab in h:
             counts[lab] = counts.get(lab, 0) + 1
     if not counts:
-        return len(targets), [t.name for t in targets], set()
+        return len(targets), [t.name for t in targets]
     best = min(counts, key=lambda lab: (-counts[lab], lab))
     missed = [t.name for t, h in zip(targets, hit, strict=True) if best not in h]
-    return len(missed), missed, set(counts)
-
-
-def pockets(labels: np.ndarray, serving: set[int], connected: np.ndarray,
-            grid: Grid) -> list[str]:
-    """The components of `labels` that serve no target though they lie where the empty room's
-    floor reached its targets (`connected`), with at least `POCKET_CELLS` cells: names for
-    reports, by where they are."""
-    inside = np.bincount(labels[connected].ravel(), minlength=int(labels.max()) + 1)
-    out = []
-    for lab in np.nonzero(inside >= POCKET_CELLS)[0]:
-        if lab == 0 or int(lab) in serving:
-            continue
-        ii, jj = np.nonzero(labels == lab)
-        x = grid.x0 + (float(jj.mean()) + 0.5) * grid.cell
-        y = grid.y0 + (float(ii.mean()) + 0.5) * grid.cell
-        out.append(f"floor pocket at ({x:.2f}, {y:.2f})")
-    return out
+    return len(missed), missed
 
 
 def clearance(radius: float, cell: float) -> float:
@@ -193,15 +167,11 @@ def room_floor(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CEL
     grid = Grid.covering(sg.Polygon(shape.room.polygon).bounds, cell)
     targets = static_targets(shape, grid, radius)
     centres = grid.rasterise([floor_polygon(shape).buffer(-clearance(radius, cell))])
-    labels = ndimage.label(centres)[0]
-    _, missed, _ = _best(targets, labels)
+    _, missed = _best(targets, ndimage.label(centres)[0])
     if missed:
         log.warning("room %s: %s cannot be reached even in the empty room", shape.room.name,
                     ", ".join(missed))
-    kept = [t for t in targets if t.name not in missed]
-    _, _, serving = _best(kept, labels)
-    connected = np.isin(labels, sorted(serving)) & centres
-    return RoomFloor(grid, centres, kept, missed, connected)
+    return RoomFloor(grid, centres, [t for t in targets if t.name not in missed], missed)
 
 
 def standing(state: State, room: str) -> list[str]:
@@ -299,18 +269,17 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
             targets.append(Target(front.name, front.patches + [
                 p for c in seats for p in cache.beside(state.objects[c], floor_z)]))
     labels = ndimage.label(fixed.centres & ~blocked)[0]
-    count, missed, serving = _best(targets, labels)
-    sealed = pockets(labels, serving, fixed.connected, fixed.grid) if serving else []
-    result = Walkway(count + len(sealed), missed + sealed, list(fixed.unservable))
+    count, missed = _best(targets, labels)
+    result = Walkway(count, missed, list(fixed.unservable))
     cache.last = (key, result)
     return result
 
 
 class Circulation(Constraint):
     """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
-    fronts a walking agent of `radius` cannot reach from the rest in room `room`, and of pockets
-    of floor furniture seals off (see the module). Keeps, per solver state it is evaluated on,
-    the room's caches (they go when the state goes)."""
+    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the
+    module). Keeps, per solver state it is evaluated on, the room's caches (they go when the
+    state goes)."""
 
     def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
         super().__init__()
