@@ -66,7 +66,7 @@ def check_lights_at_bulbs(bundle, path):
     placed = {n["name"]: (world[i][:3, 3], lights[n["extensions"]["KHR_lights_punctual"]["light"]])
               for i, n in enumerate(tree["nodes"]) if "extensions" in n}
     want = {f"{o.name}/light_{e.index}": (o.pose.apply(e.centre[None])[0], e.candela)
-            for o in bundle.objects for e in emitters(bundle.assets[o.name])}
+            for o in bundle.objects for e in emitters(bundle.assets[o.name], o.generator)}
     assert want and set(placed) == set(want)
     for name, (pos, light) in placed.items():
         assert light["type"] == "point"

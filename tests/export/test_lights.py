@@ -7,13 +7,13 @@ import numpy as np
 from tests.support.assetcheck import build
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS
-from indoorgen.export.lights import LUMINANCE, MAX_RADIUS, MIN_RADIUS, emitters
+from indoorgen.export.lights import FIXTURE_LUMENS, MAX_RADIUS, MIN_RADIUS, emitters
 from indoorgen.export.meshes import face_slot_names
 
 
-def test_a_table_lamp_glows_at_its_bulb_with_the_sphere_s_intensity():
+def test_a_table_lamp_glows_at_its_bulb_with_a_reading_lamp_s_flux():
     asset = build("table_lamp", 0)[3]
-    found = emitters(asset)
+    found = emitters(asset, "table_lamp")
     assert found
     lit = np.isin(face_slot_names(asset), [i for i, s in enumerate(asset.slots)
                                            if s in EMISSIVE_SLOTS])
@@ -23,9 +23,9 @@ def test_a_table_lamp_glows_at_its_bulb_with_the_sphere_s_intensity():
         assert np.all(e.centre >= lo) and np.all(e.centre <= hi)
         assert e.centre[2] > 0.5 * hi[2]  # the bulb sits in the shade, high up
         assert MIN_RADIUS <= e.radius <= MAX_RADIUS
-        # a sphere of luminance L shows a disc of pi r^2: I = L pi r^2 (cd), 4 pi I lumens
-        assert math.isclose(e.candela, LUMINANCE * math.pi * e.radius ** 2)
-        assert 5.0 < 4 * math.pi * e.candela < 5000.0  # a bulb's lumens, not a stadium's
+        # an isotropic point of flux F: I = F / 4 pi (cd)
+        assert math.isclose(4 * math.pi * e.candela, e.lumens)
+    assert math.isclose(sum(e.lumens for e in found), FIXTURE_LUMENS["table_lamp"])
 
 
 def test_furniture_without_emissive_faces_has_no_lights():

@@ -285,7 +285,7 @@ class _Writer:
                 self.names(f"{o.name}/{link}"), links[up] if up is not None else node,
                 translation=y_up((frames[link] - base)[None])[0],
                 mesh=self.link_mesh(name, link, frames[link]), extras=extras)
-        for e in emitters(asset):
+        for e in emitters(asset, o.generator):
             self.doc.node(self.names(f"{o.name}/light_{e.index}"), links[e.link],
                           translation=y_up((e.centre - frames[e.link])[None])[0],
                           light=self.light(name, e.link, e.candela))

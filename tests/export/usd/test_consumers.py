@@ -10,7 +10,7 @@ import math
 import pytest
 from pxr import Usd, UsdGeom, UsdLux, UsdPhysics
 
-from indoorgen.export.usd.objects import FIXTURE_LUMENS
+from indoorgen.export.lights import FIXTURE_LUMENS
 
 #: the asset validator's rules the old stages broke (warnings, not failures): they stay quiet
 NAMED_RULES = ("IndexedPrimvarChecker", "ZeroAreaFaceChecker", "WeldChecker",

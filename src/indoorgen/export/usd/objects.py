@@ -12,6 +12,7 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdPhysics
 
 from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
+from indoorgen.export.lights import COLOR, emitters
 from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names
 from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
 from indoorgen.export.usd.materials import Looks, bind_slots
@@ -34,16 +35,6 @@ HINGE_DAMPING, SLIDE_DAMPING = 0.5, 10.0
 #: the sag a gravity-loaded joint's spring allows under the child's full weight: a hinge's
 #: (degrees) and a slide's (m)
 HOLD_ANGLE, HOLD_SLIDE = 1.0, 0.005
-#: luminous flux (lm) of each light fixture, shared among its lit links: household LED lamps
-#: (a ceiling lamp 1200 lm, about a 100 W incandescent bulb; a reading lamp 450 lm, 40 W); a
-#: candle flame 12 lm (one candela)
-FIXTURE_LUMENS = {"ceiling_light": 1200.0, "pendant_light": 800.0, "floor_lamp": 1000.0,
-                  "table_lamp": 450.0, "desk_lamp": 450.0, "wall_sconce": 400.0,
-                  "candle": 12.0}
-#: flux (lm) of any other object with emissive faces
-DEFAULT_LUMENS = 450.0
-#: warm white (2700 K) of the lights
-LIGHT_COLOR = (1.0, 0.88, 0.72)
 
 
 class _ObjectMeshes:
@@ -245,31 +236,18 @@ def _body_name(name: str, asset: Asset) -> str:
 
 def _write_lights(stage: Usd.Stage, path: Sdf.Path, owner: str, asset: Asset,
                   generator: str) -> None:
-    """A SphereLight `<owner>_light_<k>` at the emissive faces of each link (bulbs, diffusers,
-    flames), together
-    emitting the fixture's FIXTURE_LUMENS: normalized (UsdLux: luminance = intensity x
-    2^exposure / area), so its flux is pi x intensity lumens whatever its radius."""
-    mask = _emissive_faces(asset)
-    if not mask.any():
-        return
-    areas = np.asarray(asset.mesh.area_faces)
-    centres = np.asarray(asset.mesh.triangles_center)
-    lit = [(k, link, np.intersect1d(np.nonzero(mask)[0], asset.link_faces(link)))
-           for k, link in enumerate(asset.links)]
-    lit = [t for t in lit if len(t[2])]
-    lumens = FIXTURE_LUMENS.get(generator, DEFAULT_LUMENS) / len(lit)
-    for k, link, sel in lit:
-        a = areas[sel]
-        c = (centres[sel] * a[:, None]).sum(axis=0) / max(a.sum(), 1e-12)
-        radius = float(np.clip(math.sqrt(a.sum() / (4 * math.pi)), 0.005, 0.25))
-        parent = path if not asset.joints else path.AppendChild(sanitize_name(link))
-        light = UsdLux.SphereLight.Define(stage, parent.AppendChild(f"{owner}_light_{k}"))
-        light.CreateRadiusAttr(radius)
+    """A SphereLight `<owner>_light_<k>` at each emitter of `asset` (`export.lights`: bulbs,
+    diffusers, flames), together emitting the fixture's flux: normalized (UsdLux: luminance =
+    intensity x 2^exposure / area), so its flux is pi x intensity lumens whatever its radius."""
+    for e in emitters(asset, generator):
+        parent = path if not asset.joints else path.AppendChild(sanitize_name(e.link))
+        light = UsdLux.SphereLight.Define(stage, parent.AppendChild(f"{owner}_light_{e.index}"))
+        light.CreateRadiusAttr(e.radius)
         light.CreateNormalizeAttr(True)
-        light.CreateIntensityAttr(lumens / math.pi)
+        light.CreateIntensityAttr(e.lumens / math.pi)
         light.CreateExposureAttr(0.0)
-        light.CreateColorAttr(Gf.Vec3f(*LIGHT_COLOR))
-        light.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, c)))
+        light.CreateColorAttr(Gf.Vec3f(*COLOR))
+        light.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, e.centre)))
 
 
 def _set_pose(xf: UsdGeom.Xform, obj: SceneObject) -> None:
