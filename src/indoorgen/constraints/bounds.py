@@ -111,11 +111,25 @@ def _context_of(node: Node[Any]) -> Context | None:
                    params)
 
 
+def across(relation: Relation) -> bool:
+    """Whether `relation` places a child across the floor from its parent, front to front (a
+    sofa across from the TV stand): floor furniture that frames the room, placed with the large
+    stage rather than after it, so what the large stage adds cannot take its place."""
+    return (getattr(relation, "child", None) == Subpart.Front
+            and getattr(relation, "parent", None) == Subpart.Front
+            and getattr(relation, "margin", 0.0) >= ACROSS_MIN)
+
+
+#: the least front-to-front distance (m) that counts as "across the floor" (`across`)
+ACROSS_MIN = 1.0
+
+
 def context_stage(ctx: Context, parents: Parents, room_ids: frozenset[str]) -> str:
-    """large: on the room's floor only; medium: on walls/ceiling, or on the floor beside a
-    furniture parent; small: on or in other objects."""
+    """large: on the room's floor only, or across the floor from other furniture (`across`);
+    medium: on walls/ceiling, or on the floor beside a furniture parent; small: on or in other
+    objects."""
     on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in ctx.relations)
-    object_parent = any(any(p not in room_ids for p in ps) for _, ps in parents)
+    object_parent = any(any(p not in room_ids for p in ps) for r, ps in parents if not across(r))
     if object_parent:
         return "medium" if on_floor else "small"
     return "large" if on_floor else "medium"
@@ -146,7 +160,7 @@ def static_stage(node: Node[Any]) -> str | None:
     if not rels:
         return None
     on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in rels)
-    object_parent = any(not room for _, room in rels)
+    object_parent = any(not room for r, room in rels if not across(r))
     if object_parent:
         return "medium" if on_floor else "small"
     return "large" if on_floor else "medium"
