@@ -82,7 +82,7 @@ def _architecture_only(seed: int, floors: int, out) -> None:
 
 #: (storeys, seed) of cheap floorplans whose architecture MuJoCo refused before collision pieces
 #: were made sound (0.1 um slivers of floors and ceilings: "coplanar vertices")
-ARCHITECTURE_PLANS = [(2, 0), (2, 1), (2, 3), (1, 0), (1, 1)]
+ARCHITECTURE_PLANS = [(2, 6), (2, 8), (2, 11)]
 
 
 @pytest.mark.parametrize(("floors", "seed"), ARCHITECTURE_PLANS)
