@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
+from indoorgen.export.convex import sound_piece
 from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece
 from indoorgen.export.textures import TextureStore
 
@@ -190,7 +191,8 @@ class MeshFiles:
             mtl_text({ref.key: ref}, self.textures, d, {ref.key} if emissive else set()))
 
     def collisions(self, name: str) -> list[tuple[str, CollisionGeom]]:
-        """(link, geometry in the asset frame) of each convex piece of object `name`."""
+        """(link, geometry in the asset frame) of each convex piece of object `name`, made sound
+        (`convex.sound_piece`: slabs at least 1 mm thick, slivers left out)."""
         key = self.bundle.mesh_key(name)
         if key in self._collision:
             return self._collision[key]
@@ -199,7 +201,11 @@ class MeshFiles:
         d.mkdir(parents=True, exist_ok=True)
         out = []
         for i, (link, piece) in enumerate(asset.collision):
-            (geom,) = collision_geoms([piece], d, f"{link}_{i}", f"{MESH_DIR}/{d.name}")
+            sound = sound_piece(piece)
+            if sound is None:  # a sliver: no simulator can hull it
+                log.debug("%s: collision piece %d of %s dropped (a sliver)", name, i, link)
+                continue
+            (geom,) = collision_geoms([sound], d, f"{link}_{i}", f"{MESH_DIR}/{d.name}")
             out.append((link, geom))
         self._collision[key] = out
         return out
