@@ -44,6 +44,8 @@ log = logging.getLogger(__name__)
 
 TIMESTEP = 0.002
 FRICTION = "0.9 0.02 0.001"
+#: fewest vertices of a mesh MuJoCo accepts
+MIN_MESH_VERTICES = 4
 #: contact stiffness (time constant s, damping ratio): 5 steps, so a piece that starts a few mm
 #: inside another (a headboard under a window sill, a box in a tight shelf cell) is eased out
 #: instead of kicked out (2 steps, MuJoCo's stiffest, threw a bed and what lay on it 10-14 cm)
@@ -137,7 +139,8 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
            frame: np.ndarray) -> None:
     pos = _f(-frame)
     for vf in files.visuals(name):
-        if vf.link == link:
+        # a mesh of fewer than 4 vertices (a one-triangle label) is refused by MuJoCo
+        if vf.link == link and vf.vertices >= MIN_MESH_VERTICES:
             ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                          "material": assets.material(
                                              vf.material, vf.slot in EMISSIVE_SLOTS),

@@ -144,6 +144,8 @@ class VisualFile:
     material: MatRef
     slot: str
     link: str
+    #: distinct vertices in the file (MuJoCo refuses a mesh of fewer than 4)
+    vertices: int = 4
 
 
 class MeshFiles:
@@ -179,7 +181,8 @@ class MeshFiles:
                 ref = mats.get(slot) or next(iter(mats.values()))
                 stem = f"{link}_{slot}"
                 self._write_visual(d, stem, piece, ref, slot in EMISSIVE_SLOTS)
-                files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link))
+                files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link,
+                                        len(np.unique(piece.vertices, axis=0))))
         self._visual[key] = files
         return files
 
