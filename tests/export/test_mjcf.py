@@ -13,7 +13,7 @@ import pytest
 
 from indoorgen.architecture.solidify import solidify
 from indoorgen.export import write_formats
-from indoorgen.export.bundle import elements_from_architecture, make_bundle
+from indoorgen.export.bundle import ExportBundle, elements_from_architecture, make_bundle
 from indoorgen.export.convex import MIN_THICKNESS
 from indoorgen.export.stability import simulate, stability
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
@@ -69,7 +69,7 @@ def test_fixed_objects_are_welded(exported):
         assert has_free != bundle.is_fixed(o), o.name
 
 
-def _architecture_only(seed: int, floors: int, out) -> None:
+def _architecture_only(seed: int, floors: int, out) -> ExportBundle:
     """Export the bare architecture (parametric doors and stairs, no furniture) of a cheaply
     annealed floorplan of `seed` as MJCF into `out`: floors, ceilings and walls are where
     degenerate collision pieces come from (L-shaped rooms, stairwells)."""
@@ -78,6 +78,7 @@ def _architecture_only(seed: int, floors: int, out) -> None:
     scene = Scene(seed=seed)
     bundle = make_bundle(scene, {}, elements_from_architecture(scene, solidify(plan)))
     write_formats(bundle, out, "mjcf", texture_resolution=16)
+    return bundle
 
 
 #: (storeys, seed) of cheap floorplans whose architecture MuJoCo refused before collision pieces
@@ -87,7 +88,13 @@ ARCHITECTURE_PLANS = [(2, 6), (2, 8), (2, 11)]
 
 @pytest.mark.parametrize(("floors", "seed"), ARCHITECTURE_PLANS)
 def test_mujoco_compiles_every_architecture(floors, seed, tmp_path):
-    _architecture_only(seed, floors, tmp_path)
+    bundle = _architecture_only(seed, floors, tmp_path)
+    # the pieces fill the solid, no more: a hull over a ring of walls would swallow the room
+    for el in bundle.static_elements:
+        if el.kind in ("floor", "ceiling", "wall"):
+            solid = sum(part.mesh.volume for part in el.parts)
+            pieces = sum(p.volume for p in bundle.element_pieces(el))
+            assert np.isclose(pieces, solid, rtol=2e-3, atol=1e-6), el.path
     m = mujoco.MjModel.from_xml_path(str(tmp_path / "scene.xml"))
     collision = (m.geom_contype != 0) | (m.geom_conaffinity != 0)
     assert collision.sum() > 20
