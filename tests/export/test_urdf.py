@@ -105,3 +105,52 @@ def test_exported_urdf_collisions_are_the_asset_pieces(exported):
         for c in cols:
             kinds[c.tag] += 1
     assert kinds["box"] > 0 and kinds["mesh"] > 0
+
+
+def test_every_joint_has_limits_effort_velocity_and_damping(articulated):
+    _, d = articulated
+    joints = [j for f in _urdfs(d) for j in ET.parse(f).getroot().iter("joint")
+              if j.get("type") in ("revolute", "prismatic")]
+    assert joints
+    for j in joints:
+        lim, dyn = j.find("limit"), j.find("dynamics")
+        assert lim is not None and dyn is not None, j.get("name")
+        assert float(lim.get("upper")) > float(lim.get("lower"))
+        assert float(lim.get("effort")) > 0 and float(lim.get("velocity")) > 0
+        assert float(dyn.get("damping")) > 0
+
+
+def test_moving_parts_collision_follows_their_links(articulated, bullet):
+    """Opening a joint carries its link's collision shapes with it: a drawer's pieces slide
+    out by the joint's travel, a door's swing away from where they stood shut."""
+    bundle, d = articulated
+    moved = 0
+    for obj in bundle.objects:
+        b = pb.loadURDF(str(d / "urdf" / f"{obj.name}.urdf"), useFixedBase=True,
+                        physicsClientId=bullet)
+        for j in range(pb.getNumJoints(b, physicsClientId=bullet)):
+            info = pb.getJointInfo(b, j, physicsClientId=bullet)
+            if info[2] not in (pb.JOINT_REVOLUTE, pb.JOINT_PRISMATIC):
+                continue
+            lo, hi = info[8], info[9]
+            shut = np.array(pb.getAABB(b, j, physicsClientId=bullet))
+            pb.resetJointState(b, j, hi if abs(hi) >= abs(lo) else lo, physicsClientId=bullet)
+            opened = np.array(pb.getAABB(b, j, physicsClientId=bullet))
+            pb.resetJointState(b, j, 0.0, physicsClientId=bullet)
+            travel = np.abs(opened - shut).max()
+            if info[2] == pb.JOINT_PRISMATIC:
+                assert np.isclose(travel, max(abs(lo), abs(hi)), atol=0.02), info[1]
+            else:
+                assert travel > 0.01, info[1]
+            moved += 1
+    assert moved >= len(bundle.objects)
+
+
+@pytest.mark.xdist_group("export_homes")
+@pytest.mark.parametrize("home", ["home1", "home2"])
+def test_pybullet_loads_the_homes(exported_homes, home, bullet):
+    bundle, d = exported_homes[home]
+    body = pb.loadURDF(str(d / "scene.urdf"), useFixedBase=True, physicsClientId=bullet)
+    n_links = sum(len(bundle.assets[o.name].links) for o in bundle.objects) + 1 + len(
+        bundle.moving_elements)
+    assert pb.getNumJoints(body, physicsClientId=bullet) == n_links

@@ -150,7 +150,7 @@ def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
     segs = trimesh.intersections.mesh_plane(mesh, [0.0, 0.0, 1.0], [0.0, 0.0, z])
     if len(segs) == 0:
         return sg.Polygon()
-    segs = np.round(np.asarray(segs)[:, :, :2] / GRID) * GRID
+    segs = np.round(np.asarray(segs)[:, :, :2], 7)
     segs = segs[np.abs(segs[:, 0] - segs[:, 1]).max(axis=1) > 0]
     faces = list(shapely.polygonize(shapely.linestrings(segs)).geoms)
     if not faces:

@@ -32,16 +32,25 @@ from indoorgen.assets.protocol import Joint
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
-from indoorgen.export.physics import Inertial, matrix_to_quat
+from indoorgen.export.physics import (
+    DOOR_DAMPING,
+    JOINT_ARMATURE,
+    JOINT_DAMPING,
+    JOINT_FRICTION,
+    Inertial,
+    matrix_to_quat,
+)
 
 log = logging.getLogger(__name__)
 
 TIMESTEP = 0.002
-#: joint damping (N m s/rad or N s/m) and dry friction (N m or N) of doors, drawers and lids
-JOINT_DAMPING, JOINT_FRICTIONLOSS = 2.0, 0.5
-#: damping of a room door's hinge or slide (N m s/rad or N s/m): a heavy leaf swings slowly
-DOOR_DAMPING = 5.0
 FRICTION = "0.9 0.02 0.001"
+#: fewest vertices of a mesh MuJoCo accepts
+MIN_MESH_VERTICES = 4
+#: contact stiffness (time constant s, damping ratio): 5 steps, so a piece that starts a few mm
+#: inside another (a headboard under a window sill, a box in a tight shelf cell) is eased out
+#: instead of kicked out (2 steps, MuJoCo's stiffest, threw a bed and what lay on it 10-14 cm)
+SOLREF = f"{5 * TIMESTEP:g} 1"
 
 
 def _f(v) -> str:
@@ -122,8 +131,8 @@ def _joint(body: ET.Element, name: str, j: Joint, damping: float,
              "range": f"{j.lower:.6g} {j.upper:.6g}", "limited": "true"}
     if ref is not None:
         attrs["ref"] = f"{ref:.6g}"
-    attrs.update(damping=f"{damping:g}", frictionloss=f"{JOINT_FRICTIONLOSS:g}",
-                 armature="0.01")
+    attrs.update(damping=f"{damping:g}", frictionloss=f"{JOINT_FRICTION:g}",
+                 armature=f"{JOINT_ARMATURE:g}")
     ET.SubElement(body, "joint", attrs)
 
 
@@ -131,7 +140,8 @@ def _geoms(body: ET.Element, assets: _Assets, files: MeshFiles, name: str, link:
            frame: np.ndarray, collide: bool = True) -> None:
     pos = _f(-frame)
     for vf in files.visuals(name):
-        if vf.link == link:
+        # a mesh of fewer than 4 vertices (a one-triangle label) is refused by MuJoCo
+        if vf.link == link and vf.vertices >= MIN_MESH_VERTICES:
             ET.SubElement(body, "geom", {"class": "visual", "mesh": assets.mesh(vf.path, True),
                                          "material": assets.material(
                                              vf.material, vf.slot in EMISSIVE_SLOTS),
@@ -221,7 +231,7 @@ def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
                   density="0")
     col = ET.SubElement(default, "default", {"class": "collision"})
     ET.SubElement(col, "geom", type="mesh", group="3", density="0", friction=FRICTION,
-                  rgba="0.5 0.5 0.5 0.3", solref="0.004 1")
+                  rgba="0.5 0.5 0.5 0.3", solref=SOLREF)
     assets = _Assets(root, files)
     world = ET.SubElement(root, "worldbody")
     ET.SubElement(world, "light", name="sun", directional="true", pos="0 0 10",

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
+from indoorgen.export.convex import sound_piece
 from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece
 from indoorgen.export.textures import TextureStore
 
@@ -143,6 +144,8 @@ class VisualFile:
     material: MatRef
     slot: str
     link: str
+    #: distinct vertices in the file (MuJoCo refuses a mesh of fewer than 4)
+    vertices: int = 4
 
 
 class MeshFiles:
@@ -178,7 +181,8 @@ class MeshFiles:
                 ref = mats.get(slot) or next(iter(mats.values()))
                 stem = f"{link}_{slot}"
                 self._write_visual(d, stem, piece, ref, slot in EMISSIVE_SLOTS)
-                files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link))
+                files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link,
+                                        len(np.unique(piece.vertices, axis=0))))
         self._visual[key] = files
         return files
 
@@ -190,7 +194,8 @@ class MeshFiles:
             mtl_text({ref.key: ref}, self.textures, d, {ref.key} if emissive else set()))
 
     def collisions(self, name: str) -> list[tuple[str, CollisionGeom]]:
-        """(link, geometry in the asset frame) of each convex piece of object `name`."""
+        """(link, geometry in the asset frame) of each convex piece of object `name`, made sound
+        (`convex.sound_piece`: slabs at least 1 mm thick, slivers left out)."""
         key = self.bundle.mesh_key(name)
         if key in self._collision:
             return self._collision[key]
@@ -199,7 +204,11 @@ class MeshFiles:
         d.mkdir(parents=True, exist_ok=True)
         out = []
         for i, (link, piece) in enumerate(asset.collision):
-            (geom,) = collision_geoms([piece], d, f"{link}_{i}", f"{MESH_DIR}/{d.name}")
+            sound = sound_piece(piece)
+            if sound is None:  # a sliver: no simulator can hull it
+                log.debug("%s: collision piece %d of %s dropped (a sliver)", name, i, link)
+                continue
+            (geom,) = collision_geoms([sound], d, f"{link}_{i}", f"{MESH_DIR}/{d.name}")
             out.append((link, geom))
         self._collision[key] = out
         return out

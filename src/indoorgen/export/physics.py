@@ -22,6 +22,19 @@ from indoorgen.export.meshes import face_slot_names
 MIN_MASS = 1e-3
 MIN_INERTIA = 1e-7
 
+# Joints of moving parts, shared by the simulator exporters (MJCF, URDF):
+#: viscous damping of doors, drawers and lids (N m s/rad or N s/m): they stay where left
+JOINT_DAMPING = 2.0
+#: dry friction of doors, drawers and lids (N m or N): flaps stay shut under gravity
+JOINT_FRICTION = 0.5
+#: damping of a room door's hinge or slide (N m s/rad or N s/m): a heavy leaf swings slowly
+DOOR_DAMPING = 5.0
+#: rotor inertia added to every hinge and slide (kg m^2 or kg): light parts stay numerically
+#: stable at the 2 ms step
+JOINT_ARMATURE = 0.01
+#: effort (N m or N) and velocity (rad/s or m/s) limits of every joint: a hand's push
+JOINT_EFFORT, JOINT_VELOCITY = 50.0, 2.0
+
 
 @dataclass
 class Inertial:

@@ -24,18 +24,22 @@ from xml.etree import ElementTree as ET
 
 import numpy as np
 
+from indoorgen.assets.protocol import Joint
 from indoorgen.export.bundle import ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
-from indoorgen.export.physics import Inertial
+from indoorgen.export.physics import (
+    DOOR_DAMPING,
+    JOINT_DAMPING,
+    JOINT_EFFORT,
+    JOINT_FRICTION,
+    JOINT_VELOCITY,
+    Inertial,
+)
 
 log = logging.getLogger(__name__)
 
 URDF_DIR = "urdf"
-#: joint effort (N or N m) and velocity (m/s or rad/s) limits written for every joint
-EFFORT, VELOCITY = 50.0, 2.0
-#: joint damping (N m s/rad or N s/m) and friction (N m or N) of doors, drawers and lids
-DAMPING, FRICTION = 1.0, 0.1
 
 
 def _f(v) -> str:
@@ -92,6 +96,21 @@ def _collision(link: ET.Element, name: str, geom: CollisionGeom, offset: np.ndar
         ET.SubElement(geo, "mesh", filename=rel + geom.path)
 
 
+def _joint(robot: ET.Element, name: str, j: Joint, origin: np.ndarray, links: tuple[str, str],
+           limits: tuple[float, float], damping: float) -> None:
+    """A revolute or prismatic <joint> between `links` (parent, child) at `origin` (in the
+    parent's frame) along `j`'s axis, with `limits`, effort, velocity, damping and friction."""
+    je = ET.SubElement(robot, "joint", name=name, type=j.kind)
+    _origin(je, origin)
+    ET.SubElement(je, "parent", link=links[0])
+    ET.SubElement(je, "child", link=links[1])
+    axis = np.asarray(j.axis, float)
+    ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
+    ET.SubElement(je, "limit", lower=f"{limits[0]:.6g}", upper=f"{limits[1]:.6g}",
+                  effort=f"{JOINT_EFFORT:g}", velocity=f"{JOINT_VELOCITY:g}")
+    ET.SubElement(je, "dynamics", damping=f"{damping:g}", friction=f"{JOINT_FRICTION:g}")
+
+
 def _object_links(robot: ET.Element, bundle: ExportBundle, files: MeshFiles, name: str,
                   prefix: str, rel: str) -> None:
     """Links and joints of one object into `robot` (link names `prefix + link`)."""
@@ -104,15 +123,8 @@ def _object_links(robot: ET.Element, bundle: ExportBundle, files: MeshFiles, nam
     for j in asset.joints:
         if j.child not in frames or j.parent not in frames:
             continue
-        je = ET.SubElement(robot, "joint", name=prefix + j.name, type=j.kind)
-        _origin(je, frames[j.child] - frames[j.parent])
-        ET.SubElement(je, "parent", link=prefix + j.parent)
-        ET.SubElement(je, "child", link=prefix + j.child)
-        axis = np.asarray(j.axis, float)
-        ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
-        ET.SubElement(je, "limit", lower=f"{j.lower:.6g}", upper=f"{j.upper:.6g}",
-                      effort=f"{EFFORT:g}", velocity=f"{VELOCITY:g}")
-        ET.SubElement(je, "dynamics", damping=f"{DAMPING:g}", friction=f"{FRICTION:g}")
+        _joint(robot, prefix + j.name, j, frames[j.child] - frames[j.parent],
+               (prefix + j.parent, prefix + j.child), (j.lower, j.upper), JOINT_DAMPING)
 
 
 def _element_geometry(link: ET.Element, e: ArchElement, files: MeshFiles, offset: np.ndarray,
@@ -144,16 +156,8 @@ def _architecture_link(robot: ET.Element, name: str, bundle: ExportBundle, files
         inertial = bundle.element_inertial(e)
         _inertial(link, inertial, origin)
         _element_geometry(link, e, files, -origin, rel)
-        je = ET.SubElement(robot, "joint", name=f"{e.parent}__{j.name}", type=j.kind)
-        _origin(je, origin)
-        ET.SubElement(je, "parent", link=name)
-        ET.SubElement(je, "child", link=lname)
-        axis = np.asarray(j.axis, float)
-        ET.SubElement(je, "axis", xyz=_f(axis / np.linalg.norm(axis)))
-        ET.SubElement(je, "limit", lower=f"{j.lower - e.joint_value:.6g}",
-                      upper=f"{j.upper - e.joint_value:.6g}", effort=f"{EFFORT:g}",
-                      velocity=f"{VELOCITY:g}")
-        ET.SubElement(je, "dynamics", damping=f"{DAMPING:g}", friction=f"{FRICTION:g}")
+        _joint(robot, f"{e.parent}__{j.name}", j, origin, (name, lname),
+               (j.lower - e.joint_value, j.upper - e.joint_value), DOOR_DAMPING)
 
 
 def _write(robot: ET.Element, path: Path) -> None:
