@@ -52,14 +52,17 @@ class Emitter:
         return self.lumens / (4 * math.pi)
 
 
+def emissive_faces(asset: Asset) -> np.ndarray:
+    """Whether each face of `asset` glows (an emissive slot: bulbs, diffusers, flames)."""
+    slots = [i for i, s in enumerate(asset.slots) if s in EMISSIVE_SLOTS]
+    return np.isin(face_slot_names(asset), slots)
+
+
 def emitters(asset: Asset, generator: str = "") -> list[Emitter]:
     """One `Emitter` per link of `asset` with emissive faces, in link order (`index` is the
     link's position, as USD names its lights `light_<index>`), sharing the flux of a
     `generator` fixture."""
-    slots = [i for i, s in enumerate(asset.slots) if s in EMISSIVE_SLOTS]
-    if not slots:
-        return []
-    lit = np.nonzero(np.isin(face_slot_names(asset), slots))[0]
+    lit = np.nonzero(emissive_faces(asset))[0]
     if len(lit) == 0:
         return []
     areas = np.asarray(asset.mesh.area_faces)

@@ -11,8 +11,8 @@ import numpy as np
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdPhysics
 
 from indoorgen.assets.protocol import Asset, Joint
-from indoorgen.export.bundle import EMISSIVE_SLOTS, ExportBundle, MatRef
-from indoorgen.export.lights import COLOR, emitters
+from indoorgen.export.bundle import ExportBundle, MatRef
+from indoorgen.export.lights import COLOR, emissive_faces, emitters
 from indoorgen.export.meshes import corner_normals, corner_uv, face_slot_names
 from indoorgen.export.physics import Inertial, matrix_to_quat, quat_between
 from indoorgen.export.usd.materials import Looks, bind_slots
@@ -222,16 +222,10 @@ def _joint_drive(j: Joint, child: Inertial) -> dict[str, float]:
             "damping": max(damping, 2.0 * math.sqrt(stiffness * inertia))}
 
 
-def _emissive_faces(asset: Asset) -> np.ndarray:
-    """Whether each face of `asset` glows (an emissive slot: bulbs, diffusers, flames)."""
-    emissive = [i for i, s in enumerate(asset.slots) if s in EMISSIVE_SLOTS]
-    return np.isin(face_slot_names(asset), emissive)
-
-
 def _body_name(name: str, asset: Asset) -> str:
     """The render mesh's name of a one-piece object: the object's, or `<name>_body` beside its
     lights (an importer then keeps the object's name for the Xform holding both)."""
-    return f"{name}_body" if _emissive_faces(asset).any() else name
+    return f"{name}_body" if emissive_faces(asset).any() else name
 
 
 def _write_lights(stage: Usd.Stage, path: Sdf.Path, owner: str, asset: Asset,
