@@ -3,6 +3,7 @@ resumed ends with every seed done once and nothing half-written; a scene over it
 memory limit is killed and recorded, and the batch goes on."""
 from __future__ import annotations
 
+import json
 import os
 import signal
 import subprocess
@@ -15,7 +16,7 @@ from indoorgen.batch.dataset import make_dataset
 from indoorgen.batch.manifest import read_manifest
 from indoorgen.cli.batch import generate_options
 from indoorgen.cli.generate import run_generate
-from support.batch import GENERATE, batch
+from support.batch import GENERATE, batch, record_blas_threads
 from support.cli import CLI
 
 pytestmark = pytest.mark.xdist_group("batch")
@@ -55,3 +56,13 @@ def test_a_scene_over_its_time_or_memory_limit_is_killed_and_recorded(tmp_path):
     assert rec["status"] == "failed" and "--max-memory-per-worker" in rec["reason"]
     assert read_manifest(tmp_path / "t")[0]["status"] == "timeout"
     assert not [p for p in tmp_path.rglob(".*") if p.name != ".indoorgen-outputs.json"]
+
+
+def test_each_scene_runs_with_one_blas_thread(tmp_path):
+    """A batch's parallelism is its workers: a scene's process keeps BLAS to one thread, so two
+    workers on two cores do not spin on each other's core."""
+    s = make_dataset(tmp_path / "d", [0, 1], record_blas_threads, {}, workers=2, progress=False)
+    assert s["ok"] == 2
+    for seed in (0, 1):
+        pools = json.loads((tmp_path / "d" / "scenes" / str(seed) / "blas_threads.json").read_text())
+        assert pools and set(pools) == {1}

@@ -1,8 +1,13 @@
 """What the batch tests share: the cheapest generate options and a program failing for one seed."""
 from __future__ import annotations
 
+import argparse
 import contextlib
 import io
+import json
+from pathlib import Path
+
+from threadpoolctl import threadpool_info
 
 from indoorgen.cli import main
 
@@ -36,3 +41,14 @@ def batch(*args: str) -> tuple[int, str]:
     with contextlib.redirect_stdout(out):
         code = main(["batch", *args])
     return code, out.getvalue()
+
+
+def record_blas_threads(args: argparse.Namespace) -> int:
+    """A batch entry that writes, instead of a scene, how many threads each native BLAS pool
+    of its process has (`blas_threads.json`) and a report of no objects."""
+    out = Path(args.out)
+    out.mkdir(parents=True)
+    pools = [pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas"]
+    (out / "blas_threads.json").write_text(json.dumps(pools))
+    (out / "report.json").write_text(json.dumps({"objects": 0}))
+    return 0

@@ -27,6 +27,8 @@ from multiprocessing.process import BaseProcess
 from pathlib import Path
 from typing import Any
 
+from threadpoolctl import threadpool_limits
+
 from indoorgen.batch.jobs import Entry, record, run_scene, scene_dir
 from indoorgen.errors import SchedulerError
 from indoorgen.outputs import clean_stale
@@ -35,6 +37,11 @@ log = logging.getLogger(__name__)
 
 #: how often the parent looks at its children's memory and clocks (seconds)
 POLL_S = 0.25
+#: native threads (OpenBLAS's pool) per scene's process. A batch's parallelism is its workers, as
+#: with Dask, whose workers set OMP/MKL/OPENBLAS_NUM_THREADS=1: a scene's small matrix products gain
+#: nothing from a second thread, whose spinning took ~20% more CPU per scene and ate the other
+#: worker's core (a 2-worker batch ran 1.68x a 1-worker one; see benchmarks/batch.py)
+SCENE_THREADS = 1
 #: the page size /proc/<pid>/statm counts in
 _PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
 
@@ -66,9 +73,11 @@ class _Child:
 
 
 def _child_main(job: SceneJob, seed: int, conn: Connection) -> None:
-    """In the child: generate one scene and send its record to the parent."""
+    """In the child: generate one scene, with native thread pools (BLAS) of one thread, and
+    send its record to the parent."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
-    conn.send(run_scene(job.entry, job.options, seed, job.scenes))
+    with threadpool_limits(limits=SCENE_THREADS):
+        conn.send(run_scene(job.entry, job.options, seed, job.scenes))
     conn.close()
 
 
