@@ -21,6 +21,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
 
 import shapely.geometry as sg
+from threadpoolctl import threadpool_limits
 from tqdm import tqdm
 
 from indoorgen.assets import Asset
@@ -53,7 +54,10 @@ def solve_rooms(geometry: Mapping[str, RoomShape], make_problem: Callable[[str],
     ctx.set_forkserver_preload(PRELOAD)
     solutions: list[RoomSolution] = []
     full: FullAssets = []
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+    # the pool's parallelism is its processes: one BLAS thread each, not one spinning on the
+    # other worker's core (as `batch.runner` runs its scenes)
+    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx, initializer=threadpool_limits,
+                             initargs=(1,)) as pool:
         futures = [pool.submit(solve_one, dict(geometry), make_problem, room, seed, config, steps)
                    for room in order]
         for fut in tqdm(as_completed(futures), total=len(futures), desc="solving", unit="room",
