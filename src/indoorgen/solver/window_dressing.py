@@ -38,8 +38,10 @@ ROD_ABOVE = (0.1, 0.15)
 OVERLAPS = ((0.1, 0.25), (0.04, 0.08))
 #: a floor-length hem's gap over the floor (m: 1-2 cm, "just kissing the floor" clear of rugs)
 HEM_FLOOR = 0.02
-#: a sill-length hem this far below the window's frame (m)
+#: a sill-length hem this far below the window's frame (m), or, over furniture reaching higher,
+#: just under the frame (to the sill)
 HEM_SILL = 0.1
+HEM_AT_SILL = 0.01
 #: the fabric stays this far in front of the frame's face (m)
 FRAME_CLEAR = 0.015
 #: window walls are found within this distance of the window's box (m)
@@ -89,7 +91,8 @@ def _window_wall(walls: list[Surface], bounds: np.ndarray) -> Surface | None:
 def _sizes(base: dict, bounds: np.ndarray, wall: Surface, floor: float,
            rng: np.random.Generator) -> list[tuple[dict, float]]:
     """The sizes to try, largest first: (params, hem height over the floor) for a floor-length
-    and a sill-length curtain, each with a wide and then a narrow overlap past the frame."""
+    curtain, one below the sill and one to the sill, each with a wide and then a narrow overlap
+    past the frame."""
     corners = np.array([[x, y, z] for x in bounds[:, 0] for y in bounds[:, 1] for z in bounds[:, 2]])
     depth = float(np.max((corners - wall.origin) @ wall.normal))  # the frame's reach into the room
     width = float(np.ptp((corners - wall.origin) @ wall.u))
@@ -97,10 +100,10 @@ def _sizes(base: dict, bounds: np.ndarray, wall: Surface, floor: float,
     rod = z1 + float(rng.uniform(*ROD_ABOVE))
     overlap = [float(rng.uniform(*o)) for o in OVERLAPS]
     out = []
-    for hem in (HEM_FLOOR, max(HEM_FLOOR, z0 - HEM_SILL)):
+    for hem in (HEM_FLOOR, max(HEM_FLOOR, z0 - HEM_SILL), max(HEM_FLOOR, z0 - HEM_AT_SILL)):
         for o in overlap:
             p = dict(base, n_panels=2, width=min(3.0, max(1.0, width + 2 * o)),
-                     drop=min(2.6, max(1.4, rod - hem)))
+                     drop=min(2.6, max(1.0, rod - hem)))
             # the fabric's folds clear the frame: the rod's standoff is the frame's depth plus
             # the folds' half depth and a margin
             amp = p["fold_depth"] / 2
