@@ -21,6 +21,7 @@ from indoorgen.architecture.room import RoomGeometry, build_room, place_door, re
 from indoorgen.architecture.solidify import room_geometries, solidify
 from indoorgen.assets import Asset
 from indoorgen.assets.cache import AssetCache
+from indoorgen.assets.materials import check_style, draw_style
 from indoorgen.constraints.evaluator import Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.sets import scene as scene_set
@@ -95,6 +96,12 @@ def stage_steps(preset: Preset, steps: dict[str, int] | None) -> dict[str, int]:
     return {**preset.steps, **(steps or {})}
 
 
+def home_style(seed: int, style: str | None) -> str:
+    """The home style the scene's furniture materials are drawn from: `style` if given (checked),
+    else drawn once per scene from the seed's own stream (`assets.materials.styles`)."""
+    return check_style(style) if style is not None else draw_style(stream(seed, "style"))
+
+
 def scene_fullness(seed: int, preset: Preset) -> float:
     """How full this scene's furniture is: drawn once per scene from the seed's own stream
     within the preset's range (some homes sparse, some cluttered)."""
@@ -115,9 +122,12 @@ class GenerateConfig:
     check: bool = False
     program: Callable[..., Problem] | None = None
     preset: str = "default"
+    #: the home style (`assets.materials.STYLES`); None: drawn from the seed
+    style: str | None = None
 
     def to_json(self) -> dict:
-        """The settings as recorded in scene.json (the program by name)."""
+        """The settings as recorded in scene.json (the program by name; `generate` adds the
+        style, given or drawn)."""
         return {"room_type": self.room_type,
                 "size": list(self.size) if self.size else None,
                 "polygon": [list(p) for p in self.polygon] if self.polygon else None,
@@ -198,8 +208,9 @@ def generate(seed: int = 0, config: GenerateConfig | None = None, *, progress: b
     program = cfg.program or get_program(cfg.room_type, fullness)
     problems = {room.name: _problem(program, room.name)}
     timings = {"architecture": time.perf_counter() - t0}
+    recorded = {**cfg.to_json(), "style": home_style(seed, cfg.style)}
     try:
-        gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
+        gen = _furnish(seed, geometry, problems, recorded, timings,
                        steps=stage_steps(preset, cfg.steps), check=cfg.check,
                        progress=progress)
     except IndoorGenError as e:  # a custom program's fault is named with the program
@@ -232,6 +243,9 @@ class HomeConfig:
     #: processes solving rooms in parallel (1: in this process). Not recorded in scene.json:
     #: any number gives the same scene, byte for byte.
     workers: int = 1
+    #: the home style (`assets.materials.STYLES`) every room's furniture draws its materials
+    #: from; None: drawn from the seed
+    style: str | None = None
 
     def to_json(self) -> dict:
         """The settings as recorded in scene.json (a predefined floorplan as a flag; not the
@@ -249,6 +263,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     furnished by its program. Same seed + config + version => same scene."""
     cfg = config or HomeConfig()
     check_door_mode(cfg.doors)
+    style = home_style(seed, cfg.style)
     if isinstance(cfg.workers, bool) or not isinstance(cfg.workers, int) or cfg.workers < 1:
         raise ConfigError(f"workers must be a positive integer, got {cfg.workers!r}")
     preset = get_preset(cfg.preset)
@@ -267,7 +282,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     problems = {name: _home_problem(g.room.room_type, fullness, name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
     timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
-    gen = _furnish(seed, geometry, problems, cfg.to_json(), timings,
+    gen = _furnish(seed, geometry, problems, {**cfg.to_json(), "style": style}, timings,
                    steps=stage_steps(preset, cfg.steps), check=cfg.check,
                    progress=progress, workers=cfg.workers,
                    make_problem=functools.partial(_room_problem, _room_types(geometry),

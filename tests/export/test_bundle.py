@@ -3,9 +3,11 @@ hang fixed, the architecture's elements."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets import get_factory
+from indoorgen.assets.materials import STYLES, materials_in_family
 from indoorgen.export.bundle import (
     MatRef,
     elements_from_rooms,
@@ -75,3 +77,19 @@ def test_a_rooms_elements_are_its_floor_ceiling_and_walls():
     assert [e.parts[0].material for e in again] == [e.parts[0].material for e in els]
     mats = {e.parts[0].material for e in els if e.kind == "wall"}
     assert len(mats) == 1  # every wall of a room in the same material
+
+
+@pytest.mark.xdist_group("export_homes")
+def test_a_homes_curtains_hang_fixed_and_its_furniture_shares_one_style(exported_homes):
+    bundle, d = exported_homes["home1"]
+    curtains = [o for o in bundle.scene.objects.values() if o.generator == "curtain"]
+    assert curtains, "a home's living room and bedrooms have windows with curtains"
+    mjcf = (d / "scene.xml").read_text()
+    for c in curtains:  # fixed (every format's exporter asks is_fixed): no free body in MJCF
+        assert bundle.is_fixed(c) and f"{c.name}__free" not in mjcf
+    style = bundle.scene.style
+    assert style in STYLES
+    woods = [r.name for refs in bundle.materials.values() for slot, r in refs.items()
+             if r.name in materials_in_family("wood")]
+    in_style = sum(w in STYLES[style]["wood"] for w in woods)
+    assert woods and in_style >= 0.9 * len(woods), (style, sorted(set(woods)))

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from indoorgen.architecture.doors import DOOR_MODES, check_door_mode
+from indoorgen.assets.materials import check_style, style_names
 from indoorgen.constraints.problem import Problem
 from indoorgen.errors import ConfigError, IndoorGenError
 from indoorgen.export import parse_formats
@@ -64,6 +65,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
                    help="export formats: usd,usda,usdc,usdz,urdf,mjcf,glb,obj")
     g.add_argument("--preset", default="default",
                    help="time for density: " + ", ".join(PRESETS) + " (default: default)")
+    g.add_argument("--style", default=None,
+                   help="the home style furniture materials come from: " + ", ".join(style_names())
+                   + " (default: drawn from the seed)")
     g.add_argument("--check", action="store_true",
                    help="verify incremental constraint evaluation against full (slow)")
     g.add_argument("--nav-image", action="store_true",
@@ -150,6 +154,8 @@ def check_options(args: argparse.Namespace) -> tuple[list[str], GenerateConfig |
     the export formats and the room's or the home's configuration; ConfigError if one is bad."""
     formats = parse_formats(args.formats)
     get_preset(args.preset)  # a bad name fails here, before any work
+    if args.style is not None:
+        check_style(args.style)
     if not 0 <= args.seed <= MAX_SEED:
         raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
     if args.workers < 1:
@@ -202,7 +208,7 @@ def _room_config(args: argparse.Namespace) -> GenerateConfig:
     cfg = GenerateConfig(room_type=args.room or "living_room",
                          size=tuple(args.size) if args.size else None,
                          program=_load_program(args.program) if args.program else None,
-                         check=args.check, preset=args.preset)
+                         check=args.check, preset=args.preset, style=args.style)
     if args.polygon:
         data = read_json_text(args.polygon, "--polygon", "polygon")
         room = parse(RoomPolygon, {"polygon": data}, "--polygon")
@@ -218,4 +224,4 @@ def _home_config(args: argparse.Namespace) -> HomeConfig:
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
                       floorplan=plan, check=args.check, doors=args.doors or "open",
-                      preset=args.preset, workers=args.workers)
+                      preset=args.preset, workers=args.workers, style=args.style)

@@ -1,5 +1,5 @@
 """`Problem`: one room's constraint program, named hard constraints and named soft score terms,
-and the matching sets whose members share one design."""
+the matching sets whose members share one design, and the dressing hung at its windows."""
 from __future__ import annotations
 
 from indoorgen.constraints.logic import Constraint
@@ -11,14 +11,18 @@ from indoorgen.errors import ConstraintError
 class Problem:
     """Named hard constraints, named soft score terms and named matching sets: one room's
     constraint program. A matching set (the chairs at a table, the nightstands at a bed) is a set
-    whose members the solver makes alike: one generator, params and material seed."""
+    whose members the solver makes alike: one generator, params and material seed. The language
+    knows no windows: `window_dressing` names the generator (a curtain) the solver hangs at each
+    of the room's windows once its furniture stands (`solver.window_dressing`), or None."""
 
     def __init__(self, constraints: dict[str, Constraint] | None = None,
                  score_terms: dict[str, ScoreTerm] | None = None,
-                 matching: dict[str, ObjSet] | None = None):
+                 matching: dict[str, ObjSet] | None = None,
+                 window_dressing: str | None = None):
         self.constraints = dict(constraints or {})
         self.score_terms = dict(score_terms or {})
         self.matching = dict(matching or {})
+        self.window_dressing = window_dressing
         for name, c in self.constraints.items():
             if not isinstance(c, Constraint):
                 raise ConstraintError(f"constraint {name!r} is not a constraint expression "
@@ -35,4 +39,5 @@ class Problem:
     def __add__(self, other: Problem) -> Problem:
         return Problem({**self.constraints, **other.constraints},
                        {**self.score_terms, **other.score_terms},
-                       {**self.matching, **other.matching})
+                       {**self.matching, **other.matching},
+                       other.window_dressing or self.window_dressing)

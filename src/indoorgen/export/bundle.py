@@ -213,16 +213,18 @@ def texture_seed(material: str, variant: int) -> int:
     return (zlib.crc32(material.encode()) + 7919 * int(variant)) % 100_000
 
 
-def object_materials(obj: SceneObject, asset: Asset, variants: int = 1) -> dict[str, MatRef]:
+def object_materials(obj: SceneObject, asset: Asset, variants: int = 1,
+                     style: str | None = None) -> dict[str, MatRef]:
     """One `MatRef` per slot of `asset`, deterministic from `obj.seed`: the material name from
-    `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices)`, the texture
-    variant from the same stream (`variants` distinct textures per material in a scene)."""
+    `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices, style)` (the
+    scene's home style), the texture variant from the same stream (`variants` distinct textures
+    per material in a scene)."""
     try:
         overrides = get_factory(obj.generator).material_choices
     except Exception:  # an unregistered generator: library defaults
         overrides = {}
     rng = np.random.default_rng(int(obj.seed))
-    names = choose_materials(list(asset.slots), rng, overrides)
+    names = choose_materials(list(asset.slots), rng, overrides, style)
     out = {}
     for slot, mat in names.items():
         v = int(rng.integers(variants)) if variants > 1 else 0
@@ -239,12 +241,13 @@ PART_SLOTS = {"floor": "floor", "wall": "wall", "walls": "wall", "ceiling": "cei
               "flight": "wood", "rail": "metal"}
 
 
-def _room_materials(seed: int, room: str) -> dict[str, MatRef]:
+def _room_materials(scene: Scene, room: str) -> dict[str, MatRef]:
     """Floor, wall, ceiling, door, frame, glass, wood and metal materials of one room, drawn
-    from the scene seed and the room name (the same room always looks the same)."""
-    rng = np.random.default_rng([int(seed), zlib.crc32(room.encode())])
+    from the scene seed and the room name (the same room always looks the same), the doors' and
+    frames' woods and metals in the home's style."""
+    rng = np.random.default_rng([int(scene.seed), zlib.crc32(room.encode())])
     slots = ["floor", "wall", "ceiling", "door", "frame", "glass", "wood", "metal"]
-    names = choose_materials(slots, rng)
+    names = choose_materials(slots, rng, style=scene.style)
     return {s: MatRef(m, texture_seed(m, 0)) for s, m in names.items()}
 
 
@@ -253,7 +256,7 @@ def elements_from_rooms(scene: Scene, rooms: dict) -> list[ArchElement]:
     /World/Architecture/<room>/{floor, ceiling, wall_<i>})."""
     out = []
     for room_name, geo in rooms.items():
-        mats = _room_materials(scene.seed, room_name)
+        mats = _room_materials(scene, room_name)
         parts = [("floor", "floor", geo.floor), ("ceiling", "ceiling", geo.ceiling)]
         walls = list(geo.walls)
         parts += [(f"wall_{i}", "wall", w) for i, w in enumerate(walls)]
@@ -270,7 +273,7 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
     under storey_<k>/{doors, windows} or stairs/."""
     out: list[ArchElement] = []
     for room_name, geo in arch.rooms.items():
-        mats = _room_materials(scene.seed, room_name)
+        mats = _room_materials(scene, room_name)
         storey = f"storey_{getattr(geo, 'storey', 0)}"
         parts = [("floor", "floor", geo.floor), ("ceiling", "ceiling", geo.ceiling)]
         parts += [(f"walls_{i}" if i else "walls", "wall", w) for i, w in enumerate(geo.walls)]
@@ -281,7 +284,7 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
                                    [kind, "architecture"]))
     groups = {"door": "doors", "entrance": "doors", "window": "windows"}
     for el in arch.elements:
-        mats = _room_materials(scene.seed, el.room or "home")
+        mats = _room_materials(scene, el.room or "home")
         path: tuple[str, ...]
         if el.kind in ("stair", "railing"):
             path = ("stairs", el.name)
@@ -313,7 +316,8 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
 def make_bundle(scene: Scene, assets: dict[str, Asset], elements: list[ArchElement], *,
                 variants: int = 1, room_types: dict[str, str] | None = None) -> ExportBundle:
     """A bundle from its parts; per-object materials are drawn here (see `object_materials`)."""
-    mats = {n: object_materials(scene.objects[n], a, variants) for n, a in assets.items()
+    mats = {n: object_materials(scene.objects[n], a, variants, scene.style)
+            for n, a in assets.items()
             if n in scene.objects}
     types = {r.name: r.room_type for r in scene.rooms.values()}
     types.update(room_types or {})

@@ -234,6 +234,13 @@ class Scene:
     #: hinge), so a re-export stands every leaf where it stood; None for a single room
     doors: dict[str, float] | None = None
 
+    @property
+    def style(self) -> str | None:
+        """The home style its furniture's materials are drawn from (`config.style`; None in a
+        scene written before styles, whose materials are drawn unstyled)."""
+        style = self.config.get("style")
+        return style if isinstance(style, str) else None
+
     def add_object(self, obj: SceneObject) -> None:
         """Add (or replace) `obj`, keyed by its name."""
         self.objects[obj.name] = obj

@@ -150,6 +150,7 @@ class Semantics(str, Enum):
     CuttingBoard = "cutting_board"
     FruitBowl = "fruit_bowl"
     Towel = "towel"
+    BathMat = "bath_mat"
     FoldedClothes = "folded_clothes"
     Shoes = "shoes"
     Laptop = "laptop"

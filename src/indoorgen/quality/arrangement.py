@@ -195,12 +195,12 @@ def dining_chairs_face_table(ctx: Context) -> list[Check]:
     return out
 
 
-def design(p: Placed) -> str:
-    """An object's design: its generator, params and the materials its seed draws (what makes two
-    objects look identical)."""
+def design(p: Placed, style: str | None = None) -> str:
+    """An object's design: its generator, params and the materials its seed draws in the home's
+    `style` (what makes two objects look identical)."""
     fac = get_factory(p.obj.generator)
     mats = choose_materials(list(p.asset.slots), np.random.default_rng(p.obj.seed),
-                            fac.material_choices)
+                            fac.material_choices, style)
     return json.dumps([p.obj.generator, p.obj.params, mats], sort_keys=True, default=str)
 
 
@@ -221,7 +221,7 @@ def matching_sets(ctx: Context) -> list[Check]:
     for (room, anchor), members in sorted(groups.items()):
         if len(members) < 2:
             continue
-        k = len({design(m) for m in members})
+        k = len({design(m, ctx.scene.style) for m in members})
         out.append(Check(room, (anchor, *sorted(m.name for m in members)), float(k), 1, k == 1))
     return out
 

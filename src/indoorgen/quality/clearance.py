@@ -31,6 +31,7 @@ from indoorgen.solver.keep_free import (
     TOILET_FRONT,
     TOILET_SIDE,
     WIDE_FRONTS,
+    WINDOW_DRESSINGS,
     WINDOW_TALL,
     open_limit,
     spins_in_place,
@@ -157,9 +158,10 @@ def joint_sweep(ctx: Context) -> list[Check]:
 
 @rule("windows_keep_out")
 def windows_keep_out(ctx: Context) -> list[Check]:
-    """No floor object taller than 1.0 m and nothing hung on the wall (curtains aside) stands
-    before a window opening, at its height; value: the longest overlap along the window (m).
-    Only for a home (windows come from its architecture)."""
+    """No floor object taller than 1.0 m and nothing hung on the wall (window dressings aside:
+    curtains hang there on purpose, `WINDOW_DRESSINGS`) stands before a window opening, at its
+    height; value: the longest overlap along the window (m). Only for a home (windows come from
+    its architecture)."""
     if ctx.architecture is None:
         return []
     out = []
@@ -172,7 +174,7 @@ def windows_keep_out(ctx: Context) -> list[Check]:
         hits: list[tuple[str, float]] = []
         for q in ctx.in_room(e.room):
             tall = on_floor(q.obj) and q.top - q.floor > WINDOW_TALL
-            hung = is_wall_hung(q.obj) and not q.has(S.Curtain)
+            hung = is_wall_hung(q.obj) and not q.has(*WINDOW_DRESSINGS)
             if not (tall or hung) or q.top <= z0 or q.bottom >= z1:
                 continue
             inter = q.footprint.intersection(zone)

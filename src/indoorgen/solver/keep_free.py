@@ -44,10 +44,15 @@ OBSTACLE_BAND = (0.05, 1.2)
 BAND_MARGIN = 0.02
 #: storage with no front to keep clear
 UNFRONTED = (Semantics.Box, Semantics.WallMounted, Semantics.SmallObject)
-#: windows keep out floor objects taller than this (m) and anything hung on their wall (curtains
-#: aside), over this depth either side of the opening (m)
+#: windows keep out floor objects taller than this (m) and anything hung on their wall (window
+#: dressings aside), over this depth either side of the opening (m)
 WINDOW_TALL = 1.0
 WINDOW_DEPTH = 0.3
+#: window dressings: what is hung at a window on purpose. The zone keeps light and the window's
+#: use free of furniture and of things hung on its wall (art, shelves, cabinets); a curtain is
+#: sized to its window and hung over and beside it, drawn open to the sides, so it belongs in the
+#: zone and is exempt from it (the solver's `window_bound`, the report's `windows_keep_out`)
+WINDOW_DRESSINGS = frozenset({Semantics.Curtain})
 #: a sweep volume is inset this much on each side (m): an opened part may touch a wall or an
 #: object (the report allows 5 mm), and a part built flush on the floor must not hit the floor
 SWEEP_INSET = 0.004

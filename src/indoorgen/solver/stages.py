@@ -23,6 +23,7 @@ from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.circulation import with_circulation
 from indoorgen.solver.state import ObjState, State
+from indoorgen.solver.window_dressing import dress_windows
 
 log = logging.getLogger(__name__)
 
@@ -73,6 +74,9 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
         log.info("%s/%s: %d objects, violation %.3g, loss %.3g in %.2fs", room, stage,
                  st.objects, st.violation, st.loss, st.seconds)
         stats.append(st)
+    if problem.window_dressing:  # hung once the furniture stands, sized to each window
+        dress_windows(state, room, problem.window_dressing,
+                      stream(seed, "room", room, "solve", "windows"), namer)
     mine = [n for n, ob in state.objects.items() if ob.room == room]
     objects = [_detached(state.objects[n]) for n in mine]
     for n in reversed(mine):

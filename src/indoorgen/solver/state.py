@@ -33,7 +33,13 @@ from indoorgen.solver.broadphase import (
     Broadphase,
     world_boxes,
 )
-from indoorgen.solver.keep_free import WINDOW_TALL, keep_free_volumes, window_volume, yields
+from indoorgen.solver.keep_free import (
+    WINDOW_DRESSINGS,
+    WINDOW_TALL,
+    keep_free_volumes,
+    window_volume,
+    yields,
+)
 
 #: height of door clearance keep-out volumes (m)
 DOOR_ZONE_HEIGHT = 2.0
@@ -442,14 +448,15 @@ class State:
 
     def _window_bound(self, ob: ObjState) -> bool:
         """Must the object keep out of window zones: furniture standing on the floor taller than
-        `WINDOW_TALL`, or anything hung on a wall but a curtain (the report's window rule)?"""
+        `WINDOW_TALL`, or anything hung on a wall but a window dressing (the report's window
+        rule)?"""
         if not ob.placements or ob.placements[0].parent != ob.room:
             return False
         surface = ob.placements[0].parent_surface
         if surface == "floor":  # its top over the floor, as the rule measures it
             top = float(ob.position[2] + ob.asset.mesh.bounds[1][2]) - self.floor_z(ob.name)
             return top > WINDOW_TALL
-        return surface.startswith("wall_") and Semantics.Curtain not in ob.tags
+        return surface.startswith("wall_") and not WINDOW_DRESSINGS & ob.tags
 
 
 def keep_out_prisms(zone: sg.Polygon, z0: float, z1: float) -> list[trimesh.Trimesh]:

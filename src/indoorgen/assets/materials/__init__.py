@@ -8,9 +8,10 @@ generated in numpy from a seed and documented parameters (no textures, no Blende
     uv_scale = 1.0 / maps.tile_size_m                    # metre UVs -> texture repeats
 
 Modules: `base` (protocol, registry, bake, save_maps), `noise` (periodic building blocks),
-`color`, `slots` (slot -> material choices) and one module per group of families: `wood`,
-`metal`, `stone`, `tiles` (tile, brick), `textile` (fabric, leather, carpet), `surfaces`
-(ceramic, glass, plastic, rubber, cork, plaster) and `paper` (paper, wallpaper).
+`color`, `slots` (slot -> material choices), `styles` (a home's woods, metals and fabrics) and
+one module per group of families: `wood`, `metal`, `stone`, `tiles` (tile, brick), `textile`
+(fabric, leather, carpet), `surfaces` (ceramic, glass, plastic, rubber, cork, plaster) and
+`paper` (paper, wallpaper).
 """
 from indoorgen.assets.materials import metal, paper, stone, surfaces, textile, tiles, wood  # noqa: F401  (registers)
 from indoorgen.assets.materials.base import (
@@ -26,7 +27,8 @@ from indoorgen.assets.materials.base import (
            save_maps,
 )
 from indoorgen.assets.materials.slots import SLOT_CHOICES, choose_materials
+from indoorgen.assets.materials.styles import STYLES, check_style, draw_style, style_names
 
-__all__ = ["FAMILIES", "MaterialGenerator", "MaterialMaps", "SLOT_CHOICES", "bake",
-           "choose_materials", "get_material", "material_names", "materials_in_family",
-           "normal_from_height", "register", "save_maps"]
+__all__ = ["FAMILIES", "STYLES", "MaterialGenerator", "MaterialMaps", "SLOT_CHOICES", "bake",
+           "check_style", "choose_materials", "draw_style", "get_material", "material_names",
+           "materials_in_family", "normal_from_height", "register", "save_maps", "style_names"]

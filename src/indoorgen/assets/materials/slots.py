@@ -2,13 +2,15 @@
 
 Asset generators label faces with slot names ("wood", "front", "upholstery", ...);
 `choose_materials` turns a list of slot names into one registered material per slot, drawn with
-relative weights from `SLOT_CHOICES` (or caller overrides). Unknown slots fall back to "body".
+relative weights from `SLOT_CHOICES` (or caller overrides), narrowed to the home's style if one
+is given (`styles.styled`). Unknown slots fall back to "body".
 """
 from __future__ import annotations
 
 import numpy as np
 
 from indoorgen.assets.materials.base import material_names
+from indoorgen.assets.materials.styles import UNSTYLED_SLOTS, styled
 from indoorgen.errors import UnknownGeneratorError
 
 _WOODS = {"oak": 3.0, "walnut": 2.0, "pine_planks": 1.0, "plywood": 1.0, "painted_wood": 1.5}
@@ -104,11 +106,13 @@ def _draw(choices: dict[str, float], rng: np.random.Generator) -> str:
 
 
 def choose_materials(slots: list[str], rng: np.random.Generator,
-                     overrides: dict[str, dict[str, float]] | None = None) -> dict[str, str]:
+                     overrides: dict[str, dict[str, float]] | None = None,
+                     style: str | None = None) -> dict[str, str]:
     """One material name per slot, drawn from `overrides.get(slot)` or `SLOT_CHOICES.get(slot)`
-    (an unknown slot uses the "body" choices). Deterministic given the rng: slots are drawn in
-    the order given, one rng draw each; repeated slot names get a single draw. Override
-    weights naming unregistered materials raise UnknownGeneratorError."""
+    (an unknown slot uses the "body" choices), narrowed to `style` (a home style's woods,
+    metals and fabrics; floors, walls and ceilings aside). Deterministic given the rng: slots
+    are drawn in the order given, one rng draw each; repeated slot names get a single draw.
+    Override weights naming unregistered materials raise UnknownGeneratorError."""
     overrides = overrides or {}
     known = set(material_names())
     for slot, choices in overrides.items():
@@ -122,5 +126,5 @@ def choose_materials(slots: list[str], rng: np.random.Generator,
         if slot in out:
             continue
         choices = overrides.get(slot) or SLOT_CHOICES.get(slot) or SLOT_CHOICES["body"]
-        out[slot] = _draw(choices, rng)
+        out[slot] = _draw(choices if slot in UNSTYLED_SLOTS else styled(choices, style), rng)
     return out

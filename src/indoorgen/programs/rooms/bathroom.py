@@ -1,7 +1,19 @@
 """A bathroom: a toilet with its clearances, a basin with a mirror hung over it, a bath or shower
-in a corner, and the rails, hooks and holders on its walls at the heights the guidelines name."""
-from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, height, scene
+in a corner with a bath mat before it, the rails, hooks and holders on its walls at the heights
+the guidelines name, and towels and toiletries (a tumbler, jars, a candle, a small plant) on the
+basin's counter."""
+from indoorgen.constraints import (
+    ObjSet,
+    Problem,
+    SupportedBy,
+    accessibility_cost,
+    angle_alignment_cost,
+    center_of_support_distance,
+    height,
+    scene,
+)
 from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from indoorgen.programs.relations import (
     against_wall,
     ceiling_lights,
@@ -11,6 +23,7 @@ from indoorgen.programs.relations import (
     on_top,
     on_wall,
     side_to_wall,
+    within_reach,
 )
 
 #: mounting heights (m, bottoms over the floor) putting the centres where NKBA Bathroom Planning
@@ -22,6 +35,8 @@ TOWEL_RAIL_BOTTOM = 0.978
 HOOK_BOTTOM = 1.6
 #: a mirror cabinet hangs this far over the basin's counter or deck, clear of its tap
 MIRROR_GAP = 0.4
+#: a bath mat before a bath's or shower's front, this far out (m), centred within its width
+before_front = SupportedBy(Subpart.Back, Subpart.Front, margin=0.03)
 
 
 def bathroom(room: ObjSet) -> Problem:
@@ -46,6 +61,13 @@ def bathroom(room: ObjSet) -> Problem:
     # rolled towels on a basin's or vanity's counter; a bath's rim is too narrow to hold one
     # still (one on an alcove tub's end deck rolled off in MuJoCo, home seed 0)
     towels = scene()[S.Towel].related_to(basins, on_top)
+    on_basins = scene().related_to(basins, on_top)
+    # a tumbler, jars, a candle, a small plant (counted as a sum: the solver adds to each set)
+    kinds = [on_basins[S.Cup], on_basins[S.Jar], on_basins[S.Candle], on_basins[S.SmallObject, S.Plant]]
+    toiletries = kinds[0] | kinds[1] | kinds[2] | kinds[3]
+    toiletry_count = kinds[0].count() + kinds[1].count() + kinds[2].count() + kinds[3].count()
+    # a mat on the floor where one steps out of the bath or shower
+    mats = floor[S.BathMat].related_to(baths | showers, before_front)
     return Problem(
         constraints={
             "a toilet": toilets.count() == 1,
@@ -57,16 +79,24 @@ def bathroom(room: ObjSet) -> Problem:
             "hooks": hooks.count().in_range(0, 2),
             "a ceiling light": lights.count() == 1,
             "towels": towels.count().in_range(0, 3),
+            "toiletries": toiletry_count.in_range(0, 4),
+            "a bath mat": mats.count().in_range(0, 1),
+            "toiletries within reach": within_reach(toiletries),
         },
         score_terms={
-            "a mirror over the basin": mirrors.count().maximize(0.5),
+            "a mirror over the basin": mirrors.count().maximize(2),
             "roll holder by the toilet": roll_holders.mean(
                 lambda r: r.distance(toilets).hinge(0.1, 0.4)).minimize(3),
             "rails near the basin or bath": (bars | rings).mean(
                 lambda t: t.distance(basins | baths | showers).hinge(0.0, 1.0)).minimize(0.5),
             "fixtures free to use": accessibility_cost(along_walls, floor).minimize(2),
             "square to the walls": angle_alignment_cost(floor, room).minimize(1),
-            "a towel out": towels.count().maximize(0.2),
+            "a towel out": towels.count().maximize(0.5),
+            "toiletries out": toiletry_count.maximize(0.3),
+            "a bath mat": mats.count().maximize(1),
+            "the mat centred on the bath or shower": mats.mean(
+                lambda m: m.center_distance(baths | showers)).minimize(1),
+            "toiletries in the middle": center_of_support_distance(toiletries).minimize(0.3),
             "hooks high": hooks.mean(lambda h: height(h).hinge(1.6, 1.9)).minimize(0.1),
         },
     )

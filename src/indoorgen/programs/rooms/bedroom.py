@@ -29,6 +29,7 @@ from indoorgen.programs.relations import (
     under_bed_foot,
     within_reach,
 )
+from indoorgen.programs.windows import curtains_at_windows
 
 #: free depth beside a bed to get in and make it, and for a nightstand (m): ergonomic guidance
 #: 0.6-0.7 m; each side weighs at most 0.3 (half a violation per metre short), so a bed placed
@@ -161,4 +162,4 @@ def bedroom(room: ObjSet) -> Problem:
                 lambda c: c.distance(room).hinge(0.0, 0.3)).minimize(0.5),
         },
         matching={"nightstands": nightstands, "bedside lamps": lamps},
-    )
+    ) + curtains_at_windows()

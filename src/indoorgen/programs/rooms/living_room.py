@@ -1,7 +1,7 @@
 """A living room: a sofa facing the TV at a viewing distance across a coffee table, on a rug,
 armchairs in line with it, side tables with lamps at the arms, filled bookcases, plants, art
-over the sofa and things on the tables; in a room larger than the group needs, a second zone: a
-reading chair with its lamp, and a desk with its chair."""
+over the sofa, things on the tables and curtains at the windows; in a room larger than the group
+needs, a second zone: a reading chair with its lamp, and a desk with its chair."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -32,6 +32,7 @@ from indoorgen.programs.relations import (
     under_seat_front,
     within_reach,
 )
+from indoorgen.programs.windows import curtains_at_windows
 
 #: a sofa and its TV each turned at most this far from the other (deg; quality's TV_ANGLE is
 #: 30, viewing-angle guidance)
@@ -170,4 +171,4 @@ def living_room(room: ObjSet) -> Problem:
                                 + table_lamps.count()).maximize(0.3),
         },
         matching={"armchairs": armchairs, "side tables": side_tables, "table lamps": table_lamps},
-    )
+    ) + curtains_at_windows()

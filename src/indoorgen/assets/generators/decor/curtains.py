@@ -45,7 +45,8 @@ class Curtain(PartsFactory):
     slots = ["fabric", "metal", "wood"]
     params = {
         "width": Param(1.0, 3.0, doc="span between the end brackets (m)"),
-        "drop": Param(1.4, 2.6, doc="height from the hem to the rod (m)"),
+        "drop": Param(1.0, 2.6, doc="height from the hem to the rod (m: 1.0 for a sill-length "
+                      "curtain at a small window, 2.6 for a floor-length one)"),
         "n_panels": Param(1, 2, kind="int", doc="fabric panels (2 = a pair meeting in the middle)"),
         "coverage": Param(0.35, 1.0, doc="fraction of the width covered (< 1: drawn open)"),
         "fold_depth": Param(0.03, 0.09, doc="front-to-back depth of the folds (m)"),

@@ -1,5 +1,6 @@
-"""Rugs: a thin rectangular, round or oval slab with a raised binding, and round or oval rugs with
-braid grooves and a bound or fringed edge. Their whole footprint is the `bottom`."""
+"""Rugs: a thin rectangular, round or oval slab with a raised binding, a bath mat, and round or
+oval rugs with braid grooves and a bound or fringed edge. Their whole footprint is the
+`bottom`."""
 from __future__ import annotations
 
 import math
@@ -72,6 +73,27 @@ class Rug(PartsFactory):
         polys = self.outline(p).to_polygons()
         poly = sg.Polygon(np.asarray(polys[0], float)).buffer(-0.0005, join_style="mitre")
         return [support_polygon("bottom", (0, 0, 0), poly, subpart=Subpart.Bottom, up=False)]
+
+
+@register
+class BathMat(Rug):
+    """A bath mat: a small, thick, soft rectangle with rounded corners or an oval before a bath,
+    shower or basin (60-90 x 40-60 cm, the common sizes). Not a `Rug`: it lies alone, under no group."""
+
+    name = "bath_mat"
+    tags = frozenset({S.Object, S.Decor, S.FloorCovering, S.Textile, S.BathMat})
+    size_class = "medium"
+    params = {
+        "shape": Param(kind="choice", choices=("rect", "oval"), doc="outline"),
+        "length": Param(0.6, 0.9, doc="Y extent (m)"),
+        "width": Param(0.4, 0.6, doc="X extent (m)"),
+        "thickness": Param(0.008, 0.015, doc="pile thickness (m)"),
+        "corner_radius": Param(0.02, 0.08, doc="corner rounding (m)"),
+        "binding_width": Param(0.0, 0.02, doc="width of the raised edge binding (0 = none) (m)"),
+    }
+    material_choices = {"rug": {"knit": 2.0, "plain_weave": 1.5, "berber_carpet": 1.0,
+                                "carpet": 1.0},
+                        "binding": {"plain_weave": 1.0, "linen": 1.0}}
 
 
 @register
