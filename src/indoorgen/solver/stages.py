@@ -22,6 +22,7 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.circulation import with_circulation
+from indoorgen.solver.repair import repair_stage
 from indoorgen.solver.state import ObjState, State
 
 log = logging.getLogger(__name__)
@@ -70,6 +71,7 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
     for stage in STAGES:
         rng = stream(seed, "room", room, "solve", stage)
         st = Annealer(state, problem, ev, room, stage, rng, config, namer).run(steps[stage])
+        st = repair_stage(state, problem, ev, room, stage, seed, config, namer, steps[stage], st)
         log.info("%s/%s: %d objects, violation %.3g, loss %.3g in %.2fs", room, stage,
                  st.objects, st.violation, st.loss, st.seconds)
         stats.append(st)
