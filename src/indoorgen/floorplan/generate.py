@@ -51,7 +51,10 @@ log = logging.getLogger(__name__)
 STAIR_CELLS = (4, 12)
 #: Attempts at subdividing and assigning one storey, and at the whole home.
 STOREY_ATTEMPTS = 40
-HOME_ATTEMPTS = 6
+HOME_ATTEMPTS = 12
+#: The first attempts of each round make rooms `rooms.planned_width` wide; the rest, for crowded
+#: homes those do not fit, only `rooms.min_width` (a narrow room rather than no home).
+PLANNED_WIDTH_ATTEMPTS = 8
 #: Finished plans drawn at most before giving up on `check.home_problems`.
 REDRAWS = 4
 
@@ -216,6 +219,7 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
                                cfg.floors, counts, max_area=max_area)
     grids, rect = _contours(seed, attempt, cfg, hg)
     plan = GridPlan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect)
+    plan.planned_widths = attempt % HOME_ATTEMPTS < PLANNED_WIDTH_ATTEMPTS
     for k in range(hg.n_storeys):
         if not _init_storey(seed, attempt, plan, k):
             raise _Failed(f"storey {k}: no subdivision satisfies the room graph "

@@ -303,10 +303,15 @@ def balcony_problems(home: nx.Graph, types: dict[str, str] | None = None) -> lis
     return out
 
 
+#: What `graph_problems` finds that a user's own graph may still do (the generator does not).
+USER_CHOICES = ("the home has no", "a balcony on the ground floor", "more than one garage")
+
+
 def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[str]:
     """Why `hg` is not an acceptable home graph (empty if it is): planarity, connectivity,
     a living room on every storey, a bathroom on every storey (unless counts are fixed), a
-    bathroom and a kitchen in the home (unless counts set them to 0), privacy, counts."""
+    bathroom and a kitchen in the home (unless counts set them to 0), no balcony on the ground
+    floor and one garage at most (unless counts name them), privacy, counts."""
     out = []
     home = hg.home()
     if not nx.is_connected(home):
@@ -318,6 +323,12 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
             out.append(f"storey {k} has no living room")
         if counts is None and not any(room_type_of(n) == BATHROOM for n in g.nodes):
             out.append(f"storey {k} has no bathroom")
+        if k == 0 and BALCONY not in (counts or {}) and \
+                any(room_type_of(n) == BALCONY for n in g.nodes):
+            out.append("a balcony on the ground floor")
+    garages = sum(1 for n in home.nodes if room_type_of(n) == GARAGE)
+    if garages > 1 and GARAGE not in (counts or {}):
+        out.append(f"more than one garage ({garages})")
     for t in (BATHROOM, KITCHEN):
         if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
@@ -441,7 +452,7 @@ def graph_from_spec(spec: dict) -> HomeGraph:
     if entrance not in storeys[0]:
         raise ConfigError(f"entrance {entrance!r} is not a room on the ground floor")
     hg = HomeGraph(storeys, entrance, stairs if len(storeys) > 1 else [])
-    problems = [p for p in graph_problems(hg, {}) if not p.startswith("the home has no")]
+    problems = [p for p in graph_problems(hg, {}) if not p.startswith(USER_CHOICES)]
     if problems:
         raise ConfigError(f"the given room graph is not usable: {'; '.join(problems[:3])}")
     return hg
