@@ -24,7 +24,7 @@ from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
 from indoorgen.floorplan.check import home_problems
 from indoorgen.floorplan.contour import make_contour, upper_contour, user_contour
-from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
+from indoorgen.floorplan.graph import MIN_AREA_SHARE, HomeGraph, graph_from_spec, sample_home_graph
 from indoorgen.floorplan.grid import OUTSIDE, make_grid
 from indoorgen.floorplan.openings import (
     place_doors,
@@ -180,13 +180,13 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
         area = cfg.area if cfg.area is not None else \
             max(_typical(n) for n in names) * float(rng.uniform(1.0, 1.15))
         ground = make_contour(rng, float(area))
-    if ground.area < need / 0.8:
+    if ground.area < need / MIN_AREA_SHARE:
         where = f"--contour ({ground.area:.0f} m^2)" if cfg.contour is not None else \
             f"--area {cfg.area:g} m^2"
         raise InvalidGeometryError(
             f"{where} is too small for the rooms "
             f"({', '.join(sorted(set(room_type_of(r) for r in sum(names, []))))}): they need "
-            f"at least {need / 0.8:.0f} m^2 on one storey; give a larger area or fewer rooms")
+            f"at least {need / MIN_AREA_SHARE:.0f} m^2 on one storey; give a larger area or fewer rooms")
     grid0 = make_grid(ground)
     rect, stair_poly = None, None
     if hg.n_storeys > 1:

@@ -78,6 +78,9 @@ PARENTS: dict[str, tuple[str, ...]] = {
     GARAGE: (KITCHEN, LIVING_ROOM), BALCONY: (LIVING_ROOM, BEDROOM),
     UTILITY: (KITCHEN, HALLWAY, LIVING_ROOM),
 }
+#: The share of a storey's area its rooms' least areas may take at most (the floor plan needs
+#: the rest to shape them; `floorplan.generate` refuses a smaller area).
+MIN_AREA_SHARE = 0.8
 #: Types that only live on the ground floor.
 GROUND_ONLY = frozenset({KITCHEN, DINING_ROOM, GARAGE})
 MAX_STOREYS = 3
@@ -407,6 +410,10 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
                 + (ROOM_TYPES[STAIRCASE_ROOM].typical_area if n_storeys > 1 else 0.0) > 1.25 * max_area
                 for g, _ in trees):
             continue
+        if max_area is not None and attempt < max_attempts // 2 and any(
+                sum(ROOM_TYPES[g.nodes[n]["type"]].min_area for n in g.nodes)
+                > MIN_AREA_SHARE * max_area for g, _ in trees):
+            continue  # the rooms' least areas do not fit (`generate` would refuse the area)
         hg = _finish(rng, trees)
         last = graph_problems(hg, counts or None)
         if not last:
