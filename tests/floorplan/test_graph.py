@@ -115,3 +115,19 @@ def test_shared_rooms_are_not_behind_bedrooms():
     assert zone_problems(g, "hallway_0") == ["kitchen_0 is reached only through a bedroom"]
     g.add_edge("hallway_0", "kitchen_0")
     assert zone_problems(g, "hallway_0") == []   # an en-suite bathroom may be behind it
+
+
+def test_sampled_homes_have_one_garage_at_most_and_no_ground_floor_balcony():
+    for floors in (1, 2):
+        for seed in range(25):
+            hg = _sample(seed, floors)
+            assert sum(room_type_of(n) == "garage" for n in hg.rooms()) <= 1
+            assert not any(room_type_of(n) == "balcony" for n in hg.rooms(0))
+    two = HomeGraph([nx.Graph([("living_room_0", "garage_0"), ("living_room_0", "garage_1"),
+                               ("living_room_0", "balcony_0"), ("living_room_0", "bathroom_0"),
+                               ("living_room_0", "kitchen_0")])], "living_room_0")
+    assert {"a balcony on the ground floor", "more than one garage (2)"} <= set(
+        graph_problems(two))
+    # asked for, or drawn by the user, they stay (a terrace on the exterior, a second garage)
+    assert graph_problems(two, {"garage": 2, "balcony": 1}) == []
+    assert isinstance(graph_from_spec(two.to_json()), HomeGraph)

@@ -4,7 +4,14 @@ from __future__ import annotations
 import pytest
 
 from indoorgen.errors import ConfigError, UnknownRoomTypeError
-from indoorgen.floorplan.rooms import MIN_CLOSET_WIDTH, MIN_WIDTH, min_width, parse_room_counts, room_type_of
+from indoorgen.floorplan.rooms import (
+    MIN_CLOSET_WIDTH,
+    MIN_WIDTH,
+    min_width,
+    parse_room_counts,
+    planned_width,
+    room_type_of,
+)
 
 
 def test_room_counts_parsing_and_errors():
@@ -28,3 +35,6 @@ def test_room_names_and_widths():
     assert room_type_of("staircase_room_2") == "staircase_room"
     assert min_width("closet") == MIN_CLOSET_WIDTH and min_width("bedroom") == MIN_WIDTH
     assert min_width("not_a_type") == MIN_WIDTH
+    # generated plans make the main rooms wider (a bed and a walkway, not a 1.5 m strip)
+    assert planned_width("bedroom") >= 2.5 and planned_width("living_room") >= 2.5
+    assert planned_width("closet") == MIN_CLOSET_WIDTH and planned_width("garage") == min_width("garage")

@@ -51,6 +51,12 @@ MIN_BALCONY_EXTERIOR_SHARE = 0.3
 MIN_BALCONY_FRONT = 2.0
 #: Narrowest a garage may be (m): a car and room to open its door (issue 11 saw a 14 x 2 m one).
 MIN_GARAGE_WIDTH = 3.0
+#: Narrowest a generated plan makes a room of these types (m, by type name): a bedroom fits a
+#: bed with a walkway beside it, a living room a sofa facing a TV across a coffee table, a dining
+#: room a table with chairs pulled out, a kitchen a counter with room to work at it, a bathroom
+#: a bath across its end (issue 11 saw a 1.5 x 14 m bedroom). Whole 0.5 m planning cells.
+PLANNED_WIDTHS = {"bedroom": 2.5, "living_room": 2.5, "dining_room": 2.5, "kitchen": 2.0,
+                  "bathroom": 1.5}
 #: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
 CORNER_TURN_DEG = 20.0
 

@@ -24,7 +24,7 @@ from indoorgen.errors import ConfigError, InvalidGeometryError
 from indoorgen.floorplan.assign import assign, relabel
 from indoorgen.floorplan.check import home_problems
 from indoorgen.floorplan.contour import make_contour, upper_contour, user_contour
-from indoorgen.floorplan.graph import HomeGraph, graph_from_spec, sample_home_graph
+from indoorgen.floorplan.graph import MIN_AREA_SHARE, HomeGraph, graph_from_spec, sample_home_graph
 from indoorgen.floorplan.grid import OUTSIDE, make_grid
 from indoorgen.floorplan.openings import (
     place_doors,
@@ -51,7 +51,10 @@ log = logging.getLogger(__name__)
 STAIR_CELLS = (4, 12)
 #: Attempts at subdividing and assigning one storey, and at the whole home.
 STOREY_ATTEMPTS = 40
-HOME_ATTEMPTS = 6
+HOME_ATTEMPTS = 12
+#: The first attempts of each round make rooms `rooms.planned_width` wide; the rest, for crowded
+#: homes those do not fit, only `rooms.min_width` (a narrow room rather than no home).
+PLANNED_WIDTH_ATTEMPTS = 8
 #: Finished plans drawn at most before giving up on `check.home_problems`.
 REDRAWS = 4
 
@@ -177,13 +180,13 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
         area = cfg.area if cfg.area is not None else \
             max(_typical(n) for n in names) * float(rng.uniform(1.0, 1.15))
         ground = make_contour(rng, float(area))
-    if ground.area < need / 0.8:
+    if ground.area < need / MIN_AREA_SHARE:
         where = f"--contour ({ground.area:.0f} m^2)" if cfg.contour is not None else \
             f"--area {cfg.area:g} m^2"
         raise InvalidGeometryError(
             f"{where} is too small for the rooms "
             f"({', '.join(sorted(set(room_type_of(r) for r in sum(names, []))))}): they need "
-            f"at least {need / 0.8:.0f} m^2 on one storey; give a larger area or fewer rooms")
+            f"at least {need / MIN_AREA_SHARE:.0f} m^2 on one storey; give a larger area or fewer rooms")
     grid0 = make_grid(ground)
     rect, stair_poly = None, None
     if hg.n_storeys > 1:
@@ -216,6 +219,7 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
                                cfg.floors, counts, max_area=max_area)
     grids, rect = _contours(seed, attempt, cfg, hg)
     plan = GridPlan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect)
+    plan.planned_widths = attempt % HOME_ATTEMPTS < PLANNED_WIDTH_ATTEMPTS
     for k in range(hg.n_storeys):
         if not _init_storey(seed, attempt, plan, k):
             raise _Failed(f"storey {k}: no subdivision satisfies the room graph "

@@ -78,6 +78,9 @@ PARENTS: dict[str, tuple[str, ...]] = {
     GARAGE: (KITCHEN, LIVING_ROOM), BALCONY: (LIVING_ROOM, BEDROOM),
     UTILITY: (KITCHEN, HALLWAY, LIVING_ROOM),
 }
+#: The share of a storey's area its rooms' least areas may take at most (the floor plan needs
+#: the rest to shape them; `floorplan.generate` refuses a smaller area).
+MIN_AREA_SHARE = 0.8
 #: Types that only live on the ground floor.
 GROUND_ONLY = frozenset({KITCHEN, DINING_ROOM, GARAGE})
 MAX_STOREYS = 3
@@ -303,10 +306,15 @@ def balcony_problems(home: nx.Graph, types: dict[str, str] | None = None) -> lis
     return out
 
 
+#: What `graph_problems` finds that a user's own graph may still do (the generator does not).
+USER_CHOICES = ("the home has no", "a balcony on the ground floor", "more than one garage")
+
+
 def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[str]:
     """Why `hg` is not an acceptable home graph (empty if it is): planarity, connectivity,
     a living room on every storey, a bathroom on every storey (unless counts are fixed), a
-    bathroom and a kitchen in the home (unless counts set them to 0), privacy, counts."""
+    bathroom and a kitchen in the home (unless counts set them to 0), no balcony on the ground
+    floor and one garage at most (unless counts name them), privacy, counts."""
     out = []
     home = hg.home()
     if not nx.is_connected(home):
@@ -318,6 +326,12 @@ def graph_problems(hg: HomeGraph, counts: dict[str, int] | None = None) -> list[
             out.append(f"storey {k} has no living room")
         if counts is None and not any(room_type_of(n) == BATHROOM for n in g.nodes):
             out.append(f"storey {k} has no bathroom")
+        if k == 0 and BALCONY not in (counts or {}) and \
+                any(room_type_of(n) == BALCONY for n in g.nodes):
+            out.append("a balcony on the ground floor")
+    garages = sum(1 for n in home.nodes if room_type_of(n) == GARAGE)
+    if garages > 1 and GARAGE not in (counts or {}):
+        out.append(f"more than one garage ({garages})")
     for t in (BATHROOM, KITCHEN):
         if not any(room_type_of(n) == t for n in home.nodes) and (counts or {}).get(t, 1):
             out.append(f"the home has no {t}")
@@ -396,6 +410,10 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
                 + (ROOM_TYPES[STAIRCASE_ROOM].typical_area if n_storeys > 1 else 0.0) > 1.25 * max_area
                 for g, _ in trees):
             continue
+        if max_area is not None and attempt < max_attempts // 2 and any(
+                sum(ROOM_TYPES[g.nodes[n]["type"]].min_area for n in g.nodes)
+                > MIN_AREA_SHARE * max_area for g, _ in trees):
+            continue  # the rooms' least areas do not fit (`generate` would refuse the area)
         hg = _finish(rng, trees)
         last = graph_problems(hg, counts or None)
         if not last:
@@ -441,7 +459,7 @@ def graph_from_spec(spec: dict) -> HomeGraph:
     if entrance not in storeys[0]:
         raise ConfigError(f"entrance {entrance!r} is not a room on the ground floor")
     hg = HomeGraph(storeys, entrance, stairs if len(storeys) > 1 else [])
-    problems = [p for p in graph_problems(hg, {}) if not p.startswith("the home has no")]
+    problems = [p for p in graph_problems(hg, {}) if not p.startswith(USER_CHOICES)]
     if problems:
         raise ConfigError(f"the given room graph is not usable: {'; '.join(problems[:3])}")
     return hg

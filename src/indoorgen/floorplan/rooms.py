@@ -1,13 +1,14 @@
 """Rooms as the floorplan stage names and counts them: a room is called ``<type>_<k>``, user
 room lists read ``bedroom=2,bathroom=1``, and rooms are at least MIN_WIDTH wide (types that may
-be narrow, closets, MIN_CLOSET_WIDTH; garages MIN_GARAGE_WIDTH). Everything else about a type is in
+be narrow, closets, MIN_CLOSET_WIDTH; garages MIN_GARAGE_WIDTH), and generated plans make the
+main rooms wider still (`PLANNED_WIDTHS`). Everything else about a type is in
 `indoorgen.model.room_types`.
 """
 from __future__ import annotations
 
 from typing import Any
 
-from indoorgen.constraints.room_terms import MIN_GARAGE_WIDTH
+from indoorgen.constraints.room_terms import MIN_GARAGE_WIDTH, PLANNED_WIDTHS
 from indoorgen.errors import ConfigError
 from indoorgen.model.room_types import GARAGE, LIVING_ROOM, ROOM_TYPES, room_type
 
@@ -27,6 +28,12 @@ def min_width(t: str) -> float:
         return MIN_GARAGE_WIDTH
     spec = ROOM_TYPES.get(t)
     return MIN_CLOSET_WIDTH if spec is not None and spec.narrow_ok else MIN_WIDTH
+
+
+def planned_width(t: str) -> float:
+    """The narrowest a generated plan makes a room of type `t` (m): `PLANNED_WIDTHS`, at least
+    `min_width`."""
+    return max(min_width(t), PLANNED_WIDTHS.get(t, 0.0))
 
 
 def parse_room_counts(spec: str | dict | None) -> dict[str, int]:

@@ -12,7 +12,7 @@ from indoorgen.constraints.room_terms import (
     MIN_DOOR_WALL,
     MIN_VEHICLE_DOOR_WALL,
 )
-from indoorgen.floorplan.rooms import min_width, room_type_of
+from indoorgen.floorplan.rooms import min_width, planned_width, room_type_of
 from indoorgen.floorplan.view import GridPlan
 from indoorgen.model.room_types import BALCONY, GARAGE, ROOM_TYPES, STAIRCASE_ROOM
 
@@ -20,9 +20,10 @@ from indoorgen.model.room_types import BALCONY, GARAGE, ROOM_TYPES, STAIRCASE_RO
 def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
-    `min_width` wide, at least its type's minimum area, a balcony on the storey's edge, and the
-    staircase room holding the whole staircase placeholder with a door-wide wall clear of its
-    flights and stairwells for each graph neighbour."""
+    `planned_width` wide (`min_width` in a plan of a home's last tries), at least its type's
+    minimum area, a balcony on the storey's edge, and the staircase room holding the whole
+    staircase placeholder with a door-wide wall clear of its flights and stairwells for each
+    graph neighbour."""
     t = room_type_of(o)
     if plan.outline_points(o) is None:
         return [f"{o} is not a simple polygon"]
@@ -40,7 +41,7 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
     if t == BALCONY and plan.exterior_length(o) < \
             MIN_BALCONY_EXTERIOR_SHARE * plan.perimeter(o) - 1e-9:
         out.append(f"{o} is not on the edge of the storey")
-    width = min_width(t)
+    width = planned_width(t) if plan.planned_widths else min_width(t)
     if plan.narrow_area(o, width) > 0.01:
         out.append(f"{o} is narrower than {width} m")
     if plan.missing_doors(o):

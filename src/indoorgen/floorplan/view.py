@@ -115,6 +115,8 @@ class GridPlan(RoomView):
         self.index: dict[str, tuple[int, int]] = {
             n: (k, i) for k, names in enumerate(self.names) for i, n in enumerate(names)}
         self.stair_rect = stair_rect  # (iy0, ix0, iy1, ix1) in cells, end exclusive
+        #: rooms as wide as `rooms.planned_width` (else `rooms.min_width`: a home's last tries)
+        self.planned_widths = True
         self._stair_mask: tuple[tuple[int, int, int, int], np.ndarray] | None = None
         self._paths = {}
         for k, g in enumerate(graph.storeys):

@@ -62,6 +62,8 @@ class StageStats:
     violation: float = 0.0
     loss: float = 0.0
     stopped_early: bool = False
+    #: fresh solves of the stage tried after it (`solver.repair`)
+    repairs: int = 0
 
     def to_json(self) -> dict:
         """The stats as a JSON-ready dict (`taken` is reported as `accepted_by_move`)."""
@@ -69,7 +71,7 @@ class StageStats:
                 "accepted": self.accepted, "proposed": self.proposed, "valid": self.valid,
                 "accepted_by_move": self.taken, "seconds": round(self.seconds, 4),
                 "objects": self.objects, "violation": self.violation, "loss": self.loss,
-                "stopped_early": self.stopped_early}
+                "stopped_early": self.stopped_early, "repairs": self.repairs}
 
 
 def temperature_at(config: AnnealConfig, frac: float) -> float:

@@ -303,7 +303,12 @@ def add(ctx: MoveContext) -> MoveOutcome | None:
     if not bounds:
         return None
     below = [b for b in bounds if b.below]
-    b = ctx.pick(below if below and ctx.rng.random() < 0.85 else bounds)
+    return add_to(ctx, ctx.pick(below if below and ctx.rng.random() < 0.85 else bounds))
+
+
+def add_to(ctx: MoveContext, b: Bound, tries: int | None = None) -> MoveOutcome | None:
+    """Add a new object to the context of bound `b`, trying `tries` poses (default: the
+    context's `init_tries`); None, with nothing changed, if no pose was valid."""
     gens = ctx.generators(b.context.tags, b.context.excluded)
     if b.context.generator is not None:
         gens = [g for g in gens if g == b.context.generator]
@@ -329,7 +334,7 @@ def add(ctx: MoveContext) -> MoveOutcome | None:
                   ctx.stage, asset, placements, np.zeros(3), 0.0,
                   context=b.context, env=dict(b.env))
     ctx.state.add(ob)
-    if not _place(ctx, ob):
+    if not _place(ctx, ob, tries):
         ctx.state.remove(ob.name)
         return None
     name = ob.name

@@ -1,0 +1,43 @@
+"""Repairing a stage: a stage that ends with one of its own hard constraints unmet is solved again
+from a clean slate, required objects placed first; a requirement no layout meets stays unmet."""
+from __future__ import annotations
+
+from indoorgen.constraints import Problem, scene
+from indoorgen.model.tags import Semantics as S
+from indoorgen.programs.relations import on_floor
+from indoorgen.solver.repair import REPAIR_ATTEMPTS, construct, own_violation
+from indoorgen.solver.stages import solve
+from support.solverscene import ROOM, assert_consistent, make_state, move_context, table_program
+
+
+def test_a_stage_cut_short_is_repaired_by_placing_what_it_requires():
+    st = make_state(5.0, 4.0)
+    # one annealing step cannot place both a table and a picture; the repair places them first
+    stats, evaluators = solve(st, {ROOM: table_program()}, seed=3,
+                              steps={"large": 1, "medium": 1, "small": 1})
+    by_stage = {s.stage: s for s in stats}
+    assert by_stage["large"].violation == 0.0 and by_stage["medium"].violation == 0.0
+    assert by_stage["medium"].repairs >= 1
+    assert evaluators[ROOM].evaluate().violations["art"] == 0.0
+    assert_consistent(st)
+
+
+def test_a_requirement_no_layout_meets_stays_unmet():
+    room = scene()[S.Room].named(ROOM)
+    beds = scene().related_to(room, on_floor)[S.Bed]
+    problem = Problem(constraints={"five beds": beds.count() == 5})
+    st = make_state(2.0, 2.2)
+    stats, evaluators = solve(st, {ROOM: problem}, seed=1,
+                              steps={"large": 30, "medium": 1, "small": 1})
+    large = next(s for s in stats if s.stage == "large")
+    assert large.repairs == REPAIR_ATTEMPTS and large.violation > 0
+    assert evaluators[ROOM].evaluate().violations["five beds"] > 0  # not relaxed: reported
+    assert_consistent(st)
+
+
+def test_construct_places_each_required_object_and_tells_the_evaluator():
+    st = make_state(5.0, 4.0)
+    ctx = move_context(st, "large")
+    added = construct(ctx)
+    assert len(added) == 1 and S.DiningTable in st.objects[added[0]].tags
+    assert own_violation(ctx.ev.evaluate(), ctx.problem, "large") == 0.0
