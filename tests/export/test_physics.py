@@ -41,7 +41,8 @@ def test_volume_integrals_match_trimesh_on_posed_solids():
 
 def test_link_inertials_sum_their_pieces():
     """A dresser's links: mass is the shell volume (capped by the pieces') at the pieces' mean
-    density, capped by the link's mass as a hollow wall, and the centre of mass is the density-weighted mean of the pieces' centres."""
+    density, capped by the link's mass as a hollow wall, and the centre of mass is the
+    density-weighted mean of the pieces' centres."""
     f = get_factory("dresser")
     params = f.sample_params(np.random.default_rng(3))
     asset = f.create(params)
