@@ -84,12 +84,13 @@ def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
                     physicsClientId=cid)
         bodies = {}
         for obj in bundle.objects:
-            fixed = bundle.is_fixed(obj)
+            fixed = bundle.is_fixed(obj) or bundle.lies_under(obj)  # rugs: welded, as in MJCF
             bodies[obj.name] = (pb.loadURDF(
                 str(d / "urdf" / f"{obj.name}.urdf"), obj.pose.position, _quat(obj.pose.yaw),
                 useFixedBase=fixed, physicsClientId=cid), fixed)
         out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid)
-        free = [b for b, fixed in bodies.values() if not fixed]
+        names = [n for n, (_, fixed) in bodies.items() if not fixed]
+        free = [bodies[n][0] for n in names]
         p0 = np.array([pb.getBasePositionAndOrientation(b, physicsClientId=cid)[0]
                        for b in free]).reshape(-1, 3)
         for _ in range(int(seconds * 240)):
@@ -98,7 +99,8 @@ def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
                        for b in free]).reshape(-1, 3)
         moved = np.linalg.norm(p1 - p0, axis=1)
         out.update(pb_free=len(free), pb_still=float((moved < 0.02).mean()) if len(free) else 1.0,
-                   pb_max=float(moved.max()) if len(free) else 0.0)
+                   pb_max=float(moved.max()) if len(free) else 0.0,
+                   pb_worst=[(names[i], float(moved[i])) for i in np.argsort(-moved)[:3]])
         return out
     finally:
         pb.disconnect(cid)
@@ -199,8 +201,10 @@ def main() -> None:
               f"MJ {r['mj_load_s']:.2f} s {r['mj_free']} free {100 * r['mj_still']:.1f}% "
               f"max {100 * r['mj_max']:.1f} cm ({worst})")
         pb_ = (f" | PB {r['pb_load_s']:.2f} s {100 * r['pb_still']:.1f}% "
-               f"max {100 * r['pb_max']:.1f} cm, {r['pb_bad_joints']}/{r['pb_joints']} joints "
-               f"penetrate" if "pb_load_s" in r else "")
+               f"max {100 * r['pb_max']:.1f} cm ("
+               + ", ".join(f"{n} {m * 100:.1f} cm" for n, m in r.get("pb_worst", []))
+               + f"), {r['pb_bad_joints']}/{r['pb_joints']} joints penetrate"
+               if "pb_load_s" in r else "")
         nt = (f" | NT {r.get('nt_error') or ''}{r.get('nt_load_s', 0):.2f} s "
               f"{100 * r.get('nt_still', 0):.1f}% max {100 * r.get('nt_max', 0):.1f} cm"
               if args.newton else "")

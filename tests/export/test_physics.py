@@ -6,7 +6,13 @@ import trimesh
 
 from indoorgen.assets import get_factory
 from indoorgen.export.bundle import object_materials
-from indoorgen.export.physics import density_of, link_inertials, piece_slots, volume_integrals
+from indoorgen.export.physics import (
+    density_of,
+    link_inertials,
+    piece_slots,
+    volume_integrals,
+    wall_masses,
+)
 from indoorgen.model.scene import Pose, SceneObject
 
 
@@ -35,13 +41,15 @@ def test_volume_integrals_match_trimesh_on_posed_solids():
 
 def test_link_inertials_sum_their_pieces():
     """A dresser's links: mass is the shell volume (capped by the pieces') at the pieces' mean
-    density, and the centre of mass is the density-weighted mean of the pieces' centres."""
+    density, capped by the link's mass as a hollow wall, and the centre of mass is the
+    density-weighted mean of the pieces' centres."""
     f = get_factory("dresser")
     params = f.sample_params(np.random.default_rng(3))
     asset = f.create(params)
     obj = SceneObject("dresser_0", "dresser", params, 3, Pose(), [], "room")
     mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
     got = link_inertials(asset, mats)
+    walls = wall_masses(asset, mats)
     slots = piece_slots(asset)
     assert set(got) == set(asset.links) and len(asset.links) > 1
     for link in asset.links:
@@ -54,6 +62,25 @@ def test_link_inertials_sum_their_pieces():
         shell = asset.link_mesh(link)
         volume = min(shell.volume, vols.sum()) if shell.is_volume else vols.sum()
         density = (rho * vols).sum() / vols.sum()
-        assert np.isclose(got[link].mass, volume * density, rtol=1e-6)
+        assert np.isclose(got[link].mass, min(volume * density, walls[link]), rtol=1e-6)
         w = np.linalg.eigvalsh(got[link].inertia)
         assert np.all(w > 0)
+
+
+#: household objects' real masses (kg): (generator, lightest, heaviest), from retailers' sheets
+REAL_MASSES = [("sofa", 25.0, 110.0), ("dining_chair", 3.0, 12.0), ("glass_tumbler", 0.1, 0.5),
+               ("wineglass", 0.08, 0.4), ("book", 0.1, 2.5), ("fridge", 40.0, 160.0),
+               ("toilet", 15.0, 50.0), ("tv", 4.0, 35.0), ("can", 0.05, 1.0)]
+
+
+def test_masses_are_real_objects_masses():
+    """Hollow things weigh their walls: a sofa is tens of kg, not half a tonne (issue 12)."""
+    for gen, lo, hi in REAL_MASSES:
+        f = get_factory(gen)
+        for seed in range(3):
+            params = f.sample_params(np.random.default_rng(seed))
+            asset = f.create(params)
+            obj = SceneObject(f"{gen}_0", gen, params, seed, Pose(), [], "room")
+            mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
+            mass = sum(i.mass for i in link_inertials(asset, mats).values())
+            assert lo <= mass <= hi, (gen, seed, mass)

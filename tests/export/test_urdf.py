@@ -95,16 +95,20 @@ def test_pybullet_joints_move_through_their_range_clear_of_the_body(articulated,
 
 
 def test_exported_urdf_collisions_are_the_asset_pieces(exported):
-    """Every object URDF holds one <collision> per convex piece, boxes as <box>."""
+    """Every object URDF holds one <collision> per convex piece, boxes as <box>; a rug has
+    none (as in MJCF and USD: furniture stands on the floor through it)."""
     bundle, d, _ = exported["living_room"]
     kinds = {"box": 0, "mesh": 0}
+    rugs = 0
     for obj in bundle.objects:
         root = ET.parse(d / "urdf" / f"{obj.name}.urdf").getroot()
         cols = root.findall(".//collision/geometry/*")
-        assert len(cols) == len(bundle.assets[obj.name].collision), obj.name
+        rugs += bundle.lies_under(obj)
+        want = 0 if bundle.lies_under(obj) else len(bundle.assets[obj.name].collision)
+        assert len(cols) == want, obj.name
         for c in cols:
             kinds[c.tag] += 1
-    assert kinds["box"] > 0 and kinds["mesh"] > 0
+    assert kinds["box"] > 0 and kinds["mesh"] > 0 and rugs >= 1
 
 
 def test_every_joint_has_limits_effort_velocity_and_damping(articulated):

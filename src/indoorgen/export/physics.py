@@ -4,7 +4,10 @@ which material, and each link's mass, centre of mass and inertia.
 Mass is volume x density: each link's volume is its closed render shell's (the real amount of
 material, so a hollow vase weighs what a vase weighs), its density the volume-weighted mean of
 its convex pieces' materials (a piece takes the material slot of the render faces lying on
-it). The centre of mass and inertia come from the convex pieces, scaled to that mass.
+it). A render shell is often the outside of a hollow thing (a fridge's sheet-steel casing, a
+sofa's padded fabric, a toilet's ceramic walls), so a link never weighs more than its surface
+as a wall of its materials' usual thickness (`WALL`): the sum of face area x wall x density.
+The centre of mass and inertia come from the convex pieces, scaled to that mass.
 """
 from __future__ import annotations
 
@@ -17,6 +20,20 @@ import trimesh
 from indoorgen.assets.materials import get_material
 from indoorgen.assets.protocol import Asset
 from indoorgen.export.meshes import face_slot_names
+
+#: wall thickness (m) of a hollow thing of each material family, so that area x wall x density
+#: is its mass: appliance casings and furniture tubes 1 mm of steel, glassware and panes 4 mm, vitreous
+#: china 8 mm, moulded plastic 3 mm, 18 mm furniture board, upholstery (fabric over foam and frame)
+#: 15 mm at the fabric's density, 30 mm stone worktops and trays (a slab up to 2 x 15 mm stays
+#: solid), corrugated board 3 mm, a painting's canvas 2 mm. Materials things are made solid of
+#: (books, wax, soil, rubber) take `SOLID_WALL`: only blocks over 10 cm thick are capped.
+WALL = {"metal": 1.0e-3, "glass": 4e-3, "ceramic": 8e-3, "plastic": 3e-3, "wood": 18e-3,
+        "fabric": 15e-3, "leather": 15e-3, "stone": 15e-3}
+#: per-material exceptions to `WALL` (by material name; None: solid)
+WALL_OF_MATERIAL = {"cardboard": 3e-3, "painting": 2e-3, "soil": None, "water": None,
+                    "wax": None, "fruit_skin": None}
+#: the wall of solid materials (m): half the thickness of a block still weighed as solid
+SOLID_WALL = 0.05
 
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros
 MIN_MASS = 1e-3
@@ -61,6 +78,33 @@ def density_of(material: str) -> float:
         return float(get_material(material).density)
     except Exception:
         return 1000.0
+
+
+def wall_of(material: str) -> float:
+    """Wall thickness (m) a hollow thing of `material` has (`WALL`; `SOLID_WALL` if solid)."""
+    if material in WALL_OF_MATERIAL:
+        return WALL_OF_MATERIAL[material] or SOLID_WALL
+    try:
+        family = get_material(material).family
+    except Exception:
+        return SOLID_WALL
+    return WALL.get(family, SOLID_WALL)
+
+
+def wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, float]:
+    """Each link's mass (kg) as a hollow wall: sum of its render faces' area x `wall_of` x
+    density of the face's material (slot -> material name in `materials`)."""
+    if len(asset.mesh.faces) == 0:
+        return {}
+    per_slot = np.array([(density_of(m) * wall_of(m)) if (m := materials.get(slot)) else
+                         1000.0 * SOLID_WALL for slot in asset.slots] or [1000.0 * SOLID_WALL])
+    fs = np.minimum(face_slot_names(asset), len(per_slot) - 1)
+    per_face = np.asarray(asset.mesh.area_faces) * per_slot[fs]
+    if asset.face_links is None:
+        return {"base": float(per_face.sum())}
+    sums = np.bincount(np.asarray(asset.face_links, int), weights=per_face,
+                       minlength=len(asset.links))
+    return {link: float(v) for link, v in zip(asset.links, sums, strict=False)}
 
 
 def piece_slots(asset: Asset) -> list[int]:
@@ -134,11 +178,12 @@ def link_inertials(asset: Asset, materials: Mapping[str, str]) -> dict[str, Iner
             moments[:, k] = np.bincount(owner, weights=per_tri[:, k], minlength=len(pieces))
         moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
     shells = _shell_volumes(asset)
+    walls = wall_masses(asset, materials)
     out = {}
     for link in asset.links + [lk for lk, _ in pieces if lk not in asset.links]:
         sel = [i for i, (lk, _) in enumerate(pieces) if lk == link and moments[i, 0] > 1e-12]
         out[link] = _link_inertial(asset, link, moments[sel], np.asarray(rho)[sel],
-                                   shells.get(link))
+                                   shells.get(link), walls.get(link))
     return out
 
 
@@ -157,8 +202,9 @@ def _shell_volumes(asset: Asset) -> dict[str, float]:
 
 
 def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray,
-                   shell_volume: float | None) -> Inertial:
-    """One link's inertial from its pieces' moments (P, 10) and densities (P,)."""
+                   shell_volume: float | None, wall_mass: float | None) -> Inertial:
+    """One link's inertial from its pieces' moments (P, 10) and densities (P,), its shell's
+    volume and its mass as a hollow wall (see module doc)."""
     if len(moments) == 0:
         faces = asset.link_faces(link)
         if len(faces):
@@ -185,7 +231,10 @@ def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray
     volume = vol_pieces
     if shell_volume is not None and shell_volume > 0:
         volume = min(shell_volume, vol_pieces)
-    mass = max(volume * density, MIN_MASS)
+    mass = volume * density
+    if wall_mass is not None and wall_mass > 0:
+        mass = min(mass, wall_mass)
+    mass = max(mass, MIN_MASS)
     inertia *= mass / total
     inertia = 0.5 * (inertia + inertia.T) + np.eye(3) * MIN_INERTIA
     return Inertial(mass, com, inertia)

@@ -53,7 +53,9 @@ def _origin(parent: ET.Element, xyz, rpy=(0.0, 0.0, 0.0)) -> None:
 def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, obj_name: str,
           link: str, frame: np.ndarray, inertial: Inertial | None, rel: str) -> None:
     """A <link> with inertial, visuals and collisions of one asset link; geometry is in the
-    asset frame, shifted by -frame into the link frame. `rel` prefixes mesh paths."""
+    asset frame, shifted by -frame into the link frame. `rel` prefixes mesh paths. An object
+    lying under others (a rug) is visual only, as in MJCF and USD: furniture stands on the
+    floor through it."""
     el = ET.SubElement(robot, "link", name=name)
     if inertial is not None:
         _inertial(el, inertial, frame)
@@ -67,6 +69,8 @@ def _link(robot: ET.Element, name: str, bundle: ExportBundle, files: MeshFiles, 
         mat = ET.SubElement(vis, "material", name=vf.material.key)
         r, g, b = files.textures.info(vf.material).mean_color
         ET.SubElement(mat, "color", rgba=f"{r:.4f} {g:.4f} {b:.4f} 1")
+    if bundle.lies_under(bundle.scene.objects[obj_name]):
+        return
     for k, (plink, geom) in enumerate(files.collisions(obj_name)):
         if plink == link:
             _collision(el, f"{link}_collision_{k}", geom, -frame, rel)
