@@ -46,7 +46,7 @@ RUN_AIM = 0.01
 #: 2.7 cm (a fridge's up to 4.7 cm) past its unit's side within the first 6 cm before the
 #: fronts (the solver's sweeps of these generators), where a neighbour's handles and worktop
 #: edge stand; inside IN_RUN
-RUN_FILLER = 0.045
+RUN_FILLER = 0.048
 #: in the run: a unit's side against its neighbour's across a filler strip, its centre within
 #: the neighbour's side, and its back in line with the run's (on the run's wall): base units
 #: are set beside the appliances and each other rather than searched for
