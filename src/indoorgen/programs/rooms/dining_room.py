@@ -1,6 +1,6 @@
 """A dining room: a table centred in the room with a matching set of chairs pulled up, on a rug
 under them both, a place laid before each chair, a light over the table, a sideboard with things
-on it, plants and art."""
+on it, a display shelf where it fits, plants and art."""
 from indoorgen.constraints import (
     ObjSet,
     Problem,
@@ -38,13 +38,14 @@ RUG_DIAMETER = 2.8
 
 def dining_room(room: ObjSet) -> Problem:
     """One table with four to eight matching chairs evenly around it, places laid, a light
-    over it, a sideboard and art in view."""
+    over it, a sideboard, a display shelf where it fits and art in view."""
     floor = scene().related_to(room, on_floor)
     blockers = floor.excluding(S.FloorCovering)
     tables = floor[S.DiningTable]
     chairs = floor[S.DiningChair].related_to(tables, at_table)
     sideboards = floor.of_generator("cabinet", height=SIDEBOARD_HEIGHT, width=1.0, n_doors=2).related_to(
         room, against_wall)
+    shelves = floor[S.Bookcase].related_to(room, against_wall)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     plates = scene()[S.Plate].related_to(tables, on_top)
@@ -74,11 +75,13 @@ def dining_room(room: ObjSet) -> Problem:
                                  centrepieces[0].count()).in_range(0, 2),
             "a sideboard": sideboards.count().in_range(1, 1),
             "things on the sideboard": on_sideboard.count().in_range(1, 4),
+            "a display shelf at most": shelves.count().in_range(0, 1),
             "plants": plants.count().in_range(0, 2),
             "pictures": art.count().in_range(1, 2),
             "a light": lights.count().in_range(1, 1),
             "a rug at most": table_rugs.count().in_range(0, 1),
             "sideboard front free": fronts_free(sideboards, blockers, room, margin=DOOR_SWING),
+            "shelf front free": fronts_free(shelves, blockers, room),
             "within reach": within_reach(on_sideboard),
         },
         score_terms={
@@ -111,6 +114,7 @@ def dining_room(room: ObjSet) -> Problem:
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
             "a light centred over the table": lights.mean(
                 lambda li: li.center_distance(tables).hinge(0.0, 0.1)).minimize(6),
+            "a display shelf": shelves.count().maximize(1),
             "a furnished room": (on_sideboard.count() + plants.count()
                                  + sum((c.count() for c in centrepieces[1:]),
                                        centrepieces[0].count())).maximize(0.3),
