@@ -179,13 +179,24 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
         | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
         "shoe racks": floor[S.ShoeRack],
-        "bedside cupboards": floor[S.Nightstand],
+        "bedside cupboards": bedside_cupboards(floor),
         "dining tables": floor[S.DiningTable],
         "low tables": floor[S.CoffeeTable] | floor[S.SideTable],
         "desks": floor[S.Desk],
         "sofas": floor[S.Sofa],
         "beds": floor[S.Bed],
     }
+
+
+#: the nightstand layouts with an open shelf or a door: a drawer is no parent object (what lies
+#: in it would not move with it), so a nightstand of drawers only holds nothing inside
+OPEN_NIGHTSTANDS = ("drawer_shelf", "drawer_door", "open")
+
+
+def bedside_cupboards(floor: ObjSet) -> ObjSet:
+    """The nightstands on `floor` with room inside (a shelf or a cupboard behind a door)."""
+    return union([floor[S.Nightstand].of_generator("nightstand", layout=layout)
+                  for layout in OPEN_NIGHTSTANDS])
 
 
 def cap(load: Load, fullness: float) -> int:

@@ -23,6 +23,7 @@ from indoorgen.programs.relations import (
     bed_rugs,
     ceiling_lights,
     fronts_free,
+    inside,
     on_floor,
     on_top,
     on_wall,
@@ -49,6 +50,20 @@ LARGER_ROOM = 0.5
 #: the band a wall shelf's centre hangs in (m): above a nightstand or desk (0.7 m) and within
 #: reach, its top board no higher than eye level (the reach rule's 1.6 m)
 SHELF_BAND = (1.0, 1.45)
+#: the reward of a rug under the bed's foot (a rug 0.5 m off centre costs 2 in `rugs_centred`)
+RUG_REWARD = 2.5
+#: a bedroom whose plan box is larger than this (m^2) is asked for a desk corner (a desk 1.0-1.4
+#: x 0.5-0.7 m and its chair's 0.8 m pull-out: 2 m^2 past a 12-15 m^2 room's bed and storage)
+DESK_AREA = 13.5
+#: a bedroom whose plan box is larger than this (m^2) is asked for a dresser beside the wardrobe
+#: (1.0-1.5 x 0.4-0.5 m and 0.6 m before its drawers: about 1.3 m^2 past the wardrobe's room)
+DRESSER_AREA = 12.5
+#: the reward of the dresser once the room is a square metre past DRESSER_AREA
+DRESSER_REWARD = 1.5
+#: the reward of a desk corner once the room is a square metre past DESK_AREA
+DESK_REWARD = 1.0
+#: storage boxes on top of a wardrobe at most (0.5-2.4 m wide: two or three side by side)
+WARDROBE_TOP_BOXES = 3
 
 
 def bedroom(room: ObjSet) -> Problem:
@@ -73,6 +88,9 @@ def bedroom(room: ObjSet) -> Problem:
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     mirrors = scene().of_generator("mirror").related_to(room, on_wall)
+    wall_clocks = scene()[S.Clock].related_to(room, on_wall)
+    # boxes kept on top of the wardrobe (out-of-season things; nothing used every day)
+    stored_on_top = scene()[S.Box].related_to(wardrobes, on_top)
     lamps = scene()[S.TableLamp].related_to(nightstands, on_top)
     desk_lamps = scene()[S.DeskLamp].related_to(desks, on_top)
     laptops = scene()[S.Laptop].related_to(desks, on_top)
@@ -84,6 +102,10 @@ def bedroom(room: ObjSet) -> Problem:
     decor = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
         S.Electronics).related_to(surfaces, on_top)
+    # what the wardrobe and the shelves hold (clothes, shoes, boxes, books, decor)
+    kept = scene()[S.SmallObject].related_to(wardrobes, inside) | scene()[S.SmallObject].related_to(
+        shelves | bookcases, on_top)
+
     def side_clearance(bed: ObjSet, side: str) -> Scalar:
         return front_clearance(bed, blockers.excluding(S.Nightstand) | room, probe=SIDE_PROBE,
                                face=side)
@@ -94,7 +116,7 @@ def bedroom(room: ObjSet) -> Problem:
     return Problem(
         constraints={
             "a bed": beds.count() == 1,
-            "up to two nightstands at the head": nightstands.count().in_range(0, 2),
+            "one or two nightstands at the head": nightstands.count().in_range(1, 2),
             "a wardrobe or a dresser": (wardrobes.count() + dressers.count()).in_range(1, 2),
             "a desk at most": desks.count().in_range(0, 1),
             "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
@@ -108,7 +130,7 @@ def bedroom(room: ObjSet) -> Problem:
                 (room.volume((0, 1)) - WARDROBE_AREA) * LARGER_ROOM).clip(0.0, LARGER_ROOM)),
             "a bookcase in a larger room": beds.all(lambda b: bookcases.count() >= (
                 (room.volume((0, 1)) - BOOKCASE_AREA) * LARGER_ROOM).clip(0.0, LARGER_ROOM)),
-            "up to two wall shelves": shelves.count().in_range(0, 2),
+            "a wall shelf or two": shelves.count().in_range(1, 2),
             "a floor lamp at most": floor_lamps.count().in_range(0, 1),
             "a laundry basket at most": floor[S.Basket].count().in_range(0, 1),
             "shoes on the floor": floor[S.Shoes].count().in_range(0, 2),
@@ -118,9 +140,12 @@ def bedroom(room: ObjSet) -> Problem:
             "a lamp per nightstand": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
             "pictures": art.count().in_range(1, 3),
             "a mirror at most": mirrors.count().in_range(0, 1),
-            "books": books.count().in_range(0, 6),
-            "clothes": clothes.count().in_range(0, 4),
-            "decor": decor.count().in_range(0, 8),
+            "a wall clock at most": wall_clocks.count().in_range(0, 1),
+            "boxes on the wardrobe": wardrobes.all(
+                lambda w: stored_on_top.related_to(w, on_top).count() <= WARDROBE_TOP_BOXES),
+            "books": books.count().in_range(0, 10),
+            "clothes": clothes.count().in_range(0, 6),
+            "decor": decor.count().in_range(0, 12),
             "wardrobe doors free": fronts_free(wardrobes, blockers, room, margin=DOOR_SWING),
             "storage fronts free": fronts_free(dressers | desks | nightstands | bookcases, blockers,
                                                room),
@@ -133,7 +158,7 @@ def bedroom(room: ObjSet) -> Problem:
         score_terms={
             "nightstands match either side": beds.mean(
                 lambda b: reflectional_asymmetry(nightstands, b)).minimize(2),
-            "two nightstands": nightstands.count().maximize(1),
+            "two nightstands": nightstands.count().maximize(2),
             "the bed centred on its wall": beds.mean(lambda b: b.center_distance(room)).minimize(0.5),
             "bed side free": accessibility_cost(beds, blockers.excluding(S.Nightstand)).minimize(2),
             "free access to both sides": beds.mean(
@@ -149,12 +174,20 @@ def bedroom(room: ObjSet) -> Problem:
             "a furnished room": (bookcases.count() * 3 + dressers.count() + rugs.count()
                                  + plants.count() + floor_lamps.count()
                                  + floor_things.count()).maximize(0.3),
+            # a rug is added off centre, so its reward must outweigh the centring term
+            # (`rugs_centred`, weight 4) until a translate centres it
+            "a rug under the bed's foot": rugs.count().maximize(RUG_REWARD),
+            "a dresser as well in a larger room": (dressers.count() * (
+                room.volume((0, 1)) - DRESSER_AREA).clip(0.0, 1.0)).maximize(DRESSER_REWARD),
+            "a desk corner in a larger room": (desks.count() * (
+                room.volume((0, 1)) - DESK_AREA).clip(0.0, 1.0)).maximize(DESK_REWARD),
             "things on the floor by the walls": floor_things.mean(
                 lambda t: t.distance(room).hinge(0.0, 0.1)).minimize(2),
-            "things on the walls": (shelves.count() * 2 + art.count()
-                                    + mirrors.count()).maximize(0.3),
+            "things on the walls": (shelves.count() * 2 + art.count() + mirrors.count()
+                                    + wall_clocks.count() + stored_on_top.count()).maximize(0.6),
             "a lived-in room": (books.count() + clothes.count() + decor.count() + desk_lamps.count()
                                 + laptops.count()).maximize(0.3),
+            "things kept in the wardrobe and on the shelves": kept.count().maximize(0.3),
             "wall shelves within reach": shelves.mean(
                 lambda s: height(s).hinge(*SHELF_BAND)).minimize(2),
             "shelves free": accessibility_cost(bookcases, blockers).minimize(1),
