@@ -29,7 +29,8 @@ from indoorgen.programs.relations import (
 #: mounting heights (m, bottoms over the floor) putting the centres where NKBA Bathroom Planning
 #: Guideline 19 and common practice put them (the quality report's `accessory_heights`): a roll
 #: holder's centre at 0.6-0.75 m (it is 0.05-0.15 m tall), towel bars' at 1.0-1.2 m (a bar is
-#: 0.05 m tall, 0.45 m with a towel draped over it: the centre lands at 1.0-1.2 m for 0.05-0.44 m)
+#: 0.05 m tall, up to 0.44 m with a towel draped over it (`towel_bar`'s towel_drop): the
+#: centre lands at 1.0-1.2 m for 0.05-0.44 m)
 ROLL_HOLDER_BOTTOM = 0.62
 TOWEL_RAIL_BOTTOM = 0.978
 HOOK_BOTTOM = 1.6
