@@ -6,7 +6,8 @@
 Generates 1-storey homes for seeds seed0..seed0+homes1-1 and 2-storey homes for
 seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: the failure rate
 (homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
-commonest reasons are listed below the table), seconds per home (median, p90), rooms and objects
+commonest reasons are listed below the table, then each failed room's type, area and size),
+seconds per home (median, p90), rooms and objects
 per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
 (reachable share of walkable floor, and of all free floor: median and minimum, per storey too;
 homes with every room reachable; doors passable of all doors; unreachable rooms per home; large
@@ -21,6 +22,7 @@ import time
 from collections import Counter
 
 import numpy as np
+import shapely.geometry as sg
 
 from indoorgen.pipeline import HomeConfig, generate_home
 from indoorgen.quality.navigation import navigability, navigation_report
@@ -40,7 +42,29 @@ def one(seed: int, floors: int, preset: str, workers: int = 1) -> dict:
     return {"seed": seed, "seconds": t1 - t0, "rooms": len(gen.scene.rooms),
             "objects": len(gen.scene.objects), "report": rep, "navigability": nav,
             "reasons": gen.report["status"]["reasons"],
+            "failed_rooms": _failed_rooms(gen.report["status"]["reasons"], gen.scene.rooms),
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
+
+
+def _failed_rooms(reasons: list[str], rooms: dict) -> list[str]:
+    """Each room a hard constraint failed in, as `constraint @ type (area m^2, w x l m)`: the
+    room's size and its minimum rotated rectangle, to tell a room too small for its program
+    from a search that missed a layout."""
+    out = []
+    for reason in reasons:
+        if not (reason.startswith("room ") and ": hard constraint " in reason):
+            continue
+        name = reason[len("room "):].split(":", 1)[0]
+        room = rooms.get(name)
+        if room is None:
+            continue
+        poly = sg.Polygon(room.polygon)
+        xy = np.asarray(poly.minimum_rotated_rectangle.exterior.coords)
+        sides = sorted(float(np.hypot(*(xy[i + 1] - xy[i]))) for i in range(2))
+        shape = "" if len(room.polygon) == 4 else f", {len(room.polygon)} corners"
+        out.append(f"{_reason_kind(reason)} @ {room.room_type} ({poly.area:.1f} m^2, "
+                   f"{sides[0]:.1f} x {sides[1]:.1f} m{shape})")
+    return out
 
 
 def _progress(floors: int, r: dict) -> str:
@@ -149,6 +173,9 @@ def main() -> None:
                           + (f" (+{len(r['reasons']) - 4})" if len(r["reasons"]) > 4 else ""))
             for kind, count in failure_kinds(runs).most_common():
                 print(f"  {floors}-storey homes failed by {kind}: {count}")
+            for r in runs:
+                for line in r.get("failed_rooms", []):
+                    print(f"  {floors}-storey seed {r['seed']}: {line}")
     labels = list(dict.fromkeys(k for rows in columns.values() for k, _ in rows))
     table = [["", *(f"{f}-storey" for f in columns)]]
     table += [[label, *(dict(rows).get(label, "") for rows in columns.values())]
