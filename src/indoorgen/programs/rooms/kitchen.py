@@ -97,9 +97,9 @@ def kitchen(room: ObjSet) -> Problem:
             "a hood at most": hoods.count().in_range(0, 1),
             "a ceiling light": lights.count().in_range(1, 2),
             "a microwave at most": appliances_on_counters.count().in_range(0, 1),
-            "kitchenware out": kitchenware.count().in_range(1, 6),
-            "crockery out": tableware.count().in_range(0, 6),
-            "food out": food.count().in_range(0, 4),
+            "kitchenware out": kitchenware.count().in_range(1, 8),
+            "crockery out": tableware.count().in_range(0, 8),
+            "food out": food.count().in_range(0, 6),
         },
         score_terms={
             # continuous runs: every unit and appliance slid up to a neighbour along its wall
