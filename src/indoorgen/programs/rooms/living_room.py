@@ -120,7 +120,10 @@ def living_room(room: ObjSet) -> Problem:
             "a lamp on each side table": side_tables.all(
                 lambda t: table_lamps.related_to(t, on_top).count() <= 1),
             "bookcases": bookcases.count().in_range(1, 2),
-            "floor lamps": lamps.count().in_range(1, 2),
+            # a reading light at the seating: a floor lamp at an arm, or a lamp on a side table
+            # there (where the sofa stands between walls a floor lamp may find no arm free)
+            "floor lamps": lamps.count().in_range(0, 2),
+            "a lamp at the seating": lamps.count() + table_lamps.count() >= 1,
             "plants": plants.count().in_range(0, 2),
             "a ceiling light": lights.count().in_range(0, 1),
             "pictures": art.count().in_range(1, 3),
