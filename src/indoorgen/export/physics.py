@@ -179,12 +179,11 @@ def link_inertials(asset: Asset, materials: Mapping[str, str]) -> dict[str, Iner
         moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
     shells = _shell_volumes(asset)
     walls = wall_masses(asset, materials)
-    rendered = _render_moments(asset, materials)
     out = {}
     for link in asset.links + [lk for lk, _ in pieces if lk not in asset.links]:
         sel = [i for i, (lk, _) in enumerate(pieces) if lk == link and moments[i, 0] > 1e-12]
         out[link] = _link_inertial(asset, link, moments[sel], np.asarray(rho)[sel],
-                                   shells.get(link), walls.get(link), rendered.get(link))
+                                   shells.get(link), walls.get(link))
     return out
 
 
@@ -202,29 +201,10 @@ def _shell_volumes(asset: Asset) -> dict[str, float]:
     return {link: float(v) for link, v in zip(asset.links, vols, strict=False)}
 
 
-def _render_moments(asset: Asset, materials: Mapping[str, str]) -> dict[str, np.ndarray]:
-    """Each link's moments (10,) of its closed render shells, every face weighted by its
-    material's density (closed assets only; each part a closed shell of one material)."""
-    if not asset.closed or len(asset.mesh.faces) == 0:
-        return {}
-    per_slot = np.array([density_of(m) if (m := materials.get(slot)) else 1000.0
-                         for slot in asset.slots] or [1000.0])
-    rho = per_slot[np.minimum(face_slot_names(asset), len(per_slot) - 1)]
-    per_tri = volume_integrals(np.asarray(asset.mesh.triangles)) * rho[:, None]
-    if asset.face_links is None:
-        return {"base": per_tri.sum(axis=0)}
-    owner = np.asarray(asset.face_links, int)
-    sums = np.stack([np.bincount(owner, weights=per_tri[:, k], minlength=len(asset.links))
-                     for k in range(10)], axis=1)
-    return {link: sums[i] for i, link in enumerate(asset.links)}
-
-
 def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray,
-                   shell_volume: float | None, wall_mass: float | None,
-                   render: np.ndarray | None = None) -> Inertial:
+                   shell_volume: float | None, wall_mass: float | None) -> Inertial:
     """One link's inertial from its pieces' moments (P, 10) and densities (P,), its shell's
-    volume, its mass as a hollow wall (see module doc) and, for a closed asset, its render
-    shells' density-weighted moments (10,), which place the centre of mass and inertia."""
+    volume and its mass as a hollow wall (see module doc)."""
     if len(moments) == 0:
         faces = asset.link_faces(link)
         if len(faces):
@@ -237,13 +217,15 @@ def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray
                                   ext[0] ** 2 + ext[1] ** 2])
         return Inertial(m, c, box + np.eye(3) * MIN_INERTIA)
     vol_pieces = float(moments[:, 0].sum())
-    total, com, inertia = _about_com(rho @ moments)
-    if render is not None and render[0] > 0:
-        # the render shells' own moments: a hollow vase's or a lamp shade's thin walls, not
-        # their convex hulls, so the centre of mass sits where the material is
-        r_total, r_com, r_inertia = _about_com(render)
-        if np.all(np.linalg.eigvalsh(r_inertia) > 0):
-            com, inertia = r_com, r_inertia * (total / r_total)
+    total, (x, y, z), (xx, yy, zz), (xy, yz, zx) = (
+        float(rho @ moments[:, 0]), rho @ moments[:, 1:4], rho @ moments[:, 4:7],
+        rho @ moments[:, 7:10])
+    com = np.array([x, y, z]) / total
+    cx, cy, cz = com
+    inertia = np.array([
+        [yy + zz - total * (cy * cy + cz * cz), -(xy - total * cx * cy), -(zx - total * cz * cx)],
+        [-(xy - total * cx * cy), xx + zz - total * (cx * cx + cz * cz), -(yz - total * cy * cz)],
+        [-(zx - total * cz * cx), -(yz - total * cy * cz), xx + yy - total * (cx * cx + cy * cy)]])
     # mass: the shell's volume (the real material) at the pieces' mean density
     density = total / vol_pieces
     volume = vol_pieces
@@ -256,20 +238,6 @@ def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray
     inertia *= mass / total
     inertia = 0.5 * (inertia + inertia.T) + np.eye(3) * MIN_INERTIA
     return Inertial(mass, com, inertia)
-
-
-def _about_com(m: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
-    """(mass, centre of mass, inertia tensor about it) of mass-weighted moments `m` (10,) of
-    1, x, y, z, x^2, y^2, z^2, xy, yz, zx (see `volume_integrals`)."""
-    total = float(m[0])
-    com = np.asarray(m[1:4], float) / total
-    (xx, yy, zz), (xy, yz, zx) = m[4:7], m[7:10]
-    cx, cy, cz = com
-    inertia = np.array([
-        [yy + zz - total * (cy * cy + cz * cz), -(xy - total * cx * cy), -(zx - total * cz * cx)],
-        [-(xy - total * cx * cy), xx + zz - total * (cx * cx + cz * cz), -(yz - total * cy * cz)],
-        [-(zx - total * cz * cx), -(yz - total * cy * cz), xx + yy - total * (cx * cx + cy * cy)]])
-    return total, com, inertia
 
 
 def quat_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
