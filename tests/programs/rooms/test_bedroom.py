@@ -43,7 +43,7 @@ def test_the_large_furnitures_fronts_are_kept_free_while_the_large_stage_places_
     assert term_stage(problem.constraints["nightstand fronts free"]) == "medium"
 
 
-def test_a_bed_asks_for_a_nightstand_and_the_walls_for_a_shelf():
+def test_the_walls_ask_for_a_shelf():
     view = FakeView()
     view.add_room("r", [(0, 0), (3.5, 0), (3.5, 4), (0, 4)])
     view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(1, 1, 0.3), extents=(2, 1.6, 0.6),
@@ -51,5 +51,6 @@ def test_a_bed_asks_for_a_nightstand_and_the_walls_for_a_shelf():
              params={"drawers": False})
     problem = bedroom(scene()[S.Room].named("r"))
     bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
-    for name in ("one or two nightstands at the head", "a wall shelf or two"):
-        assert bounds[name].below and bounds[name].can_add, name
+    assert bounds["a wall shelf or two"].below and bounds["a wall shelf or two"].can_add
+    # a nightstand is wished for (a score term), not required: some beds have no room at the head
+    assert not bounds["up to two nightstands at the head"].below
