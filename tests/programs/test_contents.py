@@ -95,9 +95,23 @@ def test_a_kitchen_puts_things_away_wholly_inside_touching_nothing():
 def test_shoes_dishes_and_books_are_put_away_where_they_belong(tags, name, bound, relation):
     view = FakeView()
     view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
+    made = {"generator": "nightstand", "params": {"layout": "drawer_shelf"}} if (
+        S.Nightstand in tags) else {}
     view.add(name, {S.Object, S.Furniture, *tags}, center=(1, 1, 0.4), extents=(0.6, 0.6, 0.8),
-             relations=[(on_floor, "r")])
+             relations=[(on_floor, "r")], **made)
     room = scene()[S.Room].named("r")
     ev = Evaluator(contents(room, 1.0), view)
     b = {b.name: b for b in find_bounds(contents(room, 1.0), ev)}[bound]
     assert b.can_add and b.lo <= 0 and b.parents == ((relation, (name,)),)
+
+
+def test_a_nightstand_of_drawers_only_holds_nothing_inside():
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
+    view.add("nightstand_0", {S.Object, S.Furniture, S.Storage, S.Nightstand},
+             center=(1, 1, 0.3), extents=(0.4, 0.5, 0.6), relations=[(on_floor, "r")],
+             generator="nightstand", params={"layout": "two_drawers"})
+    room = scene()[S.Room].named("r")
+    ev = Evaluator(contents(room, 1.0), view)
+    bounds = {b.name: b for b in find_bounds(contents(room, 1.0), ev)}
+    assert not any(b.can_add for name, b in bounds.items() if name.startswith("bedside"))

@@ -4,7 +4,7 @@ from __future__ import annotations
 import pytest
 
 from indoorgen.constraints import scene
-from indoorgen.constraints.bounds import find_bounds
+from indoorgen.constraints.bounds import find_bounds, term_stage
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import against_wall, on_floor
@@ -31,3 +31,26 @@ def test_a_larger_bedroom_asks_for_a_wardrobe_and_a_bookcase_once_the_bed_stands
         b = bounds[name]
         assert b.below == (width * depth > area), name
         assert b.can_add
+
+
+def test_the_large_furnitures_fronts_are_kept_free_while_the_large_stage_places_it():
+    """A constraint counts from the stage of its latest set on: the dresser's, desk's and
+    bookcase's fronts must not wait for the nightstands (medium) to be checked."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4.5, 0), (4.5, 4), (0, 4)])
+    problem = bedroom(scene()[S.Room].named("r"))
+    assert term_stage(problem.constraints["storage fronts free"]) == "large"
+    assert term_stage(problem.constraints["nightstand fronts free"]) == "medium"
+
+
+def test_the_walls_ask_for_a_shelf():
+    view = FakeView()
+    view.add_room("r", [(0, 0), (3.5, 0), (3.5, 4), (0, 4)])
+    view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(1, 1, 0.3), extents=(2, 1.6, 0.6),
+             relations=[(on_floor, "r"), (against_wall, "r")], generator="bed",
+             params={"drawers": False})
+    problem = bedroom(scene()[S.Room].named("r"))
+    bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
+    assert bounds["a wall shelf or two"].below and bounds["a wall shelf or two"].can_add
+    # a nightstand is wished for (a score term), not required: some beds have no room at the head
+    assert not bounds["up to two nightstands at the head"].below
