@@ -17,16 +17,18 @@ from indoorgen.assets.shapes.vessels import SECTIONS, round_bottom
 from indoorgen.model.tags import Semantics as S
 
 FIGURES = ("stacked", "spindle", "ring")
+#: a pebble's height / width (before a stack is squeezed to its height)
+PEBBLE = 0.6
 
 
 def _stones(p: dict[str, Any], z0: float, h: float, r: float) -> list[m3d.Manifold]:
     """`n_stones` flattened spheres, widest at the bottom, each sunk into the one below by a
-    fifth of its height, the stack scaled to reach exactly z0 + h."""
+    fifth of its height; a stack taller than `h` is squeezed to end at z0 + h."""
     n = int(p["n_stones"])
     radii = r * np.linspace(1.0, p["taper"], n)
-    heights = 2 * radii
+    heights = 2 * radii * PEBBLE
     step = heights * 0.8
-    k = h / (step[:-1].sum() + heights[-1])  # scale so the stack ends at the top
+    k = min(h / (step[:-1].sum() + heights[-1]), 1.0)  # squeezed to fit the height, never stretched
     out, z = [], z0 - OVERLAP
     for i in range(n):
         hz = heights[i] * k
@@ -78,7 +80,7 @@ class Sculpture(PartsFactory):
         "plinth": Param(kind="choice", choices=("square", "round"), doc="plinth outline"),
         "plinth_width": Param(0.06, 0.14, doc="plinth width / diameter (m)"),
         "plinth_height": Param(0.01, 0.04, doc="plinth height (m)"),
-        "height": Param(0.12, 0.36, doc="total Z extent (m; a ring is at most as tall as wide)"),
+        "height": Param(0.12, 0.36, doc="Z extent, at most (m; a ring or a pebble stack may stand lower)"),
         "figure_width": Param(0.6, 0.95, doc="figure width / plinth width"),
         "n_stones": Param(2, 5, kind="int", doc="stacked: number of pebbles"),
         "taper": Param(0.4, 0.85, doc="stacked: top pebble width / bottom pebble width"),
