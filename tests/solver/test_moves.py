@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from indoorgen.assets import get_factory
 from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.model.tags import Semantics as S
@@ -306,3 +307,27 @@ def test_add_gives_an_object_the_params_its_context_fixes():
             assert st.objects[name].params["drawers"] is False
             return
     pytest.fail("no bed added")
+
+
+def test_pick_weighted_draws_equal_weights_as_pick_does():
+    st = make_state(5.0, 4.0)
+    a, b = move_context(st, "small", 3), move_context(st, "small", 3)
+    items = ["x", "y", "z", "w"]
+    assert [a.pick_weighted(items, [1.0] * 4) for _ in range(50)] == \
+        [b.pick(items) for _ in range(50)]
+
+
+def test_add_draws_small_decor_by_its_generators_frequency():
+    """Over the generators `add` chooses among for decor on furniture, each comes up in
+    proportion to its `frequency`: table clocks are rare, photo frames common."""
+    st = make_state(5.0, 4.0)
+    ctx = move_context(st, "small", 7)
+    gens = ctx.generators(frozenset({S.Decor, S.SmallObject}), frozenset({S.Book, S.Balloon}))
+    assert {"photo_frame", "sculpture", "decor_bowl", "table_clock", "candle"} <= set(gens)
+    weights = [get_factory(g).frequency for g in gens]
+    n = 4000
+    drawn = [ctx.pick_weighted(gens, weights) for _ in range(n)]
+    for g, w in zip(gens, weights, strict=True):
+        expected = n * w / sum(weights)
+        assert abs(drawn.count(g) - expected) < 4 * np.sqrt(expected), g
+    assert drawn.count("table_clock") * 5 < drawn.count("photo_frame")

@@ -263,6 +263,9 @@ class AssetFactory:
     #: weighted material choices per slot ({"legs": {"oak": 2, "brushed_steel": 1}}), overriding
     #: the material library's defaults for slots of the same name
     material_choices: ClassVar[dict[str, dict[str, float]]] = {}
+    #: relative weight of this generator when the solver draws one for a tag set (`solver/moves`
+    #: `add`): how common the kind is among its peers (a home holds one or two table clocks)
+    frequency: ClassVar[float] = 1.0
 
     def sample_params(self, rng: np.random.Generator) -> dict[str, Any]:
         """Draw every documented parameter from its range (in sorted-name order, for stability)."""

@@ -92,6 +92,15 @@ class MoveContext:
         """One of `items`, uniformly at random."""
         return items[int(self.rng.integers(len(items)))]
 
+    def pick_weighted(self, items: Sequence[_T], weights: Sequence[float]) -> _T:
+        """One of `items`, drawn with relative `weights` (one uniform draw; equal weights draw
+        exactly as `pick` does)."""
+        if len(set(weights)) <= 1:
+            return self.pick(items)
+        cum = np.cumsum(np.asarray(weights, float))
+        i = int(np.searchsorted(cum, self.rng.random() * cum[-1], side="right"))
+        return items[min(i, len(items) - 1)]
+
 
 @dataclass(frozen=True, kw_only=True)
 class MoveOutcome:
@@ -322,7 +331,7 @@ def add_to(ctx: MoveContext, b: Bound, tries: int | None = None) -> MoveOutcome 
         gen, seed, params = like.generator, like.seed, dict(like.params)
         fac = get_factory(gen)
     else:
-        gen = ctx.pick(gens)
+        gen = ctx.pick_weighted(gens, [get_factory(g).frequency for g in gens])
         fac = get_factory(gen)
         seed = child_seed(ctx.rng)
         params = {**fac.sample_params(np.random.default_rng(seed)), **dict(b.context.params)}

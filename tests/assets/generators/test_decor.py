@@ -1,5 +1,6 @@
 """Decor: wall pieces' backs on the wall, mirrors, canvases, curtains, rugs, aquariums,
-balloons, candles and clocks, beyond the generic contract in test_generators.py."""
+balloons, candles, clocks, photo frames, sculptures and decorative bowls, beyond the generic
+contract in test_generators.py."""
 from __future__ import annotations
 
 import numpy as np
@@ -13,6 +14,7 @@ from support.assetcheck import (
     assert_objects_tagged,
     build,
     choice_cases,
+    make,
     slot_faces,
     slot_mesh,
     surface_gap,
@@ -20,7 +22,7 @@ from support.assetcheck import (
 )
 
 DECOR = ["rug_round", "canvas_art", "mirror", "floor_mirror", "aquarium", "curtain", "clock", "table_clock",
-         "balloon", "candle"]
+         "balloon", "candle", "photo_frame", "sculpture", "decor_bowl"]
 WALL = ["canvas_art", "mirror", "clock", "curtain"]
 SEEDS = range(5)
 
@@ -147,3 +149,40 @@ def test_clock_hands_point_at_the_time():
     # far up there is only the (vertical) minute hand; far right only the hour hand
     assert np.abs(rel[rel[:, 2] > 0.55 * r, 1]).max() < slack
     assert np.abs(rel[rel[:, 1] > 0.3 * r, 2]).max() < slack
+
+
+def test_shelf_decor_joins_decor_but_not_tableware():
+    for name in ("photo_frame", "sculpture", "decor_bowl"):
+        tags = get_factory(name).tags
+        assert {Semantics.Decor, Semantics.SmallObject} <= tags
+        assert not tags & {Semantics.Bowl, Semantics.Tableware, Semantics.Book, Semantics.Balloon}
+
+
+def test_strut_photo_frame_stands_on_its_edge_and_the_struts_foot():
+    for seed in SEEDS:
+        _, p, a = make("photo_frame", seed, style="strut")
+        canvas = slot_mesh(a, "canvas")
+        # the picture faces +X, just behind the frame's front
+        assert a.mesh.bounds[1, 0] - canvas.bounds[1, 0] == pytest.approx(p["recess"], abs=TOL)
+        low = a.mesh.vertices[a.mesh.vertices[:, 2] < 1e-6]
+        # contact at the frame's front edge and at the strut's foot, reach x height behind it
+        spread = low[:, 0].max() - low[:, 0].min()
+        assert spread == pytest.approx(p["depth"] + p["strut_reach"] * p["height"], abs=0.01)
+        assert a.mesh.body_count == 1
+
+
+def test_sculpture_figure_stands_on_its_plinth():
+    for figure in ("stacked", "spindle", "ring"):
+        _, p, a, _ = variant("sculpture", figure=figure)
+        fig, base = slot_mesh(a, "sculpture"), slot_mesh(a, "plinth")
+        assert fig.bounds[0, 2] == pytest.approx(p["plinth_height"], abs=0.003)
+        assert np.all(np.abs(fig.bounds[:, :2]) <= p["plinth_width"] / 2 + TOL)
+        assert base.bounds[0, 2] == pytest.approx(0.0, abs=1e-6) and a.mesh.body_count == 1
+
+
+def test_decor_tray_is_low_and_wide_with_a_well():
+    _, p, a, _ = variant("decor_bowl", style="tray")
+    assert a.extents[2] == pytest.approx(p["tray_height"], abs=TOL)
+    assert a.extents[0] == pytest.approx(p["tray_length"], abs=TOL)
+    (well,) = a.surfaces_of(Subpart.Interior)
+    assert surface_gap(a, well) < TOL and well.origin[2] == pytest.approx(p["base_thickness"])

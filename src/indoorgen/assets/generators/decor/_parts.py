@@ -1,6 +1,7 @@
 """Decor's shared shape helpers. Flat outlines in the wall plane are `CrossSection`s in (y, z)
 extruded along X (`wall_outline`, `yz_extrude`) with a `back_surface` where they meet the wall;
-`bbox_part` is the one-box placeholder of a small, intricate object."""
+`framed_picture` is a picture in its frame (wall art, standing photo frames); `bbox_part` is the
+one-box placeholder of a small, intricate object."""
 from __future__ import annotations
 
 import math
@@ -10,8 +11,9 @@ import numpy as np
 import shapely.geometry as sg
 
 from indoorgen.assets.protocol import Surface
+from indoorgen.assets.shapes.frames import frame
 from indoorgen.assets.shapes.outlines import ccw
-from indoorgen.assets.shapes.primitives import Part, box_between
+from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between
 from indoorgen.model.tags import Subpart
 
 
@@ -65,3 +67,27 @@ def bbox_part(parts: list[Part], slot: str) -> Part:
     objects: exact bounds, contains everything)."""
     bbs = np.array([q.solid.bounding_box() for q in parts])
     return Part(box_between(bbs[:, :3].min(axis=0), bbs[:, 3:].max(axis=0)), slot)
+
+
+def framed_picture(W: float, H: float, D: float, frame_width: float, mat_width: float,
+                   recess: float, detail: bool) -> list[Part]:
+    """A picture W (Y) by H (Z) standing on z=0, D deep along X and facing +X: a backing board
+    at the back, the frame ring, an optional mat and the print recessed by `recess` behind the
+    frame's front (placeholder: the backing and one block). Slots: backing, frame, mat, canvas."""
+    fw = min(frame_width, 0.2 * min(W, H))
+    bk = 0.004
+    out = [Part(box_between((-D / 2, -W / 2, 0.0), (-D / 2 + bk, W / 2, H)), "backing")]
+    if not detail:
+        out.append(Part(box_between((-D / 2 + bk - OVERLAP, -W / 2, 0.0), (D / 2, W / 2, H)), "frame"))
+        return out
+    out.append(Part(frame(W, H, fw, D - bk + OVERLAP, (bk / 2 - OVERLAP / 2, 0, H / 2)), "frame"))
+    xf = D / 2 - recess  # picture front
+    mw = min(mat_width, 0.25 * min(W, H) - fw)
+    iw, ih = W - 2 * fw + 2 * OVERLAP, H - 2 * fw + 2 * OVERLAP
+    if mw > 0.005:
+        out.append(Part(frame(iw, ih, mw + OVERLAP, xf + 0.001 - (-D / 2 + bk - OVERLAP),
+                              ((xf + 0.001 + (-D / 2 + bk - OVERLAP)) / 2, 0, H / 2)), "mat"))
+        iw, ih = iw - 2 * mw, ih - 2 * mw
+    out.append(Part(box_between((-D / 2 + bk - OVERLAP, -iw / 2, H / 2 - ih / 2),
+                                (xf, iw / 2, H / 2 + ih / 2)), "canvas"))
+    return out

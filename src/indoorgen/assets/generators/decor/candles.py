@@ -35,6 +35,7 @@ class Candle(PartsFactory):
     a wick and an emissive flame."""
 
     name = "candle"
+    frequency = 0.5  # fewer than frames, vases and plants
     tags = frozenset({S.Object, S.SmallObject, S.Decor, S.Candle})
     size_class = "small"
     slots = ["wax", "metal", "glass", "fabric", "emissive"]

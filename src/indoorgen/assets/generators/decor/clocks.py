@@ -145,6 +145,7 @@ class TableClock(PartsFactory):
     screen."""
 
     name = "table_clock"
+    frequency = 0.2  # a home holds one or two
     tags = frozenset({S.Object, S.SmallObject, S.Decor, S.Clock})
     size_class = "small"
     slots = ["body", "paper", "metal", "screen"]

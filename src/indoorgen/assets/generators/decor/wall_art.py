@@ -6,12 +6,11 @@ from typing import Any
 
 import shapely.geometry as sg
 
-from indoorgen.assets.generators.decor._parts import back_surface
+from indoorgen.assets.generators.decor._parts import back_surface, framed_picture
 from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Param, Surface
 from indoorgen.assets.registry import register
-from indoorgen.assets.shapes.frames import frame
-from indoorgen.assets.shapes.primitives import OVERLAP, SMALL_OVERLAP, Part, bevel_box, box, box_between
+from indoorgen.assets.shapes.primitives import SMALL_OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.model.tags import Semantics as S
 
 
@@ -40,23 +39,7 @@ class WallArt(PartsFactory):
         W, H, D = p["width"], p["height"], p["depth"]
         if p["style"] == "canvas":
             return [Part(box((D, W, H), (0, 0, H / 2)), "canvas")]
-        fw = min(p["frame_width"], 0.2 * min(W, H))
-        bk = 0.004
-        out = [Part(box_between((-D / 2, -W / 2, 0.0), (-D / 2 + bk, W / 2, H)), "backing")]
-        if not detail:
-            out.append(Part(box_between((-D / 2 + bk - OVERLAP, -W / 2, 0.0), (D / 2, W / 2, H)), "frame"))
-            return out
-        out.append(Part(frame(W, H, fw, D - bk + OVERLAP, (bk / 2 - OVERLAP / 2, 0, H / 2)), "frame"))
-        xf = D / 2 - p["recess"]  # picture front
-        mw = min(p["mat_width"], 0.25 * min(W, H) - fw)
-        iw, ih = W - 2 * fw + 2 * OVERLAP, H - 2 * fw + 2 * OVERLAP
-        if mw > 0.005:
-            out.append(Part(frame(iw, ih, mw + OVERLAP, xf + 0.001 - (-D / 2 + bk - OVERLAP),
-                                  ((xf + 0.001 + (-D / 2 + bk - OVERLAP)) / 2, 0, H / 2)), "mat"))
-            iw, ih = iw - 2 * mw, ih - 2 * mw
-        out.append(Part(box_between((-D / 2 + bk - OVERLAP, -iw / 2, H / 2 - ih / 2),
-                                    (xf, iw / 2, H / 2 + ih / 2)), "canvas"))
-        return out
+        return framed_picture(W, H, D, p["frame_width"], p["mat_width"], p["recess"], detail)
 
 
 @register
