@@ -138,7 +138,7 @@ def _graph(p: Path) -> None:
 
 
 def _polygon(p: Path) -> None:
-    ns = argparse.Namespace(room=None, size=None, program=None, check=False, preset="default",
+    ns = argparse.Namespace(room=None, size=None, program=None, check=False, preset="default", style=None,
                             polygon=p.read_text())
     validate_polygon(_room_config(ns).polygon)
 
