@@ -38,7 +38,7 @@ from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
 from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.export.convex import convex_parts, sound_pieces
-from indoorgen.export.physics import Inertial, link_inertials
+from indoorgen.export.physics import SOLID_KINDS, Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -116,7 +116,8 @@ class ExportBundle:
         key = ("inertial", self.proto_key(name))
         if key not in self._memo:
             slot_materials = {slot: ref.name for slot, ref in self.materials[name].items()}
-            self._memo[key] = link_inertials(self.assets[name], slot_materials)
+            hollow = SOLID_KINDS.isdisjoint(self.scene.objects[name].tags)
+            self._memo[key] = link_inertials(self.assets[name], slot_materials, hollow=hollow)
         inertials: dict[str, Inertial] = self._memo[key]
         return inertials
 

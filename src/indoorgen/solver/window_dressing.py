@@ -64,7 +64,11 @@ def dress_windows(state: State, room: str, generator: str, rng: np.random.Genera
         if wall is None:
             continue
         base = fac.sample_params(np.random.default_rng(seed))
-        for params, hem in _sizes(base, bounds, wall, floor, rng):
+        # a window whose frame reaches further into the room than the rod may stand off the
+        # wall (its box taken along a slanted or curved wall) is left bare
+        sizes = [(p, h) for p, h in _sizes(base, bounds, wall, floor, rng)
+                 if p["standoff"] <= fac.params["standoff"].high]
+        for params, hem in sizes:
             name = _hang(state, room, generator, fac.tags, params, seed, wall, bounds, hem,
                          namer, stage)
             if name is not None:
