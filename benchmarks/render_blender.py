@@ -73,6 +73,7 @@ def _hide_ceilings(bpy) -> None:
     for ob in bpy.data.objects:
         if "ceiling" in ob.name.lower() or "ceiling" in str(ob.get("indoorgen:name", "")).lower():
             ob.hide_render = True
+            ob.hide_set(True)  # out of the sight-line rays too
 
 
 def _camera(bpy, eye: tuple[float, float, float], target: tuple[float, float, float],
@@ -89,6 +90,28 @@ def _camera(bpy, eye: tuple[float, float, float], target: tuple[float, float, fl
     cam.rotation_euler = (Vector(target) - Vector(eye)).to_track_quat("-Z", "Y").to_euler()
     bpy.context.scene.camera = cam
     return cam
+
+
+def _open_length(bpy, eye, target) -> float:
+    """How far the straight line from `target` towards `eye` runs before it meets geometry,
+    as a share of their distance (1.0: the camera sees the room's centre)."""
+    from mathutils import Vector
+
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    span = Vector(eye) - Vector(target)
+    hit, where, *_ = bpy.context.scene.ray_cast(depsgraph, Vector(target), span.normalized(),
+                                                distance=span.length)
+    return (where - Vector(target)).length / span.length if hit else 1.0
+
+
+def _clear_corner(bpy, lo, hi, target) -> tuple[float, float, float]:
+    """The high corner of a room's box from which the camera sees its centre: of the four
+    corners, the one whose sight line is open (not inside a wardrobe or behind a wall), the
+    farthest along it where none is."""
+    height = lo[2] + min(2.3, max(1.2, hi[2] - lo[2] - 0.2))
+    corners = [(lo[0] + fx * (hi[0] - lo[0]), lo[1] + fy * (hi[1] - lo[1]), height)
+               for fx in (0.15, 0.85) for fy in (0.15, 0.85)]
+    return max(corners, key=lambda eye: _open_length(bpy, eye, target))
 
 
 def _render(bpy, path: Path) -> None:
@@ -128,9 +151,8 @@ def main(argv: list[str] | None = None) -> int:
             log.warning("no objects for room %s", room)
             continue
         lo, hi = boxes[room]
-        cx, cy = (lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2
-        eye = (lo[0] + 0.15 * (hi[0] - lo[0]), lo[1] + 0.15 * (hi[1] - lo[1]), lo[2] + 2.3)
-        _camera(bpy, eye, (cx, cy, lo[2] + 0.5))
+        target = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2] + 0.5)
+        _camera(bpy, _clear_corner(bpy, lo, hi, target), target)
         path = out / f"{room}.png"
         _render(bpy, path)
         done[room] = str(path)
