@@ -5,6 +5,7 @@ import numpy as np
 import trimesh
 
 from indoorgen.assets import get_factory
+from indoorgen.assets.protocol import Asset
 from indoorgen.export.bundle import object_materials
 from indoorgen.export.physics import (
     SOLID_KINDS,
@@ -14,7 +15,6 @@ from indoorgen.export.physics import (
     slot_wall_masses,
     volume_integrals,
 )
-from indoorgen.assets.protocol import Asset
 from indoorgen.model.scene import Pose, SceneObject
 
 
