@@ -5,13 +5,15 @@ import numpy as np
 import trimesh
 
 from indoorgen.assets import get_factory
+from indoorgen.assets.protocol import Asset
 from indoorgen.export.bundle import object_materials
 from indoorgen.export.physics import (
+    SOLID_KINDS,
     density_of,
     link_inertials,
     piece_slots,
+    slot_wall_masses,
     volume_integrals,
-    wall_masses,
 )
 from indoorgen.model.scene import Pose, SceneObject
 
@@ -39,38 +41,103 @@ def test_volume_integrals_match_trimesh_on_posed_solids():
         assert np.allclose(inertia, ref.inertia, atol=1e-9)
 
 
-def test_link_inertials_sum_their_pieces():
-    """A dresser's links: mass is the shell volume (capped by the pieces') at the pieces' mean
-    density, capped by the link's mass as a hollow wall, and the centre of mass is the
-    density-weighted mean of the pieces' centres."""
+def _dresser() -> tuple:
     f = get_factory("dresser")
     params = f.sample_params(np.random.default_rng(3))
     asset = f.create(params)
     obj = SceneObject("dresser_0", "dresser", params, 3, Pose(), [], "room")
-    mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
+    return asset, {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
+
+
+def test_link_inertials_sum_their_pieces():
+    """A dresser's links: mass is the shell volume (capped by the pieces') at the pieces' mean
+    density, capped per material by its pieces' mass as a hollow wall; the centre of mass is
+    the closed render shell's, and the inertia the pieces' moved there (parallel axes)."""
+    asset, mats = _dresser()
     got = link_inertials(asset, mats)
-    walls = wall_masses(asset, mats)
+    walls = slot_wall_masses(asset, mats)
     slots = piece_slots(asset)
     assert set(got) == set(asset.links) and len(asset.links) > 1
     for link in asset.links:
-        pieces = [(p, asset.slots[s] if s < len(asset.slots) else "body")
-                  for (lk, p), s in zip(asset.collision, slots, strict=True) if lk == link]
-        rho = np.array([density_of(mats[s]) if s in mats else 1000.0 for _, s in pieces])
+        pieces = [(p, s) for (lk, p), s in zip(asset.collision, slots, strict=True) if lk == link]
+        rho = np.array([density_of(mats[asset.slots[s]]) for _, s in pieces])
         vols = np.array([p.volume for p, _ in pieces])
-        coms = np.array([p.center_mass for p, _ in pieces])
-        assert np.allclose(got[link].com, (rho * vols) @ coms / (rho * vols).sum(), atol=1e-9)
         shell = asset.link_mesh(link)
-        volume = min(shell.volume, vols.sum()) if shell.is_volume else vols.sum()
+        assert shell.is_volume
+        lo, hi = shell.bounds
+        assert np.all((got[link].com >= lo) & (got[link].com <= hi))
+        volume = min(shell.volume, vols.sum())
         density = (rho * vols).sum() / vols.sum()
-        assert np.isclose(got[link].mass, min(volume * density, walls[link]), rtol=1e-6)
-        w = np.linalg.eigvalsh(got[link].inertia)
-        assert np.all(w > 0)
+        solid = np.bincount([s for _, s in pieces], weights=rho * vols,
+                            minlength=len(asset.slots))
+        owned = np.isin(np.arange(len(asset.slots)), [s for _, s in pieces])
+        hollow = np.where(owned, np.minimum(solid, walls[link]), walls[link]).sum()
+        assert np.isclose(got[link].mass, min(volume * density, hollow), rtol=1e-6)
+        # the pieces' inertia about the pieces' centre, moved to the shell's
+        piece_com = (rho * vols) @ np.array([p.center_mass for p, _ in pieces]) / (rho * vols).sum()
+        about = [trimesh.Trimesh(p.vertices - piece_com, p.faces) for p, _ in pieces]
+        moved = sum(r * (m.moment_inertia + m.volume * (
+            (m.center_mass @ m.center_mass) * np.eye(3) - np.outer(m.center_mass, m.center_mass)))
+            for m, r in zip(about, rho, strict=True))
+        d = got[link].com - piece_com
+        want = moved * got[link].mass / (rho * vols).sum() + got[link].mass * (
+            (d @ d) * np.eye(3) - np.outer(d, d))
+        assert np.allclose(got[link].inertia, want, atol=1e-6)
+
+
+def test_centre_of_mass_is_the_shells_not_the_hulls():
+    """A lamp: a 2 cm foot under a shade whose convex piece is a solid drum. The centre of mass
+    is the render shell's centroid, low in the foot; the pieces' would sit in the drum."""
+    foot = trimesh.creation.box([0.2, 0.2, 0.02])
+    foot.apply_translation([0, 0, 0.01])
+    outer = trimesh.creation.cylinder(0.15, 0.2, sections=32)
+    inner = trimesh.creation.cylinder(0.148, 0.2, sections=32)
+    inner.invert()
+    shade = trimesh.util.concatenate([outer, inner])
+    shade.apply_translation([0, 0, 0.4])
+    mesh = trimesh.util.concatenate([foot, shade])
+    slots = np.repeat([0, 1], [len(foot.faces), len(shade.faces)])
+    asset = Asset(mesh, [], face_slots=slots, slots=["metal", "shade"],
+                  collision=[("base", foot), ("base", outer.copy().apply_translation([0, 0, 0.4]))])
+    mats = {"metal": "brushed_steel", "shade": "paper"}
+    got = link_inertials(asset, mats, hollow=False)["base"]
+    m_foot, m_shade = foot.volume, shade.volume
+    want = (m_foot * 0.01 + m_shade * 0.4) / (m_foot + m_shade)
+    assert np.allclose(got.com, [0, 0, want], atol=1e-6)
+    assert got.com[2] < 0.2  # the pieces' centre: 0.38 m
+    assert _triangle_inequality(got.inertia)
+
+
+def _triangle_inequality(inertia: np.ndarray) -> bool:
+    a, b, c = np.sort(np.linalg.eigvalsh(inertia))
+    return bool(a > 0 and a + b >= c * (1 - 1e-9))
+
+
+def test_inertias_are_physical_and_lamps_stand_on_their_feet():
+    """Every link's inertia is a physical tensor (MuJoCo checks A + B >= C), and a table lamp's
+    centre of mass lies in its weighted foot, not in its shade's hull (issue 12: lamps tipped
+    in Newton)."""
+    for gen in ("table_lamp", "floor_lamp", "desk_lamp", "shower_enclosure", "table_clock",
+                "dresser", "sofa"):
+        f = get_factory(gen)
+        for seed in range(4):
+            params = f.sample_params(np.random.default_rng(seed))
+            asset = f.create(params)
+            obj = SceneObject(f"{gen}_0", gen, params, seed, Pose(), [], "room")
+            mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
+            hollow = SOLID_KINDS.isdisjoint(f.tags)
+            for link, inertial in link_inertials(asset, mats, hollow=hollow).items():
+                assert _triangle_inequality(inertial.inertia), (gen, seed, link)
+                if gen in ("table_lamp", "floor_lamp"):  # the pieces' centre: above half
+                    height = float(asset.extents[2])
+                    assert inertial.com[2] < 0.47 * height, (seed, inertial.com, height)
 
 
 #: household objects' real masses (kg): (generator, lightest, heaviest), from retailers' sheets
 REAL_MASSES = [("sofa", 25.0, 110.0), ("dining_chair", 3.0, 12.0), ("glass_tumbler", 0.1, 0.5),
                ("wineglass", 0.08, 0.4), ("book", 0.1, 2.5), ("fridge", 40.0, 160.0),
-               ("toilet", 15.0, 50.0), ("tv", 4.0, 35.0), ("can", 0.05, 1.0)]
+               ("toilet", 15.0, 50.0), ("tv", 4.0, 35.0), ("can", 0.05, 1.0),
+               ("shower_enclosure", 40.0, 200.0)]
 
 
 def test_masses_are_real_objects_masses():

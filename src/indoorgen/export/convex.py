@@ -78,6 +78,20 @@ def convex_parts(mesh: trimesh.Trimesh, max_pieces: int = 256) -> list[trimesh.T
     return sound_pieces(out)
 
 
+def box_bounds(piece: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray] | None:
+    """(centre, size) of `piece` if it is an axis-aligned box (8 corners filling their
+    bounds), else None: simulators collide such a piece as a box primitive."""
+    v = np.asarray(piece.vertices, float)
+    if len(v) != 8:
+        return None
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    size = hi - lo
+    # a convex solid inside its bounds that fills them is those bounds
+    if np.any(size <= 0) or abs(abs(piece.volume) - np.prod(size)) > 1e-9 + 1e-6 * np.prod(size):
+        return None
+    return (lo + hi) / 2, size
+
+
 def sound_pieces(pieces: list[trimesh.Trimesh]) -> list[trimesh.Trimesh]:
     """`pieces` each made sound by `sound_piece`, slivers left out."""
     return [p for p in map(sound_piece, pieces) if p is not None]

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
-from indoorgen.export.convex import sound_piece
+from indoorgen.export.convex import box_bounds, sound_piece
 from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece
 from indoorgen.export.textures import TextureStore
 
@@ -109,17 +109,11 @@ class CollisionGeom:
 
 
 def _box_of(piece) -> CollisionGeom | None:
-    """The box primitive of `piece` if it is an axis-aligned box (8 corners filling their
-    bounds), else None."""
-    v = np.asarray(piece.vertices, float)
-    if len(v) != 8:
+    """The box primitive of `piece` if it is an axis-aligned box (`convex.box_bounds`)."""
+    box = box_bounds(piece)
+    if box is None:
         return None
-    lo, hi = v.min(axis=0), v.max(axis=0)
-    size = hi - lo
-    # a convex solid inside its bounds that fills them is those bounds
-    if np.any(size <= 0) or abs(abs(piece.volume) - np.prod(size)) > 1e-9 + 1e-6 * np.prod(size):
-        return None
-    return CollisionGeom("", tuple(((lo + hi) / 2).tolist()), tuple(size.tolist()))
+    return CollisionGeom("", tuple(box[0].tolist()), tuple(box[1].tolist()))
 
 
 def collision_geoms(pieces, directory: Path, stem: str, rel: str) -> list[CollisionGeom]:

@@ -6,8 +6,14 @@ material, so a hollow vase weighs what a vase weighs), its density the volume-we
 its convex pieces' materials (a piece takes the material slot of the render faces lying on
 it). A render shell is often the outside of a hollow thing (a fridge's sheet-steel casing, a
 sofa's padded fabric, a toilet's ceramic walls), so a link never weighs more than its surface
-as a wall of its materials' usual thickness (`WALL`): the sum of face area x wall x density.
-The centre of mass and inertia come from the convex pieces, scaled to that mass.
+as a wall of its materials' usual thickness (`WALL`): per material, the lesser of its pieces'
+solid mass and its render faces' area x wall x density (so a solid shower tray and the thin
+panels standing on it are each capped by what they are, not by the other's allowance; a
+material that owns no piece, such as a can's label, counts as its wall).
+The centre of mass comes from the closed render shells (the real material: a lamp's heavy foot,
+not its shade's hull weighed as a solid drum; a link's shell is one union of its parts, so it
+is the material's centroid at one density); the inertia from the convex pieces, scaled to
+that mass and moved to that centre (parallel axes), so it is always a physical tensor.
 """
 from __future__ import annotations
 
@@ -99,17 +105,24 @@ def wall_of(material: str) -> float:
 def wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, float]:
     """Each link's mass (kg) as a hollow wall: sum of its render faces' area x `wall_of` x
     density of the face's material (slot -> material name in `materials`)."""
+    return {link: float(v.sum()) for link, v in slot_wall_masses(asset, materials).items()}
+
+
+def slot_wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, np.ndarray]:
+    """Each link's mass (kg) as a hollow wall per material slot (an array indexed like
+    `asset.slots`, at least one entry): its render faces' area x `wall_of` x density."""
     if len(asset.mesh.faces) == 0:
         return {}
     per_slot = np.array([(density_of(m) * wall_of(m)) if (m := materials.get(slot)) else
                          1000.0 * SOLID_WALL for slot in asset.slots] or [1000.0 * SOLID_WALL])
     fs = np.minimum(face_slot_names(asset), len(per_slot) - 1)
     per_face = np.asarray(asset.mesh.area_faces) * per_slot[fs]
-    if asset.face_links is None:
-        return {"base": float(per_face.sum())}
-    sums = np.bincount(np.asarray(asset.face_links, int), weights=per_face,
-                       minlength=len(asset.links))
-    return {link: float(v) for link, v in zip(asset.links, sums, strict=False)}
+    links = (np.zeros(len(fs), int) if asset.face_links is None
+             else np.asarray(asset.face_links, int))
+    names = asset.links if asset.face_links is not None else ["base"]
+    sums = np.zeros((len(names), len(per_slot)))
+    np.add.at(sums, (links, fs), per_face)
+    return {link: sums[i] for i, link in enumerate(names)}
 
 
 def piece_slots(asset: Asset) -> list[int]:
@@ -168,13 +181,10 @@ def link_inertials(asset: Asset, materials: Mapping[str, str], *, hollow: bool =
     All convex pieces' moments come from one vectorised pass over their triangles; a link's
     density-weighted moments are the sums over its pieces."""
     slots = piece_slots(asset)
-    pieces = [(link, piece) for link, piece in asset.collision if len(piece.faces)]
-    rho = []
-    for (_link, piece), si in zip(asset.collision, slots, strict=True):
-        if len(piece.faces):
-            slot = asset.slots[si] if si < len(asset.slots) else "body"
-            material = materials.get(slot)
-            rho.append(density_of(material) if material else 1000.0)
+    kept = [i for i, (_, piece) in enumerate(asset.collision) if len(piece.faces)]
+    pieces = [asset.collision[i] for i in kept]
+    slot_of = np.array([slots[i] for i in kept], int)
+    rho = np.array([_slot_density(asset, materials, si) for si in slot_of])
     moments = np.zeros((len(pieces), 10))
     if pieces:
         tris = np.concatenate([np.asarray(p.vertices)[np.asarray(p.faces)] for _, p in pieces])
@@ -183,48 +193,74 @@ def link_inertials(asset: Asset, materials: Mapping[str, str], *, hollow: bool =
         for k in range(10):
             moments[:, k] = np.bincount(owner, weights=per_tri[:, k], minlength=len(pieces))
         moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
-    shells = _shell_volumes(asset)
-    walls = wall_masses(asset, materials) if hollow else {}
+    shells = _shell_moments(asset)
+    walls = slot_wall_masses(asset, materials) if hollow else {}
     out = {}
     for link in asset.links + [lk for lk, _ in pieces if lk not in asset.links]:
         sel = [i for i, (lk, _) in enumerate(pieces) if lk == link and moments[i, 0] > 1e-12]
-        out[link] = _link_inertial(asset, link, moments[sel], np.asarray(rho)[sel],
-                                   shells.get(link), walls.get(link))
+        if not sel:
+            out[link] = _placeholder_inertial(asset, link)
+            continue
+        out[link] = _link_inertial(moments[sel], rho[sel], slot_of[sel], shells.get(link),
+                                   walls.get(link))
     return out
 
 
-def _shell_volumes(asset: Asset) -> dict[str, float]:
-    """Enclosed volume of each link's render shell, for closed assets (whose links are closed
-    shells); empty otherwise."""
+def _slot_density(asset: Asset, materials: Mapping[str, str], slot_index: int) -> float:
+    """Density (kg/m^3) of the material of slot `slot_index` (1000 if it has none)."""
+    slot = asset.slots[slot_index] if slot_index < len(asset.slots) else "body"
+    material = materials.get(slot)
+    return density_of(material) if material else 1000.0
+
+
+def _shell_moments(asset: Asset) -> dict[str, tuple[float, np.ndarray]]:
+    """Each link's render shell, for closed assets (whose links are closed shells): (enclosed
+    volume, its centroid); empty otherwise. A link's shell is the union of its parts, so one
+    surface often bounds several materials: the centroid is the material's at one density.
+    Links whose shell encloses nothing, or whose centroid falls outside their bounds, are left
+    out."""
     if not asset.closed or len(asset.mesh.faces) == 0:
         return {}
     tris = np.asarray(asset.mesh.triangles)
-    per_tri = np.einsum("ij,ij->i", tris[:, 0], np.cross(tris[:, 1], tris[:, 2])) / 6.0
-    if asset.face_links is None:
-        return {"base": float(per_tri.sum())}
-    vols = np.bincount(np.asarray(asset.face_links, int), weights=per_tri,
-                       minlength=len(asset.links))
-    return {link: float(v) for link, v in zip(asset.links, vols, strict=False)}
+    per_tri = volume_integrals(tris)[:, :4]
+    links = (np.zeros(len(tris), int) if asset.face_links is None
+             else np.asarray(asset.face_links, int))
+    out = {}
+    for i, link in enumerate(asset.links if asset.face_links is not None else ["base"]):
+        sel = links == i
+        m = per_tri[sel].sum(axis=0)
+        if not sel.any() or m[0] <= 1e-12:
+            continue
+        pts = tris[sel].reshape(-1, 3)
+        com = m[1:4] / m[0]
+        if np.all((com >= pts.min(axis=0)) & (com <= pts.max(axis=0))):
+            out[link] = (float(m[0]), com)
+    return out
 
 
-def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray,
-                   shell_volume: float | None, wall_mass: float | None) -> Inertial:
-    """One link's inertial from its pieces' moments (P, 10) and densities (P,), its shell's
-    volume and its mass as a hollow wall (see module doc)."""
-    if len(moments) == 0:
-        faces = asset.link_faces(link)
-        if len(faces):
-            v = np.asarray(asset.mesh.vertices)[np.unique(np.asarray(asset.mesh.faces)[faces])]
-            c, ext = (v.min(axis=0) + v.max(axis=0)) / 2, np.ptp(v, axis=0)
-        else:
-            c, ext = np.zeros(3), np.full(3, 0.05)
-        m = MIN_MASS * 10
-        box = m / 12.0 * np.diag([ext[1] ** 2 + ext[2] ** 2, ext[0] ** 2 + ext[2] ** 2,
-                                  ext[0] ** 2 + ext[1] ** 2])
-        return Inertial(m, c, box + np.eye(3) * MIN_INERTIA)
+def _placeholder_inertial(asset: Asset, link: str) -> Inertial:
+    """A light box-shaped inertial for a link without collision pieces (its render bounds)."""
+    faces = asset.link_faces(link)
+    if len(faces):
+        v = np.asarray(asset.mesh.vertices)[np.unique(np.asarray(asset.mesh.faces)[faces])]
+        c, ext = (v.min(axis=0) + v.max(axis=0)) / 2, np.ptp(v, axis=0)
+    else:
+        c, ext = np.zeros(3), np.full(3, 0.05)
+    m = MIN_MASS * 10
+    box = m / 12.0 * np.diag([ext[1] ** 2 + ext[2] ** 2, ext[0] ** 2 + ext[2] ** 2,
+                              ext[0] ** 2 + ext[1] ** 2])
+    return Inertial(m, c, box + np.eye(3) * MIN_INERTIA)
+
+
+def _link_inertial(moments: np.ndarray, rho: np.ndarray, slots: np.ndarray,
+                   shell: tuple[float, np.ndarray] | None,
+                   walls: np.ndarray | None) -> Inertial:
+    """One link's inertial from its pieces' moments (P, 10), densities (P,) and slots (P,), its
+    render shell (`_shell_moments`) and its per-slot masses as hollow walls (see module doc)."""
     vol_pieces = float(moments[:, 0].sum())
+    piece_mass = rho * moments[:, 0]
     total, (x, y, z), (xx, yy, zz), (xy, yz, zx) = (
-        float(rho @ moments[:, 0]), rho @ moments[:, 1:4], rho @ moments[:, 4:7],
+        float(piece_mass.sum()), rho @ moments[:, 1:4], rho @ moments[:, 4:7],
         rho @ moments[:, 7:10])
     com = np.array([x, y, z]) / total
     cx, cy, cz = com
@@ -232,16 +268,21 @@ def _link_inertial(asset: Asset, link: str, moments: np.ndarray, rho: np.ndarray
         [yy + zz - total * (cy * cy + cz * cz), -(xy - total * cx * cy), -(zx - total * cz * cx)],
         [-(xy - total * cx * cy), xx + zz - total * (cx * cx + cz * cz), -(yz - total * cy * cz)],
         [-(zx - total * cz * cx), -(yz - total * cy * cz), xx + yy - total * (cx * cx + cy * cy)]])
-    # mass: the shell's volume (the real material) at the pieces' mean density
-    density = total / vol_pieces
-    volume = vol_pieces
-    if shell_volume is not None and shell_volume > 0:
-        volume = min(shell_volume, vol_pieces)
-    mass = volume * density
-    if wall_mass is not None and wall_mass > 0:
-        mass = min(mass, wall_mass)
+    # mass: the shell's volume (the real material) at the pieces' mean density ...
+    mass = total
+    if shell is not None:
+        mass = min(shell[0], vol_pieces) * total / vol_pieces
+    # ... and never more than each material's pieces allow as a hollow wall
+    if walls is not None:
+        solid = np.bincount(slots, weights=piece_mass, minlength=len(walls))[:len(walls)]
+        owned = np.bincount(slots, minlength=len(walls))[:len(walls)] > 0
+        mass = min(mass, float(np.where(owned, np.minimum(solid, walls), walls).sum()))
     mass = max(mass, MIN_MASS)
     inertia *= mass / total
+    if shell is not None:  # the pieces' inertia about the shell's centre (parallel axes)
+        d = shell[1] - com
+        inertia += mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
+        com = shell[1]
     inertia = 0.5 * (inertia + inertia.T) + np.eye(3) * MIN_INERTIA
     return Inertial(mass, com, inertia)
 

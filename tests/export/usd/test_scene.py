@@ -11,7 +11,7 @@ from pxr import Usd, UsdGeom
 from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets.protocol import Asset, box_surfaces
 from indoorgen.errors import OutputError
-from indoorgen.export.usd.prims import sanitize_name
+from indoorgen.export.usd.prims import CONTACT_GAP, sanitize_name
 from indoorgen.export.usd.scene import write_usd
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 
@@ -207,9 +207,12 @@ def test_every_object_has_attributes_labels_and_physics(exported, room):
         cols = [p for p in Usd.PrimRange(prim, Usd.TraverseInstanceProxies())
                 if p.HasAPI(UsdPhysics.CollisionAPI)]
         assert bool(cols) != bundle.lies_under(obj), obj.name
-        for c in cols:
+        for c in cols:  # box-shaped pieces are cubes (box primitives), the rest hulls
             assert UsdGeom.Imageable(c).GetPurposeAttr().Get() == UsdGeom.Tokens.guide
-            assert UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == "convexHull"
+            assert c.IsA(UsdGeom.Cube) or \
+                UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == "convexHull"
+            # Newton's contact candidates within millimetres, not its default 10 cm
+            assert c.GetAttribute("newton:contactGap").Get() == pytest.approx(CONTACT_GAP)
     for prim in stage.GetPrimAtPath("/World/Architecture").GetChildren():
         assert prim.GetAttribute("indoorgen:semantics").Get()
         assert UsdSemantics.LabelsAPI(prim, "class").GetLabelsAttr().Get()

@@ -17,7 +17,7 @@ from trimesh.transformations import quaternion_matrix
 
 from indoorgen.export.bundle import ArchElement, ExportBundle
 from indoorgen.export.physics import matrix_to_quat, quat_between
-from indoorgen.export.usd.prims import add_drive, define_mesh, rigid_body
+from indoorgen.export.usd.prims import add_drive, define_collision_piece, rigid_body
 
 #: damping of a door's drive: N m s/rad for a hinge, N s/m for a slide
 DOOR_DAMPING = 5.0
@@ -40,11 +40,7 @@ def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: Ar
     scope = UsdGeom.Scope.Define(stage, path.AppendChild("collision"))
     scope.CreatePurposeAttr(UsdGeom.Tokens.guide)
     for i, piece in enumerate(bundle.element_pieces(el)):
-        cm = define_mesh(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
-        cm.CreatePurposeAttr(UsdGeom.Tokens.guide)
-        UsdPhysics.CollisionAPI.Apply(cm.GetPrim())
-        UsdPhysics.MeshCollisionAPI.Apply(cm.GetPrim()).CreateApproximationAttr(
-            UsdPhysics.Tokens.convexHull)
+        define_collision_piece(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
     rigid_body(prim, bundle.element_inertial(el))
     UsdPhysics.FilteredPairsAPI.Apply(prim).CreateFilteredPairsRel().SetTargets([frame])
 

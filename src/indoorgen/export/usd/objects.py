@@ -19,6 +19,7 @@ from indoorgen.export.usd.materials import Looks, bind_slots
 from indoorgen.export.usd.prims import (
     GRAVITY,
     add_drive,
+    define_collision_piece,
     define_mesh,
     rigid_body,
     sanitize_name,
@@ -137,11 +138,7 @@ def _write_link(stage: Usd.Stage, path: Sdf.Path, mesh_name: str, asset: Asset, 
             scope = UsdGeom.Scope.Define(stage, path.AppendChild("collision"))
             scope.CreatePurposeAttr(UsdGeom.Tokens.guide)
             for i, piece in enumerate(pieces):
-                cm = define_mesh(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
-                cm.CreatePurposeAttr(UsdGeom.Tokens.guide)
-                UsdPhysics.CollisionAPI.Apply(cm.GetPrim())
-                UsdPhysics.MeshCollisionAPI.Apply(cm.GetPrim()).CreateApproximationAttr(
-                    UsdPhysics.Tokens.convexHull)
+                define_collision_piece(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
 
 
 def _write_articulated(stage: Usd.Stage, path: Sdf.Path, obj: SceneObject, asset: Asset,

@@ -13,6 +13,7 @@ import trimesh
 from pxr import Gf, Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
 
 from indoorgen.errors import OutputError
+from indoorgen.export.convex import box_bounds
 from indoorgen.export.physics import Inertial, matrix_to_quat
 
 ATTR_GENERATOR = "indoorgen:generator"
@@ -24,6 +25,13 @@ ATTR_NAME = "indoorgen:name"
 GRAVITY = 9.81
 #: the UsdSemantics taxonomy the labels are written under
 SEMANTICS_TAXONOMY = "class"
+
+
+#: how close (m) two collision shapes come before Newton makes them a contact candidate, per
+#: shape (a pair's is the sum): Newton's default, 10 cm, made every piece within 20 cm of
+#: another a candidate (9,240 contacts in a living room at rest, 90% of a step's time); 5 mm is
+#: three 600 Hz steps of a 2 m/s fall
+CONTACT_GAP = 0.005
 
 
 def new_stage(kilograms_per_unit: float | None = None) -> Usd.Stage:
@@ -149,6 +157,36 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
         _indexed_primvar(usd_mesh, "st", Sdf.ValueTypeNames.TexCoord2fArray, Vt.Vec2fArray,
                          np.asarray(uv)[keep].reshape(-1, 2))
     return usd_mesh
+
+
+def define_collision_piece(stage: Usd.Stage, path: Sdf.Path, piece: trimesh.Trimesh) -> Usd.Prim:
+    """A convex collision piece at `path` (purpose guide, CollisionAPI): a box-shaped piece as
+    a UsdGeom.Cube scaled to its size (engines collide it as a box primitive: fewer, cheaper
+    contacts than a hull), any other as a mesh with the convexHull approximation."""
+    box = box_bounds(piece)
+    if box is None:
+        geom: UsdGeom.Gprim = define_mesh(stage, path, piece)
+        prim = geom.GetPrim()
+        UsdPhysics.MeshCollisionAPI.Apply(prim).CreateApproximationAttr(
+            UsdPhysics.Tokens.convexHull)
+    else:
+        cube = UsdGeom.Cube.Define(stage, path)
+        cube.CreateSizeAttr(1.0)
+        cube.CreateExtentAttr(Vt.Vec3fArray([Gf.Vec3f(-0.5, -0.5, -0.5), Gf.Vec3f(0.5, 0.5, 0.5)]))
+        cube.AddTranslateOp().Set(Gf.Vec3d(*map(float, box[0])))
+        cube.AddScaleOp().Set(Gf.Vec3f(*map(float, box[1])))
+        geom, prim = cube, cube.GetPrim()
+    geom.CreatePurposeAttr(UsdGeom.Tokens.guide)
+    collider(prim)
+    return prim
+
+
+def collider(prim: Usd.Prim) -> None:
+    """Make `prim` collide (UsdPhysics.CollisionAPI) with Newton's contact gap `CONTACT_GAP`
+    (NewtonCollisionAPI's `newton:contactGap`; other engines ignore it)."""
+    UsdPhysics.CollisionAPI.Apply(prim)
+    prim.AddAppliedSchema("NewtonCollisionAPI")
+    prim.CreateAttribute("newton:contactGap", Sdf.ValueTypeNames.Float).Set(CONTACT_GAP)
 
 
 def _indexed_primvar(mesh: UsdGeom.Mesh, name: str, type_name: Sdf.ValueTypeName, array,

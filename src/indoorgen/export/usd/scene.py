@@ -50,6 +50,7 @@ from indoorgen.export.usd.materials import Looks
 from indoorgen.export.usd.objects import write_objects
 from indoorgen.export.usd.prims import (
     GRAVITY,
+    collider,
     define_mesh,
     export_stage,
     new_stage,
@@ -175,7 +176,7 @@ def _write_architecture(stage: Usd.Stage, bundle: ExportBundle, looks: Looks,
             UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(
                 looks.get(piece.material, piece.slot in EMISSIVE_SLOTS))
             if physics and el.joint is None:
-                UsdPhysics.CollisionAPI.Apply(m.GetPrim())
+                collider(m.GetPrim())
                 UsdPhysics.MeshCollisionAPI.Apply(m.GetPrim()).CreateApproximationAttr(
                     UsdPhysics.Tokens.none)
         if physics and el.joint is not None:
