@@ -68,7 +68,8 @@ def _failed_rooms(reasons: list[str], rooms: dict) -> list[str]:
 
 
 def _progress(floors: int, r: dict) -> str:
-    """One line as each home finishes (a long run shows how it goes)."""
+    """One line as each home finishes (a long run shows how it goes), a failed home's rooms
+    and reasons on it (a run stopped early still tells why)."""
     if "error" in r:
         return f"  {floors}-storey seed {r['seed']}: raised {r['error']}"
     rep = r["report"]
@@ -76,7 +77,7 @@ def _progress(floors: int, r: dict) -> str:
             f"reachable {rep['reachable_share']:.3f} ({rep['reachable_share_of_free']:.3f} of "
             f"free floor), {len(rep['unreachable_rooms'])} rooms and "
             f"{len(rep['unreachable_doors'])} doors cut off, "
-            f"{'failed' if r['reasons'] else 'ok'}")
+            f"{'failed: ' + '; '.join(r['failed_rooms'] or r['reasons']) if r['reasons'] else 'ok'}")
 
 
 def _p90(xs: list[float]) -> float:

@@ -2,16 +2,20 @@
 evaluator stays incremental and exact under floorplan moves, and users can write programs."""
 from __future__ import annotations
 
+import math
+
 import pytest
 import shapely.geometry as sg
 
 from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.constraints.room_terms import (
+    SERVICE_ROOMS,
     RoomView,
     aspect_ratio,
     convexity,
     exterior_length,
+    ideal_areas,
     narrow_area,
     ratio_mismatch,
     room_area,
@@ -20,6 +24,7 @@ from indoorgen.constraints.room_terms import (
 )
 from indoorgen.floorplan.generate import FloorplanConfig, build_plan, generate_floorplan
 from indoorgen.floorplan.solve import FloorplanAnnealConfig, anneal
+from indoorgen.model.room_types import ROOM_TYPES
 from indoorgen.model.tags import Semantics
 from indoorgen.programs.floorplan import floorplan
 from indoorgen.rng import stream
@@ -104,3 +109,33 @@ def test_a_user_program_drives_the_solver():
     assert set(a["terms_end"]) == {"square", "convex", "few walls", "no narrow bits",
                                    "balanced", "outside"}
     assert a["objective_end"] <= a["objective_start"]
+
+
+def _ideal(types: list[str], area: float) -> list[float]:
+    return ideal_areas([ROOM_TYPES[t].typical_area for t in types],
+                       [t in SERVICE_ROOMS for t in types], area)
+
+
+TYPES = ["living_room", "kitchen", "bedroom", "bedroom", "bathroom", "closet", "utility"]
+
+
+@pytest.mark.parametrize("area", [60.0, 97.0, 150.0, 240.0])
+def test_ideal_areas_share_the_whole_storey(area):
+    assert math.isclose(sum(_ideal(TYPES, area)), area)
+
+
+def test_spare_area_goes_to_the_rooms_one_lives_in():
+    """A storey larger than its rooms' typical areas keeps its bathroom, closet and utility room
+    at their typical areas; the living room and the bedrooms grow."""
+    got = dict(zip(range(len(TYPES)), _ideal(TYPES, 200.0), strict=True))
+    for i, t in enumerate(TYPES):
+        if t in SERVICE_ROOMS:
+            assert got[i] == pytest.approx(ROOM_TYPES[t].typical_area)
+        else:
+            assert got[i] > ROOM_TYPES[t].typical_area
+
+
+def test_a_tight_storey_shrinks_every_room_alike():
+    typical = [ROOM_TYPES[t].typical_area for t in TYPES]
+    got = _ideal(TYPES, 0.8 * sum(typical))
+    assert got == pytest.approx([0.8 * a for a in typical])

@@ -131,3 +131,26 @@ def test_sampled_homes_have_one_garage_at_most_and_no_ground_floor_balcony():
     # asked for, or drawn by the user, they stay (a terrace on the exterior, a second garage)
     assert graph_problems(two, {"garage": 2, "balcony": 1}) == []
     assert isinstance(graph_from_spec(two.to_json()), HomeGraph)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_a_small_flat_grows_no_rooms_it_was_not_asked_for(seed):
+    """A 55 m^2 home asked for with one bedroom, a bathroom and a kitchen is a flat: a living
+    room (dining in it), the three rooms asked for and perhaps a hall; no dining room, utility
+    room or closet too small to furnish."""
+    counts = {"bedroom": 1, "bathroom": 1, "kitchen": 1}
+    hg = sample_home_graph(lambda a: stream(seed, "test", a), 1, counts, max_area=55.0)
+    types = {room_type_of(n) for n in hg.rooms()}
+    assert types <= {"living_room", "hallway", "bedroom", "bathroom", "kitchen"}
+    assert hg.type_counts()["bedroom"] == 1
+
+
+def test_a_large_home_still_grows_rooms_it_was_not_asked_for():
+    """With room to spare, the grammar's own rooms (a dining room, a closet...) still grow
+    beside the counted ones."""
+    counts = {"bedroom": 1, "bathroom": 1, "kitchen": 1}
+    grown = set()
+    for seed in range(6):
+        hg = sample_home_graph(lambda a, s=seed: stream(s, "test", a), 1, counts, max_area=160.0)
+        grown |= {room_type_of(n) for n in hg.rooms()}
+    assert grown - {"living_room", "hallway", "bedroom", "bathroom", "kitchen"}

@@ -10,6 +10,10 @@ A depth-first search gives each room of the storey graph its own space so that:
   lose much to it;
 - every room's space is at least the minimum area of its type.
 
+A service room (a bathroom, closet, utility or staircase room) tries a space more than
+`OVERSIZE` times its ideal area only after every other: it takes one when nothing else works
+(a plan is never dropped for it), not because the noise ranked it first.
+
 Candidates are tried closest to the room's ideal area first (with a little noise), and the
 search gives up after a budget of expansions so a hopeless subdivision is dropped quickly.
 """
@@ -20,12 +24,18 @@ import math
 import networkx as nx
 import numpy as np
 
-from indoorgen.constraints.room_terms import MIN_DOOR_WALL
+from indoorgen.constraints.room_terms import MIN_DOOR_WALL, SERVICE_ROOMS
 from indoorgen.floorplan.grid import OUTSIDE, Grid, room_polygon, runs
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.rules import exterior_wall_needed
 from indoorgen.floorplan.view import polygon_exterior_runs
 from indoorgen.model.room_types import ROOM_TYPES, STAIRCASE_ROOM
+
+#: a service room's space this many times its ideal area is oversized (a 24 m^2 bathroom for
+#: a 9 m^2 share)
+OVERSIZE = 1.6
+#: what an oversized space adds to its sorting cost: more than any closeness and noise do
+OVERSIZE_LAST = 100.0
 
 
 def space_stats(grid: Grid, labels: np.ndarray, stair: np.ndarray | None):
@@ -96,7 +106,9 @@ def assign(rng: np.random.Generator, graph: nx.Graph, entry: str, grid: Grid,
                 continue  # too few door-wide neighbours for the room's graph neighbours
             out.append(s)
         noise = rng.normal(0.0, 0.25, len(out))
-        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e for s, e in zip(out, noise, strict=False)]
+        cost = [abs(math.log(max(area[s], 0.1) / ideal[r])) + e
+                + (OVERSIZE_LAST if t in SERVICE_ROOMS and area[s] > OVERSIZE * ideal[r] else 0.0)
+                for s, e in zip(out, noise, strict=False)]
         fits[r] = [s for _, s in sorted(zip(cost, out, strict=False))]
     nbrs = {r: list(graph.neighbors(r)) for r in rooms}
 

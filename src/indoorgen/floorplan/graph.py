@@ -81,6 +81,11 @@ PARENTS: dict[str, tuple[str, ...]] = {
 #: The share of a storey's area its rooms' least areas may take at most (the floor plan needs
 #: the rest to shape them; `floorplan.generate` refuses a smaller area).
 MIN_AREA_SHARE = 0.8
+#: Graphs whose storey's rooms' typical areas add up to more than this times the storey's area
+#: are drawn again while attempts remain (`sample_home_graph`).
+TYPICAL_AREA_SHARE = 1.25
+#: Types every home keeps whatever its area: what one lives and arrives in.
+ESSENTIAL = frozenset({LIVING_ROOM, HALLWAY})
 #: Types that only live on the ground floor.
 GROUND_ONLY = frozenset({KITCHEN, DINING_ROOM, GARAGE})
 MAX_STOREYS = 3
@@ -374,6 +379,20 @@ def _finish(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]]) -> Hom
     return HomeGraph(storeys, names[0][entrance], stairs)
 
 
+def _typical_area(g: nx.Graph, n_storeys: int) -> float:
+    """The typical areas of a storey's rooms added up (a staircase room's too, in a home of
+    several storeys)."""
+    return (sum(ROOM_TYPES[g.nodes[n]["type"]].typical_area for n in g.nodes)
+            + (ROOM_TYPES[STAIRCASE_ROOM].typical_area if n_storeys > 1 else 0.0))
+
+
+def _optional_rooms(g: nx.Graph, counts: dict[str, int]) -> list[int]:
+    """The rooms of a storey the user's counts did not ask for and a home can do without (all
+    but living rooms and hallways): a dining room, a utility room, a closet."""
+    return [n for n in g.nodes
+            if g.nodes[n]["type"] not in counts and g.nodes[n]["type"] not in ESSENTIAL]
+
+
 def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: int = 1,
                       counts: dict[str, int] | None = None, max_attempts: int = 400,
                       max_area: float | None = None) -> HomeGraph:
@@ -381,8 +400,12 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
 
     `rng_for(attempt)` gives the random stream of each attempt, so a rejected attempt never
     shifts the randomness of the next. With `max_area` (a storey's area, when the user fixed
-    it), graphs whose storeys' typical areas add up to more than 1.25 times it are resampled
-    (unless counts are fixed). Raises ConfigError if no acceptable graph is found."""
+    it), graphs whose storeys' typical areas add up to more than `TYPICAL_AREA_SHARE` times it
+    are resampled in the first half of the attempts; with counts fixed, only those that also
+    hold rooms the counts do not name (`_optional_rooms`): a 55 m^2 flat asked for with one
+    bedroom, a bathroom and a kitchen is a living room (dining in it), the kitchen, the
+    bedroom, the bathroom and perhaps a hall, not also a dining, utility room and closet too
+    small to furnish. Raises ConfigError if no acceptable graph is found."""
     if not 1 <= n_storeys <= MAX_STOREYS:
         raise ConfigError(f"--floors {n_storeys} is out of range; a home has 1 to {MAX_STOREYS} "
                           "storeys")
@@ -405,11 +428,10 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
         if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY - (n_storeys > 1)
                               or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
             continue
-        if not counts and max_area is not None and attempt < max_attempts // 2 and any(
-                sum(ROOM_TYPES[g.nodes[n]["type"]].typical_area for n in g.nodes)
-                + (ROOM_TYPES[STAIRCASE_ROOM].typical_area if n_storeys > 1 else 0.0) > 1.25 * max_area
-                for g, _ in trees):
-            continue
+        if max_area is not None and attempt < max_attempts // 2 and any(
+                _typical_area(g, n_storeys) > TYPICAL_AREA_SHARE * max_area
+                and (not counts or _optional_rooms(g, counts)) for g, _ in trees):
+            continue  # too many rooms for the area: a small flat grows fewer
         if max_area is not None and attempt < max_attempts // 2 and any(
                 sum(ROOM_TYPES[g.nodes[n]["type"]].min_area for n in g.nodes)
                 > MIN_AREA_SHARE * max_area for g, _ in trees):

@@ -2,7 +2,9 @@
 
 They are the solver's own invariants (the default floorplan program states the same ones as
 constraints): initial plans are resampled until they hold, and annealing rejects a move that
-breaks them for a room it touched before the program is even evaluated.
+breaks them for a room it touched before the program is even evaluated. Annealing also keeps
+service rooms from growing past `service_cap` (`grows_oversized`); an initial plan is never
+dropped for one, so homes keep their planned widths.
 """
 from __future__ import annotations
 
@@ -11,6 +13,7 @@ from indoorgen.constraints.room_terms import (
     MIN_BALCONY_FRONT,
     MIN_DOOR_WALL,
     MIN_VEHICLE_DOOR_WALL,
+    SERVICE_ROOMS,
 )
 from indoorgen.floorplan.rooms import min_width, planned_width, room_type_of
 from indoorgen.floorplan.view import GridPlan
@@ -55,6 +58,30 @@ def exterior_wall_needed(o: str) -> float:
     t = room_type_of(o)
     return MIN_VEHICLE_DOOR_WALL if t == GARAGE else MIN_BALCONY_FRONT if t == BALCONY else \
         MIN_DOOR_WALL
+
+
+#: annealing grows a service room (`room_terms.SERVICE_ROOMS`) up to this many times its ideal area,
+#: or SERVICE_SLACK m^2 over it where that is more (a 7 m^2 bathroom share: up to 10.5 m^2)
+SERVICE_CAP = 1.5
+SERVICE_SLACK = 3.0
+
+
+def service_cap(plan: GridPlan, o: str) -> float:
+    """The area (m^2) annealing grows service room `o` to at most."""
+    ideal = plan.ideal_area(o)
+    return max(SERVICE_CAP * ideal, ideal + SERVICE_SLACK)
+
+
+def service_areas(plan: GridPlan) -> dict[str, float]:
+    """Every service room's area now (m^2): what `grows_oversized` compares a move with."""
+    return {o: plan.area(o) for o in plan.room_ids() if room_type_of(o) in SERVICE_ROOMS}
+
+
+def grows_oversized(plan: GridPlan, rooms, before: dict[str, float]) -> bool:
+    """Whether a move grew one of `rooms` that is a service room past its `service_cap`
+    (`before`: `service_areas` before the move); shrinking one never counts."""
+    return any(o in before and before[o] + 1e-9 < plan.area(o) > service_cap(plan, o)
+               for o in sorted(rooms))
 
 
 def breaks_rules(plan: GridPlan, rooms) -> bool:

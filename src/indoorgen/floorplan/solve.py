@@ -30,7 +30,7 @@ from indoorgen.constraints.evaluator import Evaluator, Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.room_terms import STAIR_PLACEHOLDER
 from indoorgen.floorplan.grid import OUTSIDE
-from indoorgen.floorplan.rules import breaks_rules
+from indoorgen.floorplan.rules import breaks_rules, grows_oversized, service_areas
 from indoorgen.floorplan.view import GridPlan
 
 log = logging.getLogger(__name__)
@@ -261,6 +261,7 @@ def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
             stats.invalid += 1
             continue
         old_rect = plan.stair_rect
+        sizes = service_areas(plan)
         if rect is not None:
             plan.stair_rect = rect
         undo, touched = apply(plan, changes or [])
@@ -271,7 +272,8 @@ def anneal(plan: GridPlan, problem: Problem, rng: np.random.Generator,
             stats.invalid += 1
             _revert(plan, undo, old_rect, touched, None)
             continue
-        if violation <= 1e-9 and breaks_rules(plan, touched):
+        if violation <= 1e-9 and (breaks_rules(plan, touched)
+                                  or grows_oversized(plan, touched, sizes)):
             stats.hard += 1
             _revert(plan, undo, old_rect, touched, None)
             continue

@@ -15,7 +15,7 @@ import numpy as np
 import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
-from indoorgen.constraints.room_terms import MIN_DOOR_WALL, STOREY, RoomView
+from indoorgen.constraints.room_terms import MIN_DOOR_WALL, SERVICE_ROOMS, STOREY, RoomView, ideal_areas
 from indoorgen.floorplan.graph import HomeGraph
 from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
 from indoorgen.floorplan.rooms import room_type_of
@@ -123,9 +123,11 @@ class GridPlan(RoomView):
             entry = graph.storey_entry(k)
             self._paths.update(nx.single_source_shortest_path(g, entry))
         self._flight_cells: dict[tuple, np.ndarray] = {}
-        self._typical_total = [math.fsum(ROOM_TYPES[room_type_of(n)].typical_area
-                                         for n in names)
-                               for names in self.names]
+        self._ideal = {n: a for k, names in enumerate(self.names)
+                       for n, a in zip(names, ideal_areas(
+                           [ROOM_TYPES[room_type_of(n)].typical_area for n in names],
+                           [room_type_of(n) in SERVICE_ROOMS for n in names],
+                           grids[k].contour.area), strict=True)}
 
     # -- RoomView: the basics ----------------------------------------------------------------
     def room_ids(self) -> list[str]:
@@ -174,9 +176,8 @@ class GridPlan(RoomView):
         return ROOM_TYPES[room_type_of(o)].min_area
 
     def ideal_area(self, o: str) -> float:
-        """o's share of its storey's area, in proportion to the typical areas of its rooms (m^2)."""
-        k = self.index[o][0]
-        return self.typical_area(o) / self._typical_total[k] * self.grids[k].contour.area
+        """o's share of its storey's area (m^2, `ideal_areas`)."""
+        return self._ideal[o]
 
     def stair_polygon(self) -> sg.Polygon | None:
         """The staircase placeholder's rectangle (None in a one-storey home)."""

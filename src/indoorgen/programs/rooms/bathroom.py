@@ -38,6 +38,17 @@ HOOK_BOTTOM = 1.6
 MIRROR_GAP = 0.4
 #: a bath mat before a bath's or shower's front, this far out (m), centred within its width
 before_front = SupportedBy(Subpart.Back, Subpart.Front, margin=0.03)
+#: a compact shower: the smallest standard tray (0.8 x 0.8 m, EN 14527's smallest square) in a
+#: corner behind a sliding door, which sweeps nothing before it: what a 1.8 x 2.4 m bathroom
+#: holds beside a toilet and a basin, where a hinged or larger enclosure finds no corner
+COMPACT_SHOWER = {"layout": "corner_square", "tray_length": 0.8, "tray_depth": 0.8,
+                  "door": "sliding"}
+#: a compact shower only in a bathroom this small (m^2): a 1.8 m-wide one up to 4.4 m long
+#: (a 7.1 m^2, 1.8 x 3.9 m bathroom of home seed 1 found no corner for a full-size enclosure);
+#: a larger one takes a full-size enclosure or a bath
+COMPACT_AREA = 8.0
+#: how steeply the compact shower's allowance falls past COMPACT_AREA (per m^2: 0 from 8.1 m^2)
+COMPACT_STEP = 10.0
 
 
 def bathroom(room: ObjSet) -> Problem:
@@ -47,7 +58,13 @@ def bathroom(room: ObjSet) -> Problem:
     toilets = along_walls[S.Toilet]
     basins = along_walls[S.BathroomSink, S.Furniture]
     baths = along_walls[S.Bathtub].related_to(room, side_to_wall)
-    showers = along_walls[S.Shower].related_to(room, side_to_wall)
+    # a full-size enclosure (a hinged square corner, a quadrant, a walk-in) or, in a small
+    # bathroom, a compact one; the door param keeps the two sets apart
+    showers = along_walls.of_generator("shower_enclosure", door="hinged").related_to(
+        room, side_to_wall)
+    compact_showers = along_walls.of_generator("shower_enclosure", **COMPACT_SHOWER).related_to(
+        room, side_to_wall)
+    bathing = baths | showers | compact_showers
     on_walls = scene().related_to(room, on_wall)
 
     def hung_at(tag: S, bottom: float) -> ObjSet:
@@ -68,12 +85,15 @@ def bathroom(room: ObjSet) -> Problem:
     toiletries = kinds[0] | kinds[1] | kinds[2] | kinds[3]
     toiletry_count = kinds[0].count() + kinds[1].count() + kinds[2].count() + kinds[3].count()
     # a mat on the floor where one steps out of the bath or shower
-    mats = floor[S.BathMat].related_to(baths | showers, before_front)
+    mats = floor[S.BathMat].related_to(bathing, before_front)
     return Problem(
         constraints={
             "a toilet": toilets.count() == 1,
             "a basin": basins.count().in_range(1, 2),
-            "a bath or a shower": (baths.count() + showers.count()).in_range(1, 2),
+            "a bath or a shower": (baths.count() + showers.count()
+                                   + compact_showers.count()).in_range(1, 2),
+            "a compact shower only in a small bathroom": compact_showers.count() <= (
+                (COMPACT_AREA - room.volume((0, 1))) * COMPACT_STEP).clip(0.0, 1.0),
             "a mirror": mirrors.count().in_range(0, 1),
             "a towel rail": (bars.count() + rings.count()).in_range(1, 2),
             "a roll holder": roll_holders.count() == 1,
@@ -89,14 +109,14 @@ def bathroom(room: ObjSet) -> Problem:
             "roll holder by the toilet": roll_holders.mean(
                 lambda r: r.distance(toilets).hinge(0.1, 0.4)).minimize(3),
             "rails near the basin or bath": (bars | rings).mean(
-                lambda t: t.distance(basins | baths | showers).hinge(0.0, 1.0)).minimize(0.5),
+                lambda t: t.distance(basins | bathing).hinge(0.0, 1.0)).minimize(0.5),
             "fixtures free to use": accessibility_cost(along_walls, floor).minimize(2),
             "square to the walls": angle_alignment_cost(floor, room).minimize(1),
             "a towel out": towels.count().maximize(0.5),
             "toiletries out": toiletry_count.maximize(0.3),
             "a bath mat": mats.count().maximize(1),
             "the mat centred on the bath or shower": mats.mean(
-                lambda m: m.center_distance(baths | showers)).minimize(1),
+                lambda m: m.center_distance(bathing)).minimize(1),
             "toiletries in the middle": center_of_support_distance(toiletries).minimize(0.3),
             "hooks high": hooks.mean(lambda h: height(h).hinge(1.6, 1.9)).minimize(0.1),
         },

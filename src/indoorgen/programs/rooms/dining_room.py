@@ -34,11 +34,18 @@ SIDEBOARD_HEIGHT = 0.9
 #: the rug under the table (m): round, wide enough that chairs pulled out stay on it (layout
 #: guidance: 0.6 m beyond the table's edges)
 RUG_DIAMETER = 2.8
+#: a dining room smaller than this (m^2) seats two (a 2.4 x 2.9 m room: a small table for two
+#: against a wall or a round one, the way a flat's dining corner is laid), from a square metre
+#: more it seats four: the area a table for four needs with its chairs pulled out (0.9 x 0.9 m
+#: table, 0.6 m of chair and 0.3 m of passage either side: 3 x 3 m)
+TABLE_FOR_TWO_AREA = 8.0
+#: chairs asked for per m^2 past TABLE_FOR_TWO_AREA (two more within a square metre)
+CHAIRS_PER_M2 = 2.0
 
 
 def dining_room(room: ObjSet) -> Problem:
-    """One table with four to eight matching chairs evenly around it, places laid, a light
-    over it, a sideboard, a display shelf where it fits and art in view."""
+    """One table with four to eight matching chairs evenly around it (two in a small room),
+    places laid, a light over it, a sideboard, a display shelf where it fits and art in view."""
     floor = scene().related_to(room, on_floor)
     blockers = floor.excluding(S.FloorCovering)
     tables = floor[S.DiningTable]
@@ -63,7 +70,10 @@ def dining_room(room: ObjSet) -> Problem:
         constraints={
             "one table": tables.count() == 1,
             "chairs at each table": tables.all(
-                lambda t: chairs.related_to(t, at_table).count().in_range(4, 8)),
+                lambda t: chairs.related_to(t, at_table).count().in_range(2, 8)),
+            "four chairs where the room seats four": tables.all(
+                lambda t: chairs.related_to(t, at_table).count() >= (
+                    2.0 + (room.volume((0, 1)) - TABLE_FOR_TWO_AREA) * CHAIRS_PER_M2).clip(2.0, 4.0)),
             "a place laid for each chair": tables.all(
                 lambda t: plates.related_to(t, on_top).count()
                 == chairs.related_to(t, at_table).count()),
