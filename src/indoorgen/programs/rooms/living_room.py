@@ -68,9 +68,6 @@ SLIM_TABLE = 0.5
 #: the open floor before the TV stand (m): the compact gap and a sofa's depth (0.8 m), so the
 #: stand stands on a wall the group fits across from (not on a narrow room's long wall)
 STAND_FRONT = FRONT_GAPS[0] + 0.8
-#: its violation per metre short: a stand 0.35 m short of it outweighs the missing stand (1), so
-#: the solver draws it on another wall instead of keeping it where no sofa fits across
-STAND_PER_METRE = 3.0
 #: viewing guidance (THX / SMPTE): seated at least 1.5 screen diagonals from the screen; a 16:9
 #: panel's diagonal is 1.15 times its width, so the centres stand at least 1.72 widths apart
 SCREEN_DISTANCE = 1.5 * 1.15
@@ -140,8 +137,8 @@ def living_room(room: ObjSet) -> Problem:
             "a sofa": compact.count() + spacious.count() == 1,
             "a TV stand": stands.count() == 1,
             "the TV stand faces open floor": stands.all(
-                lambda t: front_clearance(t, room, probe=STAND_FRONT + 0.1) * STAND_PER_METRE
-                >= STAND_FRONT * STAND_PER_METRE),
+                lambda t: front_clearance(t, room, probe=STAND_FRONT + 0.1) * PER_METRE
+                >= STAND_FRONT * PER_METRE),
             "the sofa faces the TV": sofas.all(
                 lambda s: facing_angle(s, stands) * PER_DEGREE <= FACING * PER_DEGREE),
             "the TV faces the sofa": stands.all(
