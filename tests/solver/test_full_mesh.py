@@ -59,3 +59,15 @@ def test_a_window_zone_removes_only_what_must_keep_out_of_it():
         fcl.CollisionRequest(), fcl.CollisionResult()) for n in (candle, light))
     assert full_mesh_check(st) == [art]
     assert set(st.objects) == {table, candle, light}
+
+
+def test_a_screen_keeps_out_of_a_window_zone_even_on_its_stand():
+    # a low TV stand under a window is allowed (below the tall-furniture height); the TV on it
+    # is not: watched against the daylight, the screen glares
+    geo = build_room(Room(ROOM, "living_room", rectangle(4.0, 3.0), 2.7, 0.12))
+    geo.windows = [np.array([(1.0, -0.06, 0.7), (3.0, 0.06, 2.2)])]
+    st = State({ROOM: geo}, AssetCache())
+    stand = put(st, "tv_stand", floor(), (2.0, 0.3), np.pi / 2)
+    tv = put(st, "tv", top_of(stand), (2.0, 0.3), np.pi / 2, stage="small")
+    assert st.window_bound(tv) and not st.window_bound(stand)
+    assert not st.collides(stand) and st.collides(tv)

@@ -32,6 +32,7 @@ from indoorgen.solver.keep_free import (
     TOILET_SIDE,
     WIDE_FRONTS,
     WINDOW_DRESSINGS,
+    WINDOW_SCREENS,
     WINDOW_TALL,
     open_limit,
     spins_in_place,
@@ -159,9 +160,9 @@ def joint_sweep(ctx: Context) -> list[Check]:
 @rule("windows_keep_out")
 def windows_keep_out(ctx: Context) -> list[Check]:
     """No floor object taller than 1.0 m and nothing hung on the wall (window dressings aside:
-    curtains hang there on purpose, `WINDOW_DRESSINGS`) stands before a window opening, at its
-    height; value: the longest overlap along the window (m). Only for a home (windows come from
-    its architecture)."""
+    curtains hang there on purpose, `WINDOW_DRESSINGS`), and no screen wherever it stands
+    (`WINDOW_SCREENS`: glare), is before a window opening, at its height; value: the longest
+    overlap along the window (m). Only for a home (windows come from its architecture)."""
     if ctx.architecture is None:
         return []
     out = []
@@ -175,7 +176,7 @@ def windows_keep_out(ctx: Context) -> list[Check]:
         for q in ctx.in_room(e.room):
             tall = on_floor(q.obj) and q.top - q.floor > WINDOW_TALL
             hung = is_wall_hung(q.obj) and not q.has(*WINDOW_DRESSINGS)
-            if not (tall or hung) or q.top <= z0 or q.bottom >= z1:
+            if not (tall or hung or q.has(*WINDOW_SCREENS)) or q.top <= z0 or q.bottom >= z1:
                 continue
             inter = q.footprint.intersection(zone)
             if not inter.is_empty and inter.area > 1e-4:

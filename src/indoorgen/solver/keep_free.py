@@ -53,6 +53,9 @@ WINDOW_DEPTH = 0.3
 #: sized to its window and hung over and beside it, drawn open to the sides, so it belongs in the
 #: zone and is exempt from it (the solver's `window_bound`, the report's `windows_keep_out`)
 WINDOW_DRESSINGS = frozenset({Semantics.Curtain})
+#: screens keep out of a window's zone wherever they stand (on a TV stand too): a screen before a
+#: window is watched against the daylight and mirrors it (glare; TV-placement guidance)
+WINDOW_SCREENS = frozenset({Semantics.TV})
 #: a sweep volume is inset this much on each side (m): an opened part may touch a wall or an
 #: object (the report allows 5 mm), and a part built flush on the floor must not hit the floor
 SWEEP_INSET = 0.004

@@ -35,6 +35,7 @@ from indoorgen.solver.broadphase import (
 )
 from indoorgen.solver.keep_free import (
     WINDOW_DRESSINGS,
+    WINDOW_SCREENS,
     WINDOW_TALL,
     keep_free_volumes,
     window_volume,
@@ -448,8 +449,10 @@ class State:
 
     def _window_bound(self, ob: ObjState) -> bool:
         """Must the object keep out of window zones: furniture standing on the floor taller than
-        `WINDOW_TALL`, or anything hung on a wall but a window dressing (the report's window
-        rule)?"""
+        `WINDOW_TALL`, anything hung on a wall but a window dressing, or a screen wherever it
+        stands (the report's window rule)?"""
+        if WINDOW_SCREENS & ob.tags:
+            return True
         if not ob.placements or ob.placements[0].parent != ob.room:
             return False
         surface = ob.placements[0].parent_surface
