@@ -430,15 +430,18 @@ def add_to(ctx: MoveContext, b: Bound, tries: int | None = None) -> MoveOutcome 
         ctx.state.add(ob)
         moved = _place_on(ctx, ob, tries)
         if moved:
-            name = ob.name
-
-            def undo() -> None:
-                ctx.state.remove(name)
-            return MoveOutcome(added=(name,), undo=undo)
+            return MoveOutcome(added=(ob.name,), undo=_remover(ctx.state, ob.name))
         ctx.state.remove(ob.name)
         if moved is not None:  # there was room, but every pose tried was invalid
             return None
     return None
+
+
+def _remover(state: State, name: str) -> Callable[[], None]:
+    """An undo for the addition of `name`."""
+    def undo() -> None:
+        state.remove(name)
+    return undo
 
 
 def delete(ctx: MoveContext) -> MoveOutcome | None:
