@@ -44,12 +44,18 @@ def test_the_large_furnitures_fronts_are_kept_free_while_the_large_stage_places_
     assert term_stage(problem.constraints["nightstand fronts free"]) == "medium"
 
 
-def test_the_walls_ask_for_a_shelf():
+def _room_with_bed(width: float, x: float) -> FakeView:
+    """A `width` x 4 m room "r" with a bed against a wall, centred at (x, 1)."""
     view = FakeView()
-    view.add_room("r", [(0, 0), (3.5, 0), (3.5, 4), (0, 4)])
-    view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(1, 1, 0.3), extents=(2, 1.6, 0.6),
+    view.add_room("r", [(0, 0), (width, 0), (width, 4), (0, 4)])
+    view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(x, 1, 0.3), extents=(2, 1.6, 0.6),
              relations=[(on_floor, "r"), (against_wall, "r")], generator="bed",
              params={"drawers": False})
+    return view
+
+
+def test_the_walls_ask_for_a_shelf():
+    view = _room_with_bed(3.5, 1)
     problem = bedroom(scene()[S.Room].named("r"))
     bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
     assert bounds["a wall shelf or two"].below and bounds["a wall shelf or two"].can_add
@@ -58,11 +64,7 @@ def test_the_walls_ask_for_a_shelf():
 
 
 def test_a_desk_asks_for_its_chair_and_a_nightstand_for_its_lamp():
-    view = FakeView()
-    view.add_room("r", [(0, 0), (4.5, 0), (4.5, 4), (0, 4)])
-    view.add("bed_0", {S.Object, S.Furniture, S.Bed}, center=(2, 1, 0.3), extents=(2, 1.6, 0.6),
-             relations=[(on_floor, "r"), (against_wall, "r")], generator="bed",
-             params={"drawers": False})
+    view = _room_with_bed(4.5, 2)
     view.add("nightstand_0", {S.Object, S.Furniture, S.Nightstand}, center=(0.8, 0.2, 0.25),
              extents=(0.4, 0.4, 0.5), relations=[(on_floor, "r"), (against_wall, "r"),
                                                  (at_bedside, "bed_0")])
