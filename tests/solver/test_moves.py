@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import shapely.geometry as sg
 
 from indoorgen.assets import get_factory
 from indoorgen.constraints import Problem, scene
@@ -331,3 +332,26 @@ def test_add_draws_small_decor_by_its_generators_frequency():
         expected = n * w / sum(weights)
         assert abs(drawn.count(g) - expected) < 4 * np.sqrt(expected), g
     assert drawn.count("table_clock") * 5 < drawn.count("photo_frame")
+
+
+def test_add_fills_a_bookcase_with_things_wholly_on_its_shelves_and_clear_of_each_other():
+    """Boxes, baskets and books put on shelving land where they fit: whole on a shelf, under the
+    shelf above, beside what is there; a thing too big for the shelf drawn gets another draw."""
+    st = make_state(5.0, 4.0)
+    case = put(st, "bookcase", floor(), (2.5, 2.0))
+    cases = scene().related_to(scene()[S.Room].named(ROOM), on_floor)[S.Bookcase]
+    problem = Problem(constraints={kind: scene()[tag].related_to(cases, on_top).count() <= 12
+                                   for kind, tag in (("books", S.Book), ("boxes", S.Box),
+                                                     ("baskets", S.Basket))})
+    ctx = move_context(st, "small", 2, problem)
+    added = [n for _ in range(30) if (out := _apply(ctx, "add")) for n in out.added]
+    assert len(added) >= 12
+    for n in added:
+        assert placements_hold(st, n) and not st.collides(n), n
+        (p,) = st.objects[n].placements
+        shelf = st.surface_world(case, p.parent_surface)
+        corners = st.footprint(n).exterior.coords
+        assert all(shelf.polygon.buffer(1e-6).contains(
+            sg.Point(np.dot(np.subtract(c, shelf.origin[:2]), shelf.u[:2]),
+                     np.dot(np.subtract(c, shelf.origin[:2]), shelf.v[:2]))) for c in corners), n
+    assert_consistent(st)

@@ -2,12 +2,25 @@
 plane, facing it; the DoF are what the planes leave free; relations hold only over the parent."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
+from indoorgen.assets import Surface
 from indoorgen.constraints.relations import CONTACT_GAP
+from indoorgen.model.tags import Subpart
 from indoorgen.programs.relations import against_wall, on_floor
-from indoorgen.solver.placement import placements_hold, planar, sample_point, snap_object, solve_pose
+from indoorgen.solver.placement import (
+    SURFACE_GAP,
+    free_region,
+    headroom,
+    placements_hold,
+    planar,
+    sample_point,
+    snap_object,
+    solve_pose,
+)
 from indoorgen.solver.state import Placement
 from support.solverscene import ROOM, floor, make_state, put, top_of, wall
 
@@ -111,3 +124,29 @@ def test_sample_point_lies_on_the_surface_inside_the_margin():
     assert pts[:, 1].min() >= 0.5 - 1e-9 and pts[:, 1].max() <= 2.5 + 1e-9
     again = np.random.default_rng(3)
     np.testing.assert_array_equal(sample_point(surface, again, margin=0.5), pts[0])
+
+
+def test_free_region_keeps_a_thing_wholly_on_the_surface_and_clear_of_its_neighbours():
+    shelf = Surface.rect("shelf", Subpart.SupportSurface, (0, 0, 1), (0, 0, 1), (1, 0, 0), 0.3, 0.15)
+    square = np.array([[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1], [-0.1, 0.1]])
+    region = free_region(shelf, square, [])
+    gap = SURFACE_GAP
+    np.testing.assert_allclose(region.bounds, [-0.2 + gap, -0.05 + gap, 0.2 - gap, 0.05 - gap])
+    # a book already standing on the right half: the thing's centre stays 0.1 m + gap left of it
+    taken = np.array([[0.0, -0.15], [0.3, -0.15], [0.3, 0.15], [0.0, 0.15]])
+    assert free_region(shelf, square, [taken]).bounds[2] == pytest.approx(-0.1 - gap)
+    # deeper than the shelf, or no room left beside the neighbours: nowhere
+    assert free_region(shelf, square * [1, 2], []).is_empty
+    assert free_region(shelf, square, [taken, taken - [0.3, 0]]).is_empty
+
+
+def test_headroom_is_the_height_under_the_shelf_above_and_unbounded_on_top():
+    st = make_state()
+    case = put(st, "bookcase", floor(), (2.0, 1.5))
+    ob = st.objects[case]
+    shelves = sorted((s for s in ob.asset.surfaces if s.subpart == Subpart.SupportSurface
+                      and s.name != "top"), key=lambda s: s.origin[2])
+    assert len(shelves) >= 2
+    room = headroom(st, case, shelves[0].name)
+    assert 0.1 < room <= shelves[1].origin[2] - shelves[0].origin[2]
+    assert headroom(st, case, "top") == math.inf

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import TypeVar
 
 import numpy as np
+import shapely.geometry as sg
 
 from indoorgen.assets import Asset, Surface, factories_with, get_factory
 from indoorgen.constraints.bounds import Bound, Context, find_bounds
@@ -27,7 +28,18 @@ from indoorgen.constraints.relations import Relation
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Subpart
 from indoorgen.rng import child_seed
-from indoorgen.solver.placement import placements_hold, planar, sample_point, snap_object, solve_pose
+from indoorgen.solver.placement import (
+    SURFACE_GAP,
+    free_region,
+    headroom,
+    placements_hold,
+    planar,
+    sample_point,
+    sample_region,
+    snap_object,
+    solve_pose,
+    surface_offsets,
+)
 from indoorgen.solver.state import ObjState, Placement, State
 
 log = logging.getLogger(__name__)
@@ -117,6 +129,10 @@ class MoveOutcome:
 #: a move: applies one proposal to the context's state, or returns None (nothing changed)
 MoveFn = Callable[[MoveContext], MoveOutcome | None]
 
+#: designs and surfaces an add draws while the one drawn has no room for the thing (a box
+#: deeper than the wall shelf drawn, a shelf already full)
+ADD_DRAWS = 4
+
 
 # -- shared steps of the moves ------------------------------------------------------------------
 def _pick_own(ctx: MoveContext, keep: Callable[[str], bool] | None = None) -> tuple[str, ObjState] | None:
@@ -196,14 +212,27 @@ def _grid_yaw(ctx: MoveContext, ob: ObjState, anchor: Surface) -> float:
 def _place(ctx: MoveContext, ob: ObjState, tries: int | None = None) -> list[str]:
     """Sample poses on the object's planes until one is valid (the object is in state,
     whatever rests on it moves along). Returns the objects moved; empty if none was valid."""
+    return _place_on(ctx, ob, tries) or []
+
+
+def _place_on(ctx: MoveContext, ob: ObjState, tries: int | None = None) -> list[str] | None:
+    """`_place`, telling apart a surface with no room left for the object (None: it fits at no
+    quarter turn beside what is already there) from poses tried and found invalid (empty)."""
     st = ctx.state
     anchor, placement = _anchor(st, ob)
     child = ob.asset.surface(placement.child_surface)
     half = 0.5 * min(child.polygon.bounds[2] - child.polygon.bounds[0],
                      child.polygon.bounds[3] - child.polygon.bounds[1])
+    spots = _SurfaceSpots(ctx, ob, anchor, placement) if _on_furniture(st, ob, anchor) else None
     for _ in range(tries or ctx.init_tries):
         yaw = _grid_yaw(ctx, ob, anchor)
-        q = sample_point(anchor, ctx.rng, margin=half)
+        if spots is None:
+            q = sample_point(anchor, ctx.rng, margin=half)
+        else:
+            spot = spots.sample(yaw)
+            if spot is None:
+                return None
+            q, yaw = spot
         res = solve_pose(st, ob.asset, ob.placements, q - yaw_matrix(yaw) @ child.origin, yaw)
         if res is None:
             return []
@@ -216,6 +245,59 @@ def _place(ctx: MoveContext, ob: ObjState, tries: int | None = None) -> list[str
         if _valid_group(st, moved):
             return moved
     return []
+
+
+def _on_furniture(state: State, ob: ObjState, anchor: Surface) -> bool:
+    """Does the object rest by one relation alone on a level surface of another object (a
+    shelf, a tabletop, a cupboard's floor), where `_SurfaceSpots` finds it room?"""
+    return len(ob.placements) == 1 and ob.placements[0].parent not in state.rooms \
+        and anchor.normal[2] > 0.99
+
+
+class _SurfaceSpots:
+    """Where on a piece of furniture's surface an object fits (`free_region`): on the surface,
+    clear of what already stands there; worked out once per quarter turn of the object."""
+
+    def __init__(self, ctx: MoveContext, ob: ObjState, anchor: Surface, placement: Placement):
+        st = ctx.state
+        self.ctx, self.anchor = ctx, anchor
+        self.base = math.atan2(anchor.u[1], anchor.u[0])
+        self.origin = ob.asset.surface(placement.child_surface).origin
+        self.hull = st.cache.hull_2d(ob.generator, ob.params)
+        own = {ob.name, *st.descendants(ob.name)}
+        others = sorted(n for n in st.children(placement.parent) if n not in own and any(
+            p.parent == placement.parent and p.parent_surface == placement.parent_surface
+            for p in st.objects[n].placements))
+        self.taken = [surface_offsets(anchor, np.asarray(st.footprint(n).exterior.coords)[:-1]
+                                      - anchor.origin[:2]) for n in others]
+        self.regions: dict[int, sg.Polygon | sg.MultiPolygon] = {}
+        mesh = ob.asset.mesh
+        self.fits_under = float(mesh.bounds[1][2] - mesh.bounds[0][2]) + SURFACE_GAP <= headroom(
+            st, placement.parent, placement.parent_surface)
+
+    def region(self, yaw: float) -> sg.Polygon | sg.MultiPolygon:
+        """Where the object's surface origin may go at `yaw` (a quarter turn off the surface's
+        axes), in the surface's 2D coordinates."""
+        k = round((yaw - self.base) / (math.pi / 2)) % 4
+        got = self.regions.get(k)
+        if got is None:
+            r = yaw_matrix(yaw)
+            offsets = self.hull @ r[:2, :2].T - (r @ self.origin)[:2]
+            got = self.regions[k] = free_region(self.anchor, surface_offsets(self.anchor, offsets),
+                                                self.taken)
+        return got
+
+    def sample(self, yaw: float) -> tuple[np.ndarray, float] | None:
+        """A world point where the object fits at `yaw`, or else at the next quarter turn that
+        fits, with that yaw; None if it fits at none."""
+        if not self.fits_under:
+            return None
+        for k in range(4):
+            turned = yaw + k * math.pi / 2
+            q = sample_region(self.region(turned), self.ctx.rng)
+            if q is not None:
+                return self.anchor.to_world(q[None])[0], turned
+        return None
 
 
 def _draw_placements(ctx: MoveContext, asset: Asset,
@@ -327,30 +409,39 @@ def add_to(ctx: MoveContext, b: Bound, tries: int | None = None) -> MoveOutcome 
             log.warning("no generator has tags %s", sorted(map(str, b.context.tags)))
         return None
     like = _design_to_copy(ctx, b.context, gens) if ctx.problem.matching else None
-    if like is not None:
-        gen, seed, params = like.generator, like.seed, dict(like.params)
-        fac = get_factory(gen)
-    else:
-        gen = ctx.pick_weighted(gens, [get_factory(g).frequency for g in gens])
-        fac = get_factory(gen)
-        seed = child_seed(ctx.rng)
-        params = {**fac.sample_params(np.random.default_rng(seed)), **dict(b.context.params)}
-    asset = ctx.state.cache.placeholder(gen, params)
-    placements = _draw_placements(ctx, asset, b.parents)
-    if placements is None:
-        return None
-    ob = ObjState(ctx.namer(gen), gen, params, seed, frozenset(fac.tags), ctx.room,
-                  ctx.stage, asset, placements, np.zeros(3), 0.0,
-                  context=b.context, env=dict(b.env))
-    ctx.state.add(ob)
-    if not _place(ctx, ob, tries):
+    # a thing too big for the shelf drawn, or a shelf already full: another draw of design
+    # and shelf (a copied design keeps its design)
+    for _ in range(1 if like is not None else ADD_DRAWS):
+        if like is not None:
+            gen, seed, params = like.generator, like.seed, dict(like.params)
+            fac = get_factory(gen)
+        else:
+            gen = ctx.pick_weighted(gens, [get_factory(g).frequency for g in gens])
+            fac = get_factory(gen)
+            seed = child_seed(ctx.rng)
+            params = {**fac.sample_params(np.random.default_rng(seed)), **dict(b.context.params)}
+        asset = ctx.state.cache.placeholder(gen, params)
+        placements = _draw_placements(ctx, asset, b.parents)
+        if placements is None:
+            return None
+        ob = ObjState(ctx.namer(gen), gen, params, seed, frozenset(fac.tags), ctx.room,
+                      ctx.stage, asset, placements, np.zeros(3), 0.0,
+                      context=b.context, env=dict(b.env))
+        ctx.state.add(ob)
+        moved = _place_on(ctx, ob, tries)
+        if moved:
+            return MoveOutcome(added=(ob.name,), undo=_remover(ctx.state, ob.name))
         ctx.state.remove(ob.name)
-        return None
-    name = ob.name
+        if moved is not None:  # there was room, but every pose tried was invalid
+            return None
+    return None
 
+
+def _remover(state: State, name: str) -> Callable[[], None]:
+    """An undo for the addition of `name`."""
     def undo() -> None:
-        ctx.state.remove(name)
-    return MoveOutcome(added=(name,), undo=undo)
+        state.remove(name)
+    return undo
 
 
 def delete(ctx: MoveContext) -> MoveOutcome | None:

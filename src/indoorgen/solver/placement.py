@@ -14,6 +14,7 @@ from typing import TypeAlias, cast
 
 import numpy as np
 import shapely
+import shapely.affinity
 import shapely.geometry as sg
 
 from indoorgen.assets import Asset, Surface
@@ -159,3 +160,68 @@ def sample_point(surface: Surface, rng: np.random.Generator, margin: float = 0.0
         c = poly.representative_point()
         q = np.array([c.x, c.y])
     return surface.to_world(q[None])[0]
+
+
+#: free space kept around what is put on a surface (m): between things side by side, and
+#: between a thing and the sides of the shelf or cupboard it stands in (touching placeholders
+#: count as a collision)
+SURFACE_GAP = 0.005
+
+
+def surface_offsets(surface: Surface, offsets: np.ndarray) -> np.ndarray:
+    """World XY offsets (N, 2) in the 2D coordinates of a horizontal `surface`."""
+    return np.stack([offsets @ surface.u[:2], offsets @ surface.v[:2]], axis=1)
+
+
+def free_region(surface: Surface, footprint: np.ndarray, taken: list[np.ndarray],
+                gap: float = SURFACE_GAP) -> sg.Polygon | sg.MultiPolygon:
+    """Where on a horizontal `surface` (its 2D coordinates) a point may go so that the
+    `footprint` around it (2D offsets from the point, the surface's coordinates) lies wholly on
+    the surface and clear of every outline in `taken` (the surface's coordinates), `gap` apart:
+    the surface eroded by the footprint's box, less each taken outline grown by it (a Minkowski
+    sum of convex hulls). Empty where the thing fits nowhere. Exact for a convex surface; on a
+    notched one the pose check still catches an overhang."""
+    x0, y0 = footprint.min(axis=0) - gap
+    x1, y1 = footprint.max(axis=0) + gap
+    box = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+    region = surface.polygon
+    for cx, cy in box:
+        region = region.intersection(shapely.affinity.translate(surface.polygon, -cx, -cy))
+        if region.is_empty:
+            return region
+    if taken:
+        grown = [shapely.MultiPoint((outline[:, None, :] - box[None, :, :]).reshape(-1, 2)).convex_hull
+                 for outline in taken]
+        region = region.difference(shapely.union_all(grown))
+    return region
+
+
+def sample_region(region: sg.Polygon | sg.MultiPolygon, rng: np.random.Generator) -> np.ndarray | None:
+    """A uniform random point of a non-empty 2D `region` (a point of it where rejection
+    sampling misses a sliver); None if the region is empty."""
+    if region.is_empty or region.area <= 0.0:
+        return None
+    x0, y0, x1, y1 = region.bounds
+    for _ in range(4):  # rejection sampling, 16 candidates at a time
+        cand = rng.uniform([x0, y0], [x1, y1], size=(16, 2))
+        inside = shapely.contains_xy(region, cand[:, 0], cand[:, 1])
+        if inside.any():
+            return cand[int(np.argmax(inside))]
+    c = region.representative_point()
+    return np.array([c.x, c.y])
+
+
+def headroom(state: State, parent: str, surface: str) -> float:
+    """The free height over a level surface of object `parent` (m) under the parent's own solid
+    pieces (the shelf above, a cupboard's top); infinite on a top. What is taller does not go
+    there, wherever it stands on the surface."""
+    ob = state.objects[parent]
+    if ob.boxes is None:
+        return math.inf
+    s = ob.asset.surface(surface)
+    corners = s.corners()
+    lo, hi = corners.min(axis=0) + SURFACE_GAP, corners.max(axis=0) - SURFACE_GAP
+    boxes = ob.boxes[:ob.n_solid]
+    over = (boxes[:, 0, 0] < hi[0]) & (boxes[:, 1, 0] > lo[0]) & (boxes[:, 0, 1] < hi[1]) \
+        & (boxes[:, 1, 1] > lo[1]) & (boxes[:, 0, 2] > s.origin[2] + SURFACE_GAP)
+    return float(boxes[over, 0, 2].min() - s.origin[2]) if over.any() else math.inf

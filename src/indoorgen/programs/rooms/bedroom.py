@@ -1,12 +1,14 @@
 """A bedroom: the bed's head to a wall with free access to both sides, matching nightstands at
 the head with lamps, a wardrobe or dresser with room before it, a rug at the bed's foot,
 clothes, books and decor; a bookcase and wall shelves where there is room, plants, pictures and
-a floor lamp; sometimes a desk with its lamp and laptop, or a reading chair."""
+a floor lamp; sometimes a desk with its chair, lamp and laptop, a reading chair, or a bench at
+the bed's foot."""
 from indoorgen.constraints import (
     Constraint,
     ObjSet,
     Problem,
     Scalar,
+    SupportedBy,
     accessibility_cost,
     angle_alignment_cost,
     front_clearance,
@@ -15,6 +17,7 @@ from indoorgen.constraints import (
     scene,
 )
 from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from indoorgen.programs.relations import (
     DOOR_SWING,
     against_wall,
@@ -55,6 +58,9 @@ RUG_REWARD = 2.5
 #: a bedroom whose plan box is larger than this (m^2) is asked for a desk corner (a desk 1.0-1.4
 #: x 0.5-0.7 m and its chair's 0.8 m pull-out: 2 m^2 past a 12-15 m^2 room's bed and storage)
 DESK_AREA = 13.5
+#: free depth before a desk (m): its chair pulled up and pushed back (ergonomic guidance
+#: 0.8-1.1 m); the chair itself stands in it
+DESK_CHAIR_ROOM = 0.8
 #: a bedroom whose plan box is larger than this (m^2) is asked for a dresser beside the wardrobe
 #: (1.0-1.5 x 0.4-0.5 m and 0.6 m before its drawers: about 1.3 m^2 past the wardrobe's room)
 DRESSER_AREA = 12.5
@@ -64,6 +70,19 @@ DRESSER_REWARD = 1.5
 DESK_REWARD = 1.0
 #: storage boxes on top of a wardrobe at most (0.5-2.4 m wide: two or three side by side)
 WARDROBE_TOP_BOXES = 3
+#: the band a picture's centre hangs in (m): eye level (gallery hanging guidance: a centre at
+#: 1.45-1.6 m), kept as a rule
+EYE_LEVEL = (1.4, 1.8)
+#: the violation per metre a picture's centre is off eye level: under a missing picture's 1 for
+#: a picture up to half a metre off, so a picture is hung first and then moved into the band
+EYE_LEVEL_WEIGHT = 2.0
+#: a bedroom whose plan box is larger than this (m^2) is asked for a bench at the bed's foot
+#: (0.35-0.45 m deep, with the 0.6 m walkway before it: about 1.5 m^2 past a desk corner)
+BENCH_AREA = 15.0
+#: the reward of the bench once the room is a square metre past BENCH_AREA
+BENCH_REWARD = 1.0
+#: a bench at the bed's foot: its back 5 cm off the foot, its centre within the bed's width
+at_bed_foot = SupportedBy(Subpart.Back, Subpart.Front, margin=0.05)
 
 
 def bedroom(room: ObjSet) -> Problem:
@@ -77,7 +96,7 @@ def bedroom(room: ObjSet) -> Problem:
     wardrobes = floor[S.Wardrobe].related_to(room, against_wall)
     dressers = floor[S.Dresser].related_to(room, against_wall)
     desks = floor[S.Desk].related_to(room, against_wall)
-    desk_chairs = floor[S.Chair].excluding(S.DiningChair).related_to(desks, at_table)
+    desk_chairs = floor[S.Chair].excluding(S.DiningChair, S.Armchair).related_to(desks, at_table)
     reading_chairs = floor[S.Armchair]
     bookcases = floor[S.Bookcase].related_to(room, against_wall)
     shelves = scene()[S.WallShelf].related_to(room, on_wall)
@@ -85,6 +104,7 @@ def bedroom(room: ObjSet) -> Problem:
     # a laundry basket and a pair of shoes stand on the floor by a wall
     floor_things = floor[S.Basket] | floor[S.Shoes]
     rugs = bed_rugs(floor).related_to(beds, under_bed_foot)
+    benches = floor[S.Bench].of_generator("bench", back=False).related_to(beds, at_bed_foot)
     plants = floor[S.PottedPlant]
     art = scene()[S.WallArt].related_to(room, on_wall)
     mirrors = scene().of_generator("mirror").related_to(room, on_wall)
@@ -97,8 +117,8 @@ def bedroom(room: ObjSet) -> Problem:
     surfaces = nightstands | dressers | desks
     books = scene()[S.Book].related_to(surfaces, on_top)
     # clothes laid on the bed, the dresser or a chair
-    clothes = scene()[S.FoldedClothes].related_to(dressers | beds | reading_chairs | desk_chairs,
-                                                   on_top)
+    clothes = scene()[S.FoldedClothes].related_to(
+        dressers | beds | reading_chairs | desk_chairs | benches, on_top)
     decor = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
         S.Electronics).related_to(surfaces, on_top)
@@ -119,9 +139,10 @@ def bedroom(room: ObjSet) -> Problem:
             "up to two nightstands at the head": nightstands.count().in_range(0, 2),
             "a wardrobe or a dresser": (wardrobes.count() + dressers.count()).in_range(1, 2),
             "a desk at most": desks.count().in_range(0, 1),
-            "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
+            "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() == 1),
             "a reading chair at most": reading_chairs.count().in_range(0, 1),
             "a rug at most": rugs.count().in_range(0, 1),
+            "a bench at most": benches.count().in_range(0, 1),
             "up to two plants": plants.count().in_range(0, 2),
             "a bookcase at most": bookcases.count().in_range(0, 1),
             # asked for once the bed stands, 0 up to the area, then up to LARGER_ROOM (any
@@ -137,8 +158,16 @@ def bedroom(room: ObjSet) -> Problem:
             "a lamp on the desk": desks.all(lambda d: desk_lamps.related_to(d, on_top).count() <= 1),
             "a laptop on the desk": desks.all(lambda d: laptops.related_to(d, on_top).count() <= 1),
             "a ceiling light": ceiling_lights(room).count() == 1,
-            "a lamp per nightstand": nightstands.all(lambda n: lamps.related_to(n, on_top).count() <= 1),
+            "a lamp on each nightstand": nightstands.all(
+                lambda n: lamps.related_to(n, on_top).count() == 1),
             "pictures": art.count().in_range(1, 3),
+            # a wall shelf hung low over a nightstand leaves its lamp no room
+            "wall shelves within reach": shelves.all(
+                lambda s: (height(s) * EYE_LEVEL_WEIGHT).in_range(
+                    SHELF_BAND[0] * EYE_LEVEL_WEIGHT, SHELF_BAND[1] * EYE_LEVEL_WEIGHT)),
+            "pictures and the mirror centred at eye level": (art | mirrors).all(
+                lambda a: (height(a) * EYE_LEVEL_WEIGHT).in_range(
+                    EYE_LEVEL[0] * EYE_LEVEL_WEIGHT, EYE_LEVEL[1] * EYE_LEVEL_WEIGHT)),
             "a mirror at most": mirrors.count().in_range(0, 1),
             "a wall clock at most": wall_clocks.count().in_range(0, 1),
             "boxes on the wardrobe": wardrobes.all(
@@ -149,9 +178,14 @@ def bedroom(room: ObjSet) -> Problem:
             "wardrobe doors free": fronts_free(wardrobes, blockers, room, margin=DOOR_SWING),
             # two constraints: one counts from the stage of its latest set on, so the large
             # furniture's fronts are kept free while the large stage places it
-            "storage fronts free": fronts_free(dressers | desks | bookcases, blockers, room),
+            "storage fronts free": fronts_free(dressers | bookcases, blockers, room),
+            # the desk's own chair stands before it (it blocked its own desk: no chair was ever
+            # pulled up); anything else keeps the chair's room free
+            "room for the desk's chair": fronts_free(desks, blockers.excluding(S.Chair), room,
+                                                     need=DESK_CHAIR_ROOM),
             "nightstand fronts free": fronts_free(nightstands, blockers, room),
-            "the bed's foot free": fronts_free(beds, blockers, room),
+            "the bed's foot free": fronts_free(beds, blockers.excluding(S.Bench), room),
+            "the bench's front free": fronts_free(benches, blockers, room),
             # a narrow room's bed stands along a wall, free on one side; the score below asks
             # for both
             "free access to a side": beds.all(lambda b: side_free(b, "left") | side_free(b, "right")),
@@ -168,8 +202,6 @@ def bedroom(room: ObjSet) -> Problem:
                 + side_clearance(b, "right").hinge(BED_SIDE, SIDE_PROBE)).minimize(4),
             "furniture square to the walls": angle_alignment_cost(blockers, room).minimize(1),
             "plants by the walls": plants.mean(lambda p: p.distance(room).hinge(0.0, 0.1)).minimize(2),
-            "a lamp on each nightstand": lamps.count().maximize(1),
-            "pictures at eye level": art.mean(lambda a: height(a).hinge(1.3, 1.8)).minimize(2),
             "pictures in view": accessibility_cost(art, blockers).minimize(2),
             # one term per stage (a term counts from the stage of its latest set on): the
             # furniture, what hangs on the walls, the things on and in the furniture
@@ -183,6 +215,8 @@ def bedroom(room: ObjSet) -> Problem:
                 room.volume((0, 1)) - DRESSER_AREA).clip(0.0, 1.0)).maximize(DRESSER_REWARD),
             "a desk corner in a larger room": (desks.count() * (
                 room.volume((0, 1)) - DESK_AREA).clip(0.0, 1.0)).maximize(DESK_REWARD),
+            "a bench at the bed's foot in a larger room": (benches.count() * (
+                room.volume((0, 1)) - BENCH_AREA).clip(0.0, 1.0)).maximize(BENCH_REWARD),
             "things on the floor by the walls": floor_things.mean(
                 lambda t: t.distance(room).hinge(0.0, 0.1)).minimize(2),
             "things on the walls": (shelves.count() * 2 + art.count() + mirrors.count()
@@ -190,8 +224,6 @@ def bedroom(room: ObjSet) -> Problem:
             "a lived-in room": (books.count() + clothes.count() + decor.count() + desk_lamps.count()
                                 + laptops.count()).maximize(0.3),
             "things kept in the wardrobe and on the shelves": kept.count().maximize(0.3),
-            "wall shelves within reach": shelves.mean(
-                lambda s: height(s).hinge(*SHELF_BAND)).minimize(2),
             "shelves free": accessibility_cost(bookcases, blockers).minimize(1),
             "reading chair by a lamp or window": reading_chairs.mean(
                 lambda c: c.distance(room).hinge(0.0, 0.3)).minimize(0.5),
