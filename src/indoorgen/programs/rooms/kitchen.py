@@ -60,7 +60,8 @@ def kitchen(room: ObjSet) -> Problem:
     along_walls = floor.related_to(room, against_wall)
     # one stage builds the runs: the sink and the cooker against the walls a working distance
     # apart, the dishwasher set in beside the sink, base units beside the appliances and each
-    # other, and the fridge closing a run's end beside a unit or the dishwasher
+    # other, and the fridge closing a run's end beside a unit or the dishwasher (not beside the
+    # sink or the cooker: the triangle's legs)
     sinks = along_walls[S.KitchenSink]
     cookers = along_walls[S.Range]
     dishwashers = in_the_run(along_walls[S.Dishwasher], sinks)
