@@ -2,10 +2,11 @@
 the stage each context's objects are placed in."""
 import math
 
-from indoorgen.constraints import Problem, scene
+from indoorgen.constraints import InLine, Problem, SupportedBy, scene
 from indoorgen.constraints.bounds import context_of, find_bounds, static_stage, term_stage
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
+from indoorgen.model.tags import Subpart
 from support.dsl import at_table, base_view, on_floor, on_top, program, room
 
 
@@ -69,3 +70,11 @@ def test_contexts_and_stages_of_set_chains():
     assert static_stage(tables) == "large" and static_stage(cups) == "small"
     assert static_stage(scene()[S.Cup]) is None
     assert term_stage(cups.count() + tables.count()) == "small"
+
+
+def test_in_line_objects_are_placed_with_their_floor_standing_parent():
+    floor = scene().related_to(room(), on_floor)
+    sinks = floor[S.KitchenSink]
+    beside = floor[S.KitchenCabinet].related_to(sinks, SupportedBy(Subpart.Side, Subpart.Side, 0.05))
+    in_line = floor[S.KitchenCabinet].related_to(sinks, InLine(Subpart.Side, Subpart.Side, 0.05))
+    assert static_stage(beside) == "medium" and static_stage(in_line) == "large"

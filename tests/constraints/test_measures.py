@@ -119,6 +119,16 @@ def test_center_distance_is_zero_only_when_centred():
     assert value(v, light.center_distance(table)) == pytest.approx(0.0)
 
 
+def test_front_distance_is_walked_between_the_fronts():
+    """Two appliances on the walls of a corner: their fronts stand closer than their centres."""
+    v = FakeView()
+    v.add("range", {S.Range}, (1.0, 0.3, 0.45), yaw=math.pi / 2, extents=(0.6, 0.76, 0.9))
+    v.add("fridge", {S.Fridge}, (0.35, 1.2, 0.9), extents=(0.7, 0.8, 1.8))
+    cooker, fridge = scene()[S.Range], scene()[S.Fridge]
+    assert value(v, fridge.center_distance(cooker)) == pytest.approx(math.hypot(0.65, 0.9))
+    assert value(v, fridge.front_distance(cooker)) == pytest.approx(math.hypot(0.3, 0.6))
+
+
 def _sofa_and_stand(stand_yaw: float, stand_pos=(4.0, 0.0, 0.3)) -> FakeView:
     v = FakeView()
     v.add("sofa", {S.Sofa}, (0, 0, 0.4), yaw=0.0, extents=(0.9, 2.0, 0.8))

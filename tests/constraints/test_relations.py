@@ -2,7 +2,14 @@
 their scene.json text."""
 import pytest
 
-from indoorgen.constraints import AnyRelation, CoPlanar, StableAgainst, SupportedBy, Touching
+from indoorgen.constraints import (
+    AnyRelation,
+    CoPlanar,
+    InLine,
+    StableAgainst,
+    SupportedBy,
+    Touching,
+)
 from indoorgen.constraints.relations import parse_relation
 from indoorgen.errors import ConfigError
 from indoorgen.model.tags import Subpart
@@ -11,6 +18,7 @@ on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
 against_wall = StableAgainst(Subpart.Back, Subpart.Wall, margin=0.05)
 on_top = SupportedBy(Subpart.Bottom, Subpart.SupportSurface)
 fully_on = StableAgainst(Subpart.Bottom, Subpart.SupportSurface)
+in_line = InLine(Subpart.Side, Subpart.Side, 0.048)
 
 
 def test_implies():
@@ -39,7 +47,7 @@ def test_planar_relations():
 @pytest.mark.parametrize("rel", [on_floor, against_wall, on_top, fully_on, Touching(),
                                  Touching(Subpart.Bottom, Subpart.Top),
                                  CoPlanar(Subpart.Front, Subpart.Front, 0.01), AnyRelation(),
-                                 ~on_floor])
+                                 ~on_floor, in_line])
 def test_parse_relation_reads_back_the_repr(rel):
     assert parse_relation(repr(rel)) == rel
 
@@ -49,3 +57,9 @@ def test_parse_relation_rejects_junk():
         parse_relation("on the floor")
     with pytest.raises(ConfigError):
         parse_relation("Hovering(bottom,floor,0)")
+
+
+def test_in_line_means_what_supported_by_means():
+    beside = SupportedBy(Subpart.Side, Subpart.Side, 0.048)
+    assert in_line != beside and repr(in_line).startswith("InLine(")
+    assert in_line.implies(beside) and beside.implies(in_line)  # the same geometry

@@ -27,6 +27,7 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.constraints.relations import (
     AnyRelation,
     CoPlanar,
+    InLine,
     NegatedRelation,
     Relation,
     StableAgainst,
@@ -41,4 +42,4 @@ __all__ = ["Constraint", "Not", "ObjSet", "Problem", "Scalar", "ScoreTerm", "acc
            "facing_angle", "focus_score", "front_clearance", "freespace_2d", "height",
            "min_distance", "reflectional_asymmetry",
            "rotational_asymmetry", "scene", "volume", "AnyRelation", "CoPlanar",
-           "NegatedRelation", "Relation", "StableAgainst", "SupportedBy", "Touching"]
+           "InLine", "NegatedRelation", "Relation", "StableAgainst", "SupportedBy", "Touching"]

@@ -124,12 +124,20 @@ def across(relation: Relation) -> bool:
 ACROSS_MIN = 1.0
 
 
+def placed_with_parent(relation: Relation) -> bool:
+    """Whether a child of `relation` is placed in its parent's stage rather than after it: floor
+    furniture across the floor from its parent (`across`), or set in line with it (`InLine`: a
+    kitchen run's appliances and base units)."""
+    return across(relation) or getattr(relation, "with_parent", False)
+
+
 def context_stage(ctx: Context, parents: Parents, room_ids: frozenset[str]) -> str:
-    """large: on the room's floor only, or across the floor from other furniture (`across`);
+    """large: on the room's floor only, or placed with floor furniture (`placed_with_parent`);
     medium: on walls/ceiling, or on the floor beside a furniture parent; small: on or in other
     objects."""
     on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in ctx.relations)
-    object_parent = any(any(p not in room_ids for p in ps) for r, ps in parents if not across(r))
+    object_parent = any(any(p not in room_ids for p in ps) for r, ps in parents
+                        if not placed_with_parent(r))
     if object_parent:
         return "medium" if on_floor else "small"
     return "large" if on_floor else "medium"
@@ -160,7 +168,7 @@ def static_stage(node: Node[Any]) -> str | None:
     if not rels:
         return None
     on_floor = any(getattr(r, "parent", None) == Subpart.Floor for r, _ in rels)
-    object_parent = any(not room for r, room in rels if not across(r))
+    object_parent = any(not room for r, room in rels if not placed_with_parent(r))
     if object_parent:
         return "medium" if on_floor else "small"
     return "large" if on_floor else "medium"

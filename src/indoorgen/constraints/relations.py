@@ -56,6 +56,8 @@ class StableAgainst(Relation):
     parent: Subpart
     margin: float = 0.0
     overhang: bool = True
+    #: placed together with its parent (in its parent's stage) rather than after it (`InLine`)
+    with_parent: bool = False
     is_planar = True
 
     def implies(self, other: Relation) -> bool:
@@ -70,7 +72,7 @@ class StableAgainst(Relation):
         return super().implies(other)
 
     def __repr__(self) -> str:
-        kind = "StableAgainst" if self.overhang else "SupportedBy"
+        kind = "InLine" if self.with_parent else "StableAgainst" if self.overhang else "SupportedBy"
         return f"{kind}({self.child.value},{self.parent.value},{self.margin:g})"
 
 
@@ -79,6 +81,12 @@ def SupportedBy(child: Subpart = Subpart.Bottom, parent: Subpart = Subpart.Suppo
     """The child rests on the parent's surface without tipping: its centroid projects inside it
     (it may overhang, like a plate at a table's edge)."""
     return StableAgainst(child, parent, margin, overhang=False)
+
+
+def InLine(child: Subpart, parent: Subpart, margin: float = 0.0) -> StableAgainst:
+    """`SupportedBy`, placed together with its floor-standing parent rather than after it: the
+    appliances and base units of a kitchen run, built beside one another in one stage."""
+    return StableAgainst(child, parent, margin, overhang=False, with_parent=True)
 
 
 @dataclass(frozen=True)
@@ -163,6 +171,8 @@ def parse_relation(text: str) -> Relation:
         return StableAgainst(Subpart(args[0]), Subpart(args[1]), float(args[2]))
     if kind == "SupportedBy":
         return StableAgainst(Subpart(args[0]), Subpart(args[1]), float(args[2]), overhang=False)
+    if kind == "InLine":
+        return InLine(Subpart(args[0]), Subpart(args[1]), float(args[2]))
     if kind == "CoPlanar":
         return CoPlanar(Subpart(args[0]), Subpart(args[1]), float(args[2]))
     if kind == "Touching":

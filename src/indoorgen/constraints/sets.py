@@ -19,7 +19,14 @@ from indoorgen.constraints.logic import Constraint, ForAll
 from indoorgen.constraints.node import Env, EvalContext, Node, Tag
 from indoorgen.constraints.relations import Relation
 from indoorgen.constraints.scalars import Count, Reduce, Scalar, ScalarLike, as_scalar
-from indoorgen.constraints.terms import Area, CenterDistance, Distance, MinDistance, Volume
+from indoorgen.constraints.terms import (
+    Area,
+    CenterDistance,
+    Distance,
+    FrontDistance,
+    MinDistance,
+    Volume,
+)
 from indoorgen.errors import ConstraintError
 from indoorgen.model.tags import Semantics
 
@@ -107,6 +114,11 @@ class ObjSet(Node[frozenset[str]]):
     def center_distance(self, other: ObjSet) -> Scalar:
         """Smallest plan distance between the two sets' members' centres ("centred over")."""
         return CenterDistance(self, other)
+
+    def front_distance(self, other: ObjSet) -> Scalar:
+        """Smallest plan distance between the two sets' members' front-face centres (where one
+        stands to use each)."""
+        return FrontDistance(self, other)
 
     # quantifiers
     def all(self, fn: Callable[[ObjSet], Constraint]) -> Constraint:

@@ -13,7 +13,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from indoorgen.constraints import geometry
-from indoorgen.constraints.node import Env, EvalContext, Node
+from indoorgen.constraints.node import Env, EvalContext, Node, ObjectView
 from indoorgen.constraints.scalars import Scalar
 
 
@@ -84,6 +84,28 @@ class CenterDistance(GeometricTerm):
             for y in sorted(b):
                 if y != x:
                     best = min(best, float(np.linalg.norm(ev.view.center(y)[:2] - cx)))
+        return best if best < math.inf else 0.0
+
+
+def front_centre(view: ObjectView, o: str) -> np.ndarray:
+    """Plan point at the middle of `o`'s front face (where one stands to use it)."""
+    c, f = view.center(o)[:2], view.front(o)[:2]
+    return c + float(np.dot(view.front_point(o)[:2] - c, f)) * f
+
+
+class FrontDistance(GeometricTerm):
+    """Smallest plan distance between the front-face centres of two sets' members: the legs of a
+    kitchen's work triangle, walked between where one stands at each (the quality report's)."""
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """The least front-to-front plan distance over pairs of distinct members (0 if none)."""
+        a, b = self.members(ev, env)
+        best = math.inf
+        for x in sorted(a):
+            fx = front_centre(ev.view, x)
+            for y in sorted(b):
+                if y != x:
+                    best = min(best, float(np.linalg.norm(front_centre(ev.view, y) - fx)))
         return best if best < math.inf else 0.0
 
 

@@ -98,6 +98,10 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("bottles", (S.Bottle,), inside, 5),
         Load("jars", (S.Jar,), inside, 3),
     ),
+    "ranges": (
+        # a pan left on the hob (on a glass top or a grate it stands on whole)
+        Load("a pan", (S.Pan,), on_top, 1),
+    ),
     "dishwashers": (
         Load("plates", (S.Plate,), inside, 6),
         Load("bowls", (S.Bowl,), inside, 3, (S.Food,)),
@@ -172,6 +176,7 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "base cabinets": floor[S.KitchenCabinet].excluding(S.WallMounted),
         "wall cabinets": walls[S.WallCabinet],
         "fridges": floor[S.Fridge],
+        "ranges": floor[S.Range],
         "dishwashers": floor[S.Dishwasher],
         "microwaves": scene()[S.Microwave].related_to(floor, on_top),
         "wardrobes": floor[S.Wardrobe],

@@ -50,3 +50,23 @@ def test_the_filler_clears_the_sweeps_before_the_fronts_and_stays_in_the_run(gen
         if len(near):
             past_side = max(near[:, 1].max() - hi[1], lo[1] - near[:, 1].min())
             assert past_side <= RUN_FILLER, (generator, seed, past_side)
+
+
+def test_the_runs_are_built_in_one_stage_with_the_fridge_at_an_end():
+    """Units, the dishwasher and the fridge are set in beside the appliances while the large
+    stage stands them (they are no afterthought of the medium stage); no unit is set beside the
+    fridge, which closes a run's end."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 3), (0, 3)])
+    view.add("kitchen_sink_0", {S.Object, S.KitchenSink, S.Countertop}, center=(0.3, 1.5, 0.45),
+             extents=(0.6, 0.8, 0.9), relations=[(on_floor, "r"), (against_wall, "r")],
+             generator="kitchen_sink", params={})
+    view.add("fridge_0", {S.Object, S.Fridge, S.Appliance}, center=(0.35, 0.5, 0.9),
+             extents=(0.7, 0.8, 1.8), relations=[(on_floor, "r"), (against_wall, "r")],
+             generator="fridge", params={})
+    problem = kitchen(scene()[S.Room].named("r"))
+    bounds = {b.name: b for b in find_bounds(problem, Evaluator(problem, view))}
+    for name in ("cabinet runs", "a fridge", "a dishwasher at most"):
+        assert bounds[name].stage(frozenset({"r"})) == "large", name
+    assert "kitchen_sink_0" not in dict(bounds["a fridge"].parents).get(in_run, ())
+    assert "fridge_0" not in dict(bounds["cabinet runs"].parents)[in_run]
