@@ -1,6 +1,6 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
-food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes and shoes in
-wardrobes, shoes on shoe racks, books in nightstands, lamps and decor on dressers, tableware on
+food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes (hung from the
+rail and folded) and shoes in wardrobes, shoes on shoe racks, books in nightstands, lamps and decor on dressers, tableware on
 dining tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to
 every room program, so the room programs only say which furniture stands where.
 
@@ -18,7 +18,7 @@ from indoorgen.constraints import Constraint, Not, ObjSet, Problem, Relation, sc
 from indoorgen.constraints import height as height_of
 from indoorgen.constraints.node import Tag
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
+from indoorgen.programs.relations import hung_from, inside, on_floor, on_top, on_wall
 
 #: everyday objects rest no higher than eye level (~1.6 m, 50th-percentile adult eye height,
 #: the top of the comfortable-reach zone in ergonomic storage guidance); the quality report's
@@ -107,6 +107,7 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("a bowl", (S.Bowl,), inside, 1, (S.Food,)),
     ),
     "wardrobes": (
+        Load("hung clothes", (S.Garment,), hung_from, 10),
         Load("folded clothes", (S.FoldedClothes,), inside, 14),
         Load("shoes", (S.Shoes,), inside, 3),
         Load("boxes", (S.Box,), inside, 3),

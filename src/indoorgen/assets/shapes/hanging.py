@@ -11,12 +11,13 @@ from indoorgen.model.tags import Subpart
 #: a clothes rail's radius (m): a 25 mm wardrobe tube, the common closet rod
 RAIL_RADIUS = 0.0125
 #: the Rail surface's half-width across the rail (m): a hook's centre sits within it
-RAIL_HALF_WIDTH = 0.005
+RAIL_HALF_WIDTH = 0.001
 #: a hook's free play around the rail (m): its inside's radius is the rail's and this much
-HOOK_PLAY = 0.004
-#: how far the hook's arc is centred under the rail's axis (m): its inside then rests 1 mm over
-#: the rail's top and clears its sides by HOOK_PLAY - HOOK_DROP
-HOOK_DROP = HOOK_PLAY - 0.002
+HOOK_PLAY = 0.005
+#: how far the hook's arc is centred under the rail's axis (m): hung (its `hook` surface the
+#: solver's 1 mm contact gap over the rail's top), its inside is ~3 mm over the rail's top and
+#: clears the rail by 2 mm or more all round, polygon facets and the rail's width included
+HOOK_DROP = 0.003
 
 
 def rail_surface(name: str, x: float, y0: float, y1: float, z_axis: float) -> Surface:
