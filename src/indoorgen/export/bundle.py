@@ -168,7 +168,7 @@ class ExportBundle:
     def attachment(self, obj: SceneObject) -> Attachment | None:
         """The link of another object `obj` is fixed to (a garment to the wardrobe it hangs
         in), or None for an object standing on its own."""
-        return attachment(obj, self.scene.objects)
+        return attachment(obj, self.scene.objects, self.assets)
 
     def lies_under(self, obj: SceneObject) -> bool:
         """Whether `obj` lies under other objects (a rug): fixed, and written without collision
@@ -227,17 +227,23 @@ class Attachment:
     yaw: float
 
 
-def attachment(obj: SceneObject, objects: dict[str, SceneObject]) -> Attachment | None:
-    """Where `obj` is fixed to another object: hung from its rail by a hook (its base link);
-    None for an object standing, lying or hanging on its own (a book on a shelf is a free
-    body)."""
+def attachment(obj: SceneObject, objects: dict[str, SceneObject],
+               assets: dict[str, Asset]) -> Attachment | None:
+    """Where `obj` is fixed to another object: on a surface moving with one of its links (in a
+    drawer: that drawer), or hung from its rail by a hook (its base link); None for an object
+    standing, lying or hanging on its own (a book on a shelf is a free body)."""
     for r in obj.relations:
+        if r.parent not in objects:
+            continue
         rel = parse_relation(r.relation)
-        if isinstance(rel, StableAgainst) and rel.child == Subpart.Hook and r.parent in objects:
+        hung = isinstance(rel, StableAgainst) and rel.child == Subpart.Hook
+        link = next((s.link for s in assets[r.parent].surfaces if s.name == r.parent_surface),
+                    "base") if r.parent in assets else "base"
+        if hung or link != "base":
             po = objects[r.parent].pose
             local = po.rotation().T @ (np.asarray(obj.pose.position, float)
                                        - np.asarray(po.position, float))
-            return Attachment(r.parent, "base", local, obj.pose.yaw - po.yaw)
+            return Attachment(r.parent, link, local, obj.pose.yaw - po.yaw)
     return None
 
 

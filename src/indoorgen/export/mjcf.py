@@ -34,7 +34,6 @@ from indoorgen.assets.protocol import Joint
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle
 from indoorgen.export.meshes import joint_frames
 from indoorgen.export.obj import CollisionGeom, MeshFiles
-from indoorgen.model.scene import SceneObject
 from indoorgen.export.physics import (
     DOOR_DAMPING,
     JOINT_ARMATURE,
@@ -43,6 +42,7 @@ from indoorgen.export.physics import (
     Inertial,
     matrix_to_quat,
 )
+from indoorgen.model.scene import SceneObject
 
 log = logging.getLogger(__name__)
 

@@ -58,7 +58,7 @@ class HungGarment(PartsFactory):
     rail: shoulders along Y, front +X along the rail, the hook's `hook` surface at the top."""
 
     name = "hung_garment"
-    tags = frozenset({S.Object, S.Textile, S.Garment})
+    tags = frozenset({S.Object, S.SmallObject, S.Textile, S.Garment})
     size_class = "small"
     slots = ["fabric", "hanger", "hook"]
     visual_slots = ("hook",)
