@@ -8,10 +8,14 @@ import pytest
 from indoorgen import generate
 from indoorgen.architecture.room import rectangle
 from indoorgen.assets import get_factory
+from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
+from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
+from indoorgen.model.tags import Subpart
 from indoorgen.pipeline import GenerateConfig, HomeConfig, generate_home
+from indoorgen.programs.relations import hung_from, inside
 
 #: texture size used by the tests (small: baking is not what they check)
 TEX = 128
@@ -62,7 +66,49 @@ def articulated_scene() -> Scene:
         sc.add_object(SceneObject(f"{g}_0", g, p, 100 + i,
                                   Pose((x, y, 1.4 if on_wall else 0.001), 0.3 * i),
                                   sorted(t.value for t in f.tags), room.name, [rel]))
+    hang_garments(sc, sc.objects["wardrobe_0"], GARMENTS)
+    put_in_drawer(sc, sc.objects["dresser_0"])
     return sc
+
+
+def put_in_drawer(sc: Scene, dresser: SceneObject) -> None:
+    """Lay a small stack of folded clothes in the middle of `dresser`'s first drawer."""
+    floor = next(s for s in get_factory("dresser").create(dresser.params).surfaces
+                 if s.subpart == Subpart.Interior and s.link != "base")
+    floor = floor.transformed(dresser.pose.rotation(), np.asarray(dresser.pose.position))
+    f = get_factory("folded_clothes")
+    p = f.resolve(dict(f.sample_params(np.random.default_rng(0)), n_items=2, width=0.25,
+                       depth=0.2, item_thickness=0.02))
+    pos = floor.origin + [0.0, 0.0, CONTACT_GAP]
+    rel = RelationInstance(repr(inside), dresser.name, "bottom", floor.name)
+    sc.add_object(SceneObject("folded_clothes_0", "folded_clothes", p, 300,
+                              Pose(tuple(float(v) for v in pos), dresser.pose.yaw),
+                              sorted(t.value for t in f.tags),
+                              dresser.room, [rel]))
+
+
+#: the garments hung in the articulated scene's wardrobe
+GARMENTS = ("shirt", "dress", "coat")
+
+
+def hang_garments(sc: Scene, wardrobe: SceneObject, kinds: tuple[str, ...]) -> None:
+    """Hang one `hung_garment` of each kind from `wardrobe`'s first rail, 12 cm apart from its
+    middle on, turned across it (as the solver hangs them)."""
+    rail = next(s for s in get_factory("wardrobe").create(wardrobe.params).surfaces
+                if s.subpart == Subpart.Rail).transformed(wardrobe.pose.rotation(),
+                                                          np.asarray(wardrobe.pose.position))
+    f = get_factory("hung_garment")
+    yaw = float(np.arctan2(rail.u[1], rail.u[0]))
+    for k, kind in enumerate(kinds):
+        p = f.resolve(dict(f.sample_params(np.random.default_rng(k)), garment=kind, length=0.6))
+        hook = f.placeholder(p).surface("hook")
+        spot = rail.origin + (k * 0.12 - 0.12) * rail.u + [0.0, 0.0, CONTACT_GAP]
+        pos = spot - yaw_matrix(yaw) @ hook.origin
+        rel = RelationInstance(repr(hung_from), wardrobe.name, "hook", rail.name)
+        sc.add_object(SceneObject(f"hung_garment_{k}", "hung_garment", p, 200 + k,
+                                  Pose(tuple(float(v) for v in pos), yaw),
+                                  sorted(t.value for t in f.tags),
+                                  wardrobe.room, [rel]))
 
 
 @pytest.fixture(scope="session")

@@ -66,7 +66,59 @@ def test_fixed_objects_are_welded(exported):
         b = m.body(o.name)
         has_free = any(m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
                        for j in range(m.body_jntadr[b.id], m.body_jntadr[b.id] + m.body_jntnum[b.id]))
-        assert has_free != bundle.is_fixed(o), o.name
+        assert has_free == (not bundle.is_fixed(o) and bundle.attachment(o) is None), o.name
+
+
+def test_hung_garments_are_welded_in_their_wardrobe_and_its_fronts_open_clear_of_them(articulated):
+    """A garment on the wardrobe's rail is a body inside the wardrobe's, with no joint: it stays
+    on its hanger under gravity, and every door and drawer of the wardrobe opened to its limit
+    touches none (the contacts the export excludes counted too)."""
+    bundle, d = articulated
+    m = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    garments = [o.name for o in bundle.objects if o.generator == "hung_garment"]
+    assert garments
+    wardrobe = m.body("wardrobe_0").id
+    for g in garments:
+        b = m.body(g)
+        assert m.body_parentid[b.id] == wardrobe and m.body_jntnum[b.id] == 0
+    data = mujoco.MjData(m)
+    mujoco.mj_forward(m, data)
+    start = {g: data.xpos[m.body(g).id].copy() for g in garments}
+    for _ in range(500):
+        mujoco.mj_step(m, data)
+    for g in garments:
+        assert np.linalg.norm(data.xpos[m.body(g).id] - start[g]) < 0.01
+    mujoco.mj_resetData(m, data)
+    for j in range(m.njnt):
+        if m.body_parentid[m.jnt_bodyid[j]] == wardrobe and m.jnt_limited[j]:
+            data.qpos[m.jnt_qposadr[j]] = m.jnt_range[j][1]
+    mujoco.mj_forward(m, data)
+    ids = {m.body(g).id for g in garments}
+    fronts = {b for b in range(m.nbody) if m.body_parentid[b] == wardrobe} - ids
+    solid = (m.geom_contype != 0) | (m.geom_conaffinity != 0)
+    hung = [k for k in range(m.ngeom) if solid[k] and m.geom_bodyid[k] in ids]
+    moving = [k for k in range(m.ngeom) if solid[k] and m.geom_bodyid[k] in fronts]
+    assert hung and moving
+    for a in hung:  # measured apart from contacts: the export excludes these pairs
+        for b in moving:
+            assert mujoco.mj_geomDistance(m, data, a, b, 0.05, None) > -1e-3, (a, b)
+
+
+def test_what_lies_in_a_drawer_is_welded_in_it_and_comes_out_with_it(articulated):
+    bundle, d = articulated
+    m = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    drawer = m.body("dresser_0__drawer_0").id
+    clothes = m.body("folded_clothes_0").id
+    assert m.body_parentid[clothes] == drawer and m.body_jntnum[clothes] == 0
+    data = mujoco.MjData(m)
+    mujoco.mj_forward(m, data)
+    start = data.xpos[[drawer, clothes]].copy()
+    j = m.body_jntadr[drawer]
+    data.qpos[m.jnt_qposadr[j]] = m.jnt_range[j][1]
+    mujoco.mj_forward(m, data)
+    moved = data.xpos[[drawer, clothes]] - start
+    assert np.linalg.norm(moved[0]) > 0.1
+    np.testing.assert_allclose(moved[1], moved[0], atol=1e-9)
 
 
 def test_rugs_lie_fixed_and_furniture_stands_through_them(exported):

@@ -158,3 +158,16 @@ def test_pybullet_loads_the_homes(exported_homes, home, bullet):
     n_links = sum(len(bundle.assets[o.name].links) for o in bundle.objects) + 1 + len(
         bundle.moving_elements)
     assert pb.getNumJoints(body, physicsClientId=bullet) == n_links
+
+
+def test_hung_garments_and_drawer_contents_are_fixed_to_their_links(articulated):
+    bundle, d = articulated
+    robot = ET.parse(d / "scene.urdf").getroot()
+    parents = {j.find("child").get("link"): j for j in robot.iter("joint")}
+    garments = [o.name for o in bundle.objects if o.generator == "hung_garment"]
+    assert garments
+    for g in garments:
+        j = parents[f"{g}__base"]
+        assert j.get("type") == "fixed" and j.find("parent").get("link") == "wardrobe_0__base"
+    j = parents["folded_clothes_0__base"]  # in a drawer: fixed to the drawer
+    assert j.get("type") == "fixed" and j.find("parent").get("link") == "dresser_0__drawer_0"

@@ -10,7 +10,7 @@ import pytest
 from indoorgen.assets import Surface
 from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.model.tags import Subpart
-from indoorgen.programs.relations import against_wall, on_floor
+from indoorgen.programs.relations import against_wall, hung_from, on_floor
 from indoorgen.solver.placement import (
     SURFACE_GAP,
     free_region,
@@ -150,3 +150,21 @@ def test_headroom_is_the_height_under_the_shelf_above_and_unbounded_on_top():
     room = headroom(st, case, shelves[0].name)
     assert 0.1 < room <= shelves[1].origin[2] - shelves[0].origin[2]
     assert headroom(st, case, "top") == math.inf
+
+
+def test_a_garment_hung_from_a_rail_turns_across_it_and_slides_along_it_only():
+    st = make_state()
+    wardrobe = put(st, "wardrobe", floor(), (2.0, 1.5), yaw=0.4, seed=1)
+    rail = next(s.name for s in st.objects[wardrobe].asset.surfaces if s.subpart == Subpart.Rail)
+    rail_w = st.surface_world(wardrobe, rail)
+    garment = put(st, "hung_garment", [Placement(hung_from, wardrobe, "hook", rail)],
+                  tuple(rail_w.origin[:2]), yaw=2.0, stage="small")
+    ob = st.objects[garment]
+    assert placements_hold(st, garment)
+    assert [d for d, _ in _gap(st, garment)] == pytest.approx([CONTACT_GAP], abs=1e-9)
+    # its front (and so its thin side) runs along the rail, its shoulders across it
+    np.testing.assert_allclose(st.front(garment), rail_w.u, atol=1e-12)
+    pos, yaw, dof = solve_pose(st, ob.asset, ob.placements, ob.position, ob.yaw + 1.0)
+    assert not dof.rotates and yaw == pytest.approx(ob.yaw)
+    # free to move in the rail's plane; the rail's narrow strip keeps it on the rail
+    np.testing.assert_allclose(dof.projection @ rail_w.normal, 0.0, atol=1e-12)

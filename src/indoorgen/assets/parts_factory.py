@@ -49,6 +49,9 @@ class PartsFactory(AssetFactory):
     drop_box: ClassVar[tuple[str, ...]] = ()
     #: whether `create` is a closed (watertight) solid
     closed: ClassVar[bool] = True
+    #: material slots whose parts are visual only, with no collision piece (a hanger's hook,
+    #: whose hull would swallow the rail it hangs from)
+    visual_slots: ClassVar[tuple[str, ...]] = ()
 
     def bottom_is_solid(self, params: dict[str, Any]) -> bool:
         """Whether the whole `bottom` polygon rests on mesh for these params."""
@@ -109,7 +112,7 @@ class PartsFactory(AssetFactory):
         asset = self._asset(p, mesh, fs, slots, offset, ext)
         # hollow the cheap body where things are put away (a cupboard's shelves)
         rooms = self._stowage(p, float(ext[2] - offset[2]))
-        pieces = hollowed(cheap, rooms) if rooms else cheap
+        pieces = self.colliding(hollowed(cheap, rooms) if rooms else cheap)
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
                            for link, h in convex_pieces(pieces, max_pieces=24 + 8 * len(rooms))]
@@ -169,8 +172,13 @@ class PartsFactory(AssetFactory):
         free = self._free_boxes(asset, parts, offset) + \
             self._stowage(p, float(ext[2] - offset[2]))
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
-                           for link, h in convex_pieces(parts, decompose=True, keep_free=free)]
+                           for link, h in convex_pieces(self.colliding(parts), decompose=True,
+                                                        keep_free=free)]
         return asset
+
+    def colliding(self, parts: list[Part]) -> list[Part]:
+        """The parts that get collision pieces: all but those in `visual_slots`."""
+        return [q for q in parts if q.slot not in self.visual_slots]
 
     @staticmethod
     def _free_boxes(asset: Asset, parts: list[Part], offset: np.ndarray) -> list[list[float]]:

@@ -86,6 +86,8 @@ class Surface:
     normal: np.ndarray
     u: np.ndarray
     polygon: sg.Polygon
+    #: the link the surface moves with (a drawer's floor: its drawer), "base" for the body
+    link: str = "base"
 
     @property
     def v(self) -> np.ndarray:
@@ -120,7 +122,7 @@ class Surface:
     def transformed(self, rotation: np.ndarray, translation: np.ndarray) -> Surface:
         """This surface rotated, then translated (the polygon itself is unchanged)."""
         return Surface(self.name, self.subpart, rotation @ self.origin + translation,
-                       rotation @ self.normal, rotation @ self.u, self.polygon)
+                       rotation @ self.normal, rotation @ self.u, self.polygon, self.link)
 
 
 @dataclass

@@ -37,9 +37,11 @@ from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
 from indoorgen.assets.materials import choose_materials
 from indoorgen.assets.protocol import Asset, Joint
+from indoorgen.constraints.relations import StableAgainst, parse_relation
 from indoorgen.export.convex import convex_parts, sound_pieces
 from indoorgen.export.physics import SOLID_KINDS, Inertial, link_inertials
 from indoorgen.model.scene import Scene, SceneObject
+from indoorgen.model.tags import Subpart
 
 log = logging.getLogger(__name__)
 
@@ -163,6 +165,11 @@ class ExportBundle:
         on something (a free, movable body)."""
         return is_fixed(obj, set(self.scene.rooms) | set(self.room_types))
 
+    def attachment(self, obj: SceneObject) -> Attachment | None:
+        """The link of another object `obj` is fixed to (a garment to the wardrobe it hangs
+        in), or None for an object standing on its own."""
+        return attachment(obj, self.scene.objects, self.assets)
+
     def lies_under(self, obj: SceneObject) -> bool:
         """Whether `obj` lies under other objects (a rug): fixed, and written without collision
         pieces (what stands on it stands on the floor through it)."""
@@ -207,6 +214,37 @@ def is_fixed(obj: SceneObject, rooms: Iterable[str]) -> bool:
     return bool(rels) and all(
         r.parent in rooms and (r.parent_surface.startswith("wall") or r.parent_surface == "ceiling")
         for r in rels)
+
+
+@dataclass(frozen=True)
+class Attachment:
+    """An object fixed to a link of another (exporters weld it there, so it moves with the
+    link): the other object, its link, and the object's pose in that object's frame."""
+
+    parent: str
+    link: str
+    position: np.ndarray
+    yaw: float
+
+
+def attachment(obj: SceneObject, objects: dict[str, SceneObject],
+               assets: dict[str, Asset]) -> Attachment | None:
+    """Where `obj` is fixed to another object: on a surface moving with one of its links (in a
+    drawer: that drawer), or hung from its rail by a hook (its base link); None for an object
+    standing, lying or hanging on its own (a book on a shelf is a free body)."""
+    for r in obj.relations:
+        if r.parent not in objects:
+            continue
+        rel = parse_relation(r.relation)
+        hung = isinstance(rel, StableAgainst) and rel.child == Subpart.Hook
+        link = next((s.link for s in assets[r.parent].surfaces if s.name == r.parent_surface),
+                    "base") if r.parent in assets else "base"
+        if hung or link != "base":
+            po = objects[r.parent].pose
+            local = po.rotation().T @ (np.asarray(obj.pose.position, float)
+                                       - np.asarray(po.position, float))
+            return Attachment(r.parent, link, local, obj.pose.yaw - po.yaw)
+    return None
 
 
 def texture_seed(material: str, variant: int) -> int:

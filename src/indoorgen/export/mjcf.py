@@ -7,6 +7,8 @@
   stay shut under gravity until pushed).
 - Objects hanging from walls or ceilings: bodies welded to the world (no joint); rugs too, with
   no collision geoms (furniture legs stand on the floor through their pile).
+- Objects fixed to another's link (`ExportBundle.attachment`: a garment hung from a wardrobe's
+  rail): a body inside that link's body, welded to it (no joint), so it moves with it.
 - Door leaves: a body each in the world with a `hinge` / `slide` joint (range from shut, 0, to
   fully open; `ref` the value the leaf stands at, so the model starts where the scene stands
   it); the leaf's contacts with the static architecture are excluded (its range keeps it
@@ -40,6 +42,7 @@ from indoorgen.export.physics import (
     Inertial,
     matrix_to_quat,
 )
+from indoorgen.model.scene import SceneObject
 
 log = logging.getLogger(__name__)
 
@@ -158,11 +161,12 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
     asset = bundle.assets[name]
     frames = joint_frames(asset)
     inertials = bundle.inertials(name)
-    yaw = obj.pose.yaw
-    base = ET.SubElement(world, "body", name=name, pos=_f(obj.pose.position),
+    container, position, yaw = _body_frame(world, bundle, obj)
+    base = ET.SubElement(container, "body", name=name, pos=_f(position),
                          quat=_f([math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]))
-    fixed = bundle.is_fixed(obj)
-    if not fixed:
+    if container is not world:  # welded to the link it hangs from: its mass goes along
+        _inertial(base, inertials["base"], frames["base"])
+    elif not bundle.is_fixed(obj):
         ET.SubElement(base, "freejoint", name=f"{name}__free")
         _inertial(base, inertials["base"], frames["base"])
     _geoms(base, assets, files, name, "base", frames["base"], not bundle.lies_under(obj))
@@ -189,6 +193,20 @@ def _object_body(world: ET.Element, assets: _Assets, bundle: ExportBundle, files
                         [j.name for j in pending])
             break
     return names
+
+
+def _body_frame(world: ET.Element, bundle: ExportBundle, obj: SceneObject
+                ) -> tuple[ET.Element, np.ndarray, float]:
+    """Where `obj`'s body goes: inside the body of the link it is fixed to (`attachment`), at
+    its pose in that link's frame, or in the world at its pose."""
+    att = bundle.attachment(obj)
+    if att is not None:
+        link = att.parent if att.link == "base" else f"{att.parent}__{att.link}"
+        body = world.find(f".//body[@name='{link}']")
+        if body is not None:
+            frame = joint_frames(bundle.assets[att.parent])[att.link]
+            return body, att.position - frame, att.yaw
+    return world, np.asarray(obj.pose.position, float), obj.pose.yaw
 
 
 def _element_geoms(body: ET.Element, assets: _Assets, files: MeshFiles, el: ArchElement,
@@ -242,8 +260,13 @@ def build_mjcf(bundle: ExportBundle, files: MeshFiles) -> ET.Element:
     for el in bundle.moving_elements:
         leaf = _leaf_body(world, assets, bundle, files, el)
         ET.SubElement(contact, "exclude", body1="world", body2=leaf)
-    for obj in bundle.objects:
-        names = _object_body(world, assets, bundle, files, obj.name)
+    bodies: dict[str, list[str]] = {}
+    # objects fixed to another's link go in after it, inside its body
+    for obj in sorted(bundle.objects, key=lambda o: bundle.attachment(o) is not None):
+        names = bodies[obj.name] = _object_body(world, assets, bundle, files, obj.name)
+        att = bundle.attachment(obj)
+        if att is not None:
+            names = names + bodies.get(att.parent, [])
         for i, a in enumerate(names):
             for b in names[i + 1:]:
                 ET.SubElement(contact, "exclude", body1=a, body2=b)

@@ -7,7 +7,9 @@ sits at its joint's origin, so the joint turns about the link frame. Visual mesh
 mass from volume x density (`physics.link_inertials`).
 
 `scene.urdf` holds everything in one robot whose root link is `world`: the architecture and
-every object fixed to it at its pose (link names prefixed `<object>__`). All paths are relative.
+every object fixed to it at its pose (link names prefixed `<object>__`); an object fixed to
+another's link (`ExportBundle.attachment`: a garment on a wardrobe's rail) is fixed to that link
+instead. All paths are relative.
 
 Door leaves are links of their own (`<door>__leaf`) on a revolute or prismatic joint to the
 `architecture` link, with limits, effort, velocity, damping and friction. URDF has no initial
@@ -197,9 +199,17 @@ def write_urdf(bundle: ExportBundle, root: Path, files: MeshFiles) -> list[Path]
     for obj in bundle.objects:
         prefix = f"{obj.name}__"
         _object_links(scene, bundle, files, obj.name, prefix, "")
-        j = ET.SubElement(scene, "joint", name=f"world__{obj.name}", type="fixed")
-        _origin(j, obj.pose.position, (0.0, 0.0, obj.pose.yaw))
-        ET.SubElement(j, "parent", link="world")
+        att = bundle.attachment(obj)
+        if att is None:
+            j = ET.SubElement(scene, "joint", name=f"world__{obj.name}", type="fixed")
+            _origin(j, obj.pose.position, (0.0, 0.0, obj.pose.yaw))
+            ET.SubElement(j, "parent", link="world")
+        else:  # fixed to the link it hangs from, so it moves with it
+            link = f"{att.parent}__{att.link}"
+            j = ET.SubElement(scene, "joint", name=f"{link}__{obj.name}", type="fixed")
+            frame = joint_frames(bundle.assets[att.parent])[att.link]
+            _origin(j, att.position - frame, (0.0, 0.0, att.yaw))
+            ET.SubElement(j, "parent", link=link)
         ET.SubElement(j, "child", link=prefix + "base")
     _write(scene, root / "scene.urdf")
     written.insert(0, root / "scene.urdf")

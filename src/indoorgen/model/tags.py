@@ -152,6 +152,7 @@ class Semantics(str, Enum):
     Towel = "towel"
     BathMat = "bath_mat"
     FoldedClothes = "folded_clothes"
+    Garment = "garment"
     Shoes = "shoes"
     Laptop = "laptop"
     Remote = "remote"
@@ -175,6 +176,10 @@ class Subpart(str, Enum):
     Side = "side"
     SupportSurface = "support_surface"
     Interior = "interior"
+    #: a hanging rail's top (upward, along the rail: u runs along it), what hooks rest on
+    Rail = "rail"
+    #: the inside of a hanger's hook (downward), what rests on a rail
+    Hook = "hook"
     # room surfaces
     Floor = "floor"
     Wall = "wall"

@@ -1,8 +1,9 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
-food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes and shoes in
-wardrobes, shoes on shoe racks, books in nightstands, lamps and decor on dressers, tableware on
-dining tables. `contents(room, fullness)` is one `Problem` that `programs.get_program` adds to
-every room program, so the room programs only say which furniture stands where.
+food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes (hung from the
+rail and folded) and shoes in wardrobes, folded clothes in dressers' drawers, shoes on shoe
+racks, books in nightstands, lamps and decor on dressers, tableware on dining tables.
+`contents(room, fullness)` is one `Problem` that `programs.get_program` adds to every room
+program, so the room programs only say which furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -18,7 +19,7 @@ from indoorgen.constraints import Constraint, Not, ObjSet, Problem, Relation, sc
 from indoorgen.constraints import height as height_of
 from indoorgen.constraints.node import Tag
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import inside, on_floor, on_top, on_wall
+from indoorgen.programs.relations import hung_from, inside, on_floor, on_top, on_wall
 
 #: everyday objects rest no higher than eye level (~1.6 m, 50th-percentile adult eye height,
 #: the top of the comfortable-reach zone in ergonomic storage guidance); the quality report's
@@ -111,6 +112,7 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("a bowl", (S.Bowl,), inside, 1, (S.Food,)),
     ),
     "wardrobes": (
+        Load("hung clothes", (S.Garment,), hung_from, 10),
         Load("folded clothes", (S.FoldedClothes,), inside, 14),
         Load("shoes", (S.Shoes,), inside, 3),
         Load("boxes", (S.Box,), inside, 3),
@@ -127,6 +129,9 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         decor(4),
         Load("books", (S.Book,), on_top, 3),
         Load("baskets", (S.Basket,), on_top, 1),
+    ),
+    "chests of drawers": (
+        Load("folded clothes", (S.FoldedClothes,), inside, 6),
     ),
     "shoe racks": (
         Load("shoes", (S.Shoes,), on_top, 8),
@@ -183,6 +188,7 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
         "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
         | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "chests of drawers": floor[S.Dresser],
         "shoe racks": floor[S.ShoeRack],
         "bedside cupboards": bedside_cupboards(floor),
         "dining tables": floor[S.DiningTable],
@@ -193,8 +199,8 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
     }
 
 
-#: the nightstand layouts with an open shelf or a door: a drawer is no parent object (what lies
-#: in it would not move with it), so a nightstand of drawers only holds nothing inside
+#: the nightstand layouts with an open shelf or a door: a nightstand's drawers declare no floor
+#: (a dresser's do: `chests of drawers`), so a nightstand of drawers only holds nothing inside
 OPEN_NIGHTSTANDS = ("drawer_shelf", "drawer_door", "open")
 
 

@@ -32,6 +32,9 @@ inside = SupportedBy(Subpart.Bottom, Subpart.Interior)
 #: a chair pulled up to a table: its front 4 cm under the table's edge (clear of legs inset
 #: from the edge and of stretchers between them)
 at_table = StableAgainst(Subpart.Front, Subpart.Side, margin=-0.04, overhang=False)
+#: hung from a rail by a hanger's hook (clothes in a wardrobe): the hook's centre on the rail,
+#: turned across it (the solver's `placement.hung_yaw`), exported fixed to what holds the rail
+hung_from = SupportedBy(Subpart.Hook, Subpart.Rail)
 #: hanging from the ceiling by its top (ceiling lights, pendants)
 on_ceiling = StableAgainst(Subpart.Top, Subpart.Ceiling)
 #: a side flush against a wall (the second wall of a corner: a bathtub, a kitchen run's end)

@@ -20,6 +20,7 @@ import shapely.geometry as sg
 from indoorgen.assets import Asset, Surface
 from indoorgen.constraints.relations import CONTACT_GAP, CoPlanar, Relation, StableAgainst
 from indoorgen.model.frames import yaw_matrix
+from indoorgen.model.tags import Subpart
 from indoorgen.solver.state import Placement, State
 
 #: the relations a placement holds: each pins a child surface to a parent plane
@@ -57,6 +58,11 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
         if abs(nc[2]) > 0.99:
             if want[2] * nc[2] < 0.99:
                 return None
+            if ps.subpart == Subpart.Rail:  # hung from a rail: turned across it
+                y = hung_yaw(ps)
+                if fixed_yaw is not None and _angle_diff(fixed_yaw, y) > 1e-6:
+                    return None
+                fixed_yaw = y
         else:
             if abs(want[2]) > 0.01:
                 return None
@@ -82,6 +88,12 @@ def solve_pose(state: State, asset: Asset, placements: list[Placement],
     proj = np.eye(3) - pinv @ n
     proj[np.abs(proj) < 1e-12] = 0.0
     return t, yaw, DoF(proj, fixed_yaw is None)
+
+
+def hung_yaw(rail: Surface) -> float:
+    """The yaw of a thing hung from `rail` (a `Rail` surface, world frame): its front along the
+    rail, so a hanger's shoulders run across it, as clothes hang in a wardrobe."""
+    return math.atan2(float(rail.u[1]), float(rail.u[0]))
 
 
 def snap_object(state: State, name: str, position: np.ndarray,

@@ -255,7 +255,8 @@ def test_articulations_and_lights(articulated):
     _, errors = _validate(stage)
     assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
     n_joints = 0
-    for obj in bundle.objects:
+    jointed = [o for o in bundle.objects if bundle.assets[o.name].joints]  # not the garments
+    for obj in jointed:
         asset = bundle.assets[obj.name]
         prim = stage.GetPrimAtPath(f"/World/Objects/{obj.name}")
         assert prim.HasAPI(UsdPhysics.ArticulationRootAPI), obj.name
@@ -271,7 +272,16 @@ def test_articulations_and_lights(articulated):
             body1 = joint.GetBody1Rel().GetTargets()[0]
             assert stage.GetPrimAtPath(body1).HasAPI(UsdPhysics.RigidBodyAPI)
             n_joints += 1
-    assert n_joints >= len(bundle.objects)
+    assert n_joints >= len(jointed)
+    # a garment on the wardrobe's rail, clothes in a drawer: rigid bodies welded to its link
+    links = {"hung_garment": "wardrobe_0/base", "folded_clothes": "dresser_0/drawer_0"}
+    attached = [o for o in bundle.objects if bundle.attachment(o) is not None]
+    assert {o.generator for o in attached} == set(links)
+    for obj in attached:
+        joint = UsdPhysics.FixedJoint(stage.GetPrimAtPath(f"/World/Attachments/{obj.name}"))
+        assert joint.GetBody0Rel().GetTargets() == [f"/World/Objects/{links[obj.generator]}"]
+        assert joint.GetBody1Rel().GetTargets() == [f"/World/Objects/{obj.name}"]
+        assert stage.GetPrimAtPath(f"/World/Objects/{obj.name}").HasAPI(UsdPhysics.RigidBodyAPI)
 
 
 def test_light_fixtures_get_lights(tmp_path):

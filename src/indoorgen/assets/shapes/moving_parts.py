@@ -8,10 +8,12 @@ from dataclasses import dataclass
 
 import manifold3d as m3d
 import numpy as np
+import shapely
 
-from indoorgen.assets.protocol import Joint
+from indoorgen.assets.protocol import Joint, Surface
 from indoorgen.assets.shapes.mesh import solid_union
 from indoorgen.assets.shapes.primitives import Part, Vec3, box_between, rod
+from indoorgen.model.tags import Subpart
 
 # --------------------------------------------------------------------------- moving parts
 #: clearance between a moving part and the body it moves against (m)
@@ -111,6 +113,20 @@ def drawer(front_x: float, y0: float, y1: float, z0: float, z1: float, depth: fl
     elif handle == "knob":
         parts.append(Part(knob(grip), handle_slot, link))
     return parts, DoorJoint("prismatic", np.array([1.0, 0.0, 0.0]), np.array(grip), link)
+
+
+def drawer_floor(name: str, front_x: float, y0: float, y1: float, z0: float, depth: float,
+                 link: str, board: float = 0.012, gap: float = MOVING_GAP) -> Surface:
+    """The upward `Interior` surface on the floor of the box `drawer` builds for the same
+    arguments, inside its back, sides and front, moving with its `link`: what is put away in
+    the drawer rests there and comes out with it."""
+    x0, x1 = front_x - depth + board, front_x + gap
+    ya, yb = y0 + 2 * gap + board, y1 - 2 * gap - board
+    z = z0 + 2 * gap + board
+    return Surface(name, Subpart.Interior, np.array([(x0 + x1) / 2, (ya + yb) / 2, z]),
+                   np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                   shapely.box(-(x1 - x0) / 2 + 0.005, -(yb - ya) / 2 + 0.005,
+                               (x1 - x0) / 2 - 0.005, (yb - ya) / 2 - 0.005), link)
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,7 @@
 """USD objects of a stage: /World/Objects/<object>, each a posed Xform with its render mesh
 (or an instance of a shared prototype), convex collision pieces, rigid-body physics, one body
-per link and physics joints for articulated objects, and sphere lights at emissive faces."""
+per link and physics joints for articulated objects, sphere lights at emissive faces, and
+/World/Attachments: fixed joints welding objects to the link they hang from."""
 from __future__ import annotations
 
 import logging
@@ -99,6 +100,33 @@ def write_objects(stage: Usd.Stage, bundle: ExportBundle, looks: Looks, instanci
                 rigid_body(prim, inertial["base"])
         if asset.joints:
             _write_lights(stage, prim.GetPath(), idents[name], asset, obj.generator)
+    if physics:
+        _write_attachments(stage, root, bundle, idents)
+
+
+def _write_attachments(stage: Usd.Stage, root: Sdf.Path, bundle: ExportBundle,
+                       idents: dict[str, str]) -> None:
+    """/World/Attachments/<name>: a fixed joint welding each object fixed to another's link
+    (`ExportBundle.attachment`: a garment to the wardrobe it hangs in) to that link's body, at
+    its pose in the link's frame (a link's Xform carries no transform of its own)."""
+    scope = None
+    for name, obj in bundle.scene.objects.items():
+        att = bundle.attachment(obj)
+        if att is None or name not in bundle.assets:
+            continue
+        if scope is None:
+            scope = UsdGeom.Scope.Define(stage, root.GetParentPath().AppendChild("Attachments"))
+        parent = root.AppendChild(idents[att.parent])
+        if bundle.assets[att.parent].joints:
+            parent = parent.AppendChild(sanitize_name(att.link))
+        fj = UsdPhysics.FixedJoint.Define(stage, scope.GetPath().AppendChild(idents[name]))
+        fj.CreateBody0Rel().SetTargets([parent])
+        fj.CreateBody1Rel().SetTargets([root.AppendChild(idents[name])])
+        fj.CreateLocalPos0Attr(Gf.Vec3f(*map(float, att.position)))
+        half = att.yaw / 2
+        fj.CreateLocalRot0Attr(Gf.Quatf(math.cos(half), Gf.Vec3f(0.0, 0.0, math.sin(half))))
+        fj.CreateLocalPos1Attr(Gf.Vec3f(0.0, 0.0, 0.0))
+        fj.CreateLocalRot1Attr(Gf.Quatf(1.0, Gf.Vec3f(0.0, 0.0, 0.0)))
 
 
 def _define_prototype(stage: Usd.Stage, k: int, asset_name: str, asset: Asset,

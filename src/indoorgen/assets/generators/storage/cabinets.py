@@ -22,7 +22,15 @@ from indoorgen.assets.parts_factory import PartsFactory
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
 from indoorgen.assets.shapes.frames import carcass, legs
-from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_PROUD, Front, cabinet_fronts, make_joint
+from indoorgen.assets.shapes.moving_parts import (
+    DOOR_OPEN,
+    FRONT_PROUD,
+    REVEAL,
+    Front,
+    cabinet_fronts,
+    drawer_floor,
+    make_joint,
+)
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_rect
 from indoorgen.model.tags import Semantics as S
@@ -244,11 +252,17 @@ class Dresser(CaseFactory):
         return self._topped_case(p, detail, p["base_height"])
 
     def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
-        """The `top`, the footprint and the back."""
+        """The `top`, the footprint, the back and each drawer's floor (`drawer_<i>_floor`,
+        moving with its drawer)."""
         W, D, H = p["width"], p["depth"], p["height"]
+        case = self.layout(p)
+        depth, r = self.drawer_depth(case), REVEAL
+        floors = [drawer_floor(f"drawer_{i}_floor", case.front_x, c.y0 + r, c.y1 - r, c.z0 + r,
+                               depth, f"drawer_{i}")
+                  for i, c in enumerate(case.cells) if c.kind == "drawer"]
         return [top_surface(D, W, H, p["top_overhang"]),
                 base_bottom(D, W, p["base_style"]),
-                back_surface(W, p["base_height"], H, D)]
+                back_surface(W, p["base_height"], H, D)] + floors
 
 
 NIGHTSTAND_LAYOUTS = {

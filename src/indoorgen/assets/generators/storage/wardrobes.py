@@ -25,6 +25,7 @@ from indoorgen.assets.generators.storage._cases import (
 )
 from indoorgen.assets.protocol import Joint, Param, Surface
 from indoorgen.assets.registry import register
+from indoorgen.assets.shapes.hanging import RAIL_RADIUS, rail_surface
 from indoorgen.assets.shapes.moving_parts import DOOR_OPEN, FRONT_T, MOVING_GAP, REVEAL, DoorJoint, make_joint
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, box_between, rod
 from indoorgen.assets.shapes.surfaces import support_rect
@@ -172,6 +173,10 @@ class Wardrobe(CaseFactory):
     def _hat_shelf(self, p, case) -> float:
         return case.z_top - p["shelf_drop"]
 
+    def _rail_z(self, p, case) -> float:
+        """The height of the hanging rails' axis: 6 cm under the hat shelf."""
+        return self._hat_shelf(p, case) - case.t - 0.06
+
     def _column_shelves(self, p, case) -> list[float]:
         _, z0, z1 = case.rows[-1]
         n = max(1, int(round((z1 - z0) / 0.38)) - 1)
@@ -183,8 +188,9 @@ class Wardrobe(CaseFactory):
         for y0, y1, kind in self._sections(p, case):
             if kind == "hanging":
                 out.append(shelf_board(case, y0, y1, zs))
-                zr = zs - case.t - 0.06
-                out.append(Part(rod((0.0, y0 - 0.001, zr), (0.0, y1 + 0.001, zr), 0.0125, 16), "metal"))
+                zr = self._rail_z(p, case)
+                out.append(Part(rod((0.0, y0 - 0.001, zr), (0.0, y1 + 0.001, zr), RAIL_RADIUS, 16),
+                                "metal"))
             else:
                 out += [shelf_board(case, y0, y1, z) for z in self._column_shelves(p, case)]
         return out
@@ -210,7 +216,8 @@ class Wardrobe(CaseFactory):
         return out
 
     def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
-        """The `top`, footprint, back and every interior floor and shelf."""
+        """The `top`, footprint, back, every interior floor and shelf, and each hanging rail's
+        top (`rail_0`...)."""
         case = self.layout(p)
         W, D, H = p["width"], p["depth"], p["height"]
         over = self._track_depth() if self._sliding(p) else 0.0
@@ -224,4 +231,7 @@ class Wardrobe(CaseFactory):
             for z in [z0] + ([zs] if kind == "hanging" else self._column_shelves(p, case)):
                 out.append(interior_surface(f"interior_{k}", case, y0, y1, z))
                 k += 1
+        hanging = [(y0, y1) for y0, y1, kind in self._sections(p, case) if kind == "hanging"]
+        out += [rail_surface(f"rail_{i}", 0.0, y0, y1, self._rail_z(p, case))
+                for i, (y0, y1) in enumerate(hanging)]
         return out
