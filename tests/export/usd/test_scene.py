@@ -10,6 +10,7 @@ from pxr import Usd, UsdGeom
 
 from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets.protocol import Asset, box_surfaces
+from indoorgen.constraints import SupportedBy
 from indoorgen.errors import OutputError
 from indoorgen.export.usd.prims import CONTACT_GAP, sanitize_name
 from indoorgen.export.usd.scene import write_usd
@@ -29,10 +30,10 @@ def tiny():
     table = SceneObject(
         "table_0", "side_table", {"h": 0.5}, 11, Pose((2.0, 1.5, 0.0), math.radians(30)),
         ["furniture", "table", "side_table"], room.name,
-        relations=[RelationInstance("StableAgainst", room.name, "bottom", "floor")])
+        relations=[RelationInstance(repr(SupportedBy()), room.name, "bottom", "floor")])
     cup = SceneObject(
         "cup-0", "cup", {}, 12, Pose((2.1, 1.4, 0.5), -1.0), ["small_object", "cup"], room.name,
-        relations=[RelationInstance("StableAgainst", "table_0", "bottom", "top")])
+        relations=[RelationInstance(repr(SupportedBy()), "table_0", "bottom", "top")])
     scene.add_object(table)
     scene.add_object(cup)
     assets = {"table_0": _box_asset(0.6, 0.8, 0.5), "cup-0": _box_asset(0.08, 0.08, 0.1)}
