@@ -170,7 +170,7 @@ def living_room(room: ObjSet) -> Problem:
             "a chair at the desk": desks.all(lambda d: desk_chairs.related_to(d, at_table).count() <= 1),
             "a lamp on each side table": side_tables.all(
                 lambda t: table_lamps.related_to(t, on_top).count() <= 1),
-            "a bookcase": bookcases.count() >= sofas.count(),
+            "a bookcase": bookcases.count() >= 1,
             # bookcases and plants once the group stands (they would take its walls and floor)
             "bookcases after the group": bookcases.count() <= 2 * sofas.count(),
             # a reading light at the seating: a floor lamp at an arm, or a lamp on a side table
