@@ -2,6 +2,7 @@
 and a toilet's side and front clearances."""
 from __future__ import annotations
 
+from indoorgen.model.scene import RelationInstance
 from indoorgen.quality.clearance import front_clearance, joint_sweep, toilet_clearance
 from support.qualityscene import FACE_DOWN, FACE_UP, context, new_scene, put, size
 
@@ -58,3 +59,14 @@ def test_toilet_beside_a_wall_fails_and_centred_passes():
     near, mid = toilet_clearance(context(sc))
     assert not near.ok and abs(near.value - 0.3) < 1e-6
     assert mid.ok and mid.detail["front"] >= 0.53
+
+
+def test_a_chair_pulled_up_to_the_furniture_is_pushed_back_not_in_its_way():
+    sc = _dresser(FACE_UP, 0.3)
+    front = context(sc).placed["dresser_0"].footprint.bounds[3]
+    chair = put(sc, "side_chair", 3.0, front + 0.25, FACE_DOWN)
+    assert any(not c.ok and c.objects[-1] == chair for c in joint_sweep(context(sc)))
+    # the same chair at the dresser (its relation's parent): one pushes it back to open a drawer
+    pulled_up = RelationInstance("Touching(front,front,0)", "dresser_0", "front", "front")
+    sc.objects[chair].relations.append(pulled_up)
+    assert all(c.ok for c in joint_sweep(context(sc)))

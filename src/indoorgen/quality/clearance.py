@@ -119,7 +119,8 @@ def _open_link(asset: Asset, j: Joint, p: Placed) -> np.ndarray:
 def joint_sweep(ctx: Context) -> list[Check]:
     """Every furniture door, drawer and lid opened to its limit stays clear of the walls (its
     plan outline inside the room) and of the room's other objects (placeholder pieces, fcl);
-    value: the deepest intrusion (m), detail: into the walls and into objects. A part that
+    value: the deepest intrusion (m), detail: into the walls and into objects. Things resting
+    on it or pulled up to it (a desk's chair) are not in its way, as in the solver. A part that
     spins in place (a chair's swivel) has no open limit and is not checked."""
     out = []
     for p in ctx.placed.values():
@@ -127,9 +128,12 @@ def joint_sweep(ctx: Context) -> list[Check]:
         if not isinstance(fac, PartsFactory) or not fac.joints(fac.resolve(p.obj.params)):
             continue  # only PartsFactory generators articulate; asking is cheaper than building
         asset = ctx.cache.full(p.obj.generator, p.obj.params)
+        # what rests on it, and what is pulled up to it (a chair at a desk stands before its
+        # drawers; one pushes it back to open them), as the solver's keep-free space allows
         skip = {p.name} | ctx.descendants(p.name)
         others = [q for q in ctx.in_room(p.obj.room) if q.name not in skip
-                  and not q.has(S.FloorCovering)]
+                  and not q.has(S.FloorCovering)
+                  and not any(r.parent == p.name for r in q.obj.relations)]
         outline = ctx.outlines[p.obj.room]
         for j in asset.joints:
             idx = np.unique(asset.mesh.faces[asset.link_faces(j.child)])
