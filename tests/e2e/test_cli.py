@@ -152,7 +152,8 @@ def test_generate_never_replaces_the_users_files(tmp_path):
     assert "indoorgen did not write" in r.stderr
     assert (mine / "scene.json").read_text() == "the user's"
     out = tmp_path / "scene"
-    args = ("generate", "--seed", "0", "--room", "bedroom", "-q", "--formats", "mjcf", "--out", str(out))
+    args = ("generate", "--seed", "0", "--room", "bedroom", "--preset", "fast", "-q", "--formats", "mjcf",
+            "--out", str(out))
     assert run(*args).returncode == 0
     (out / "notes.txt").write_text("mine")
     assert run(*args).returncode == 0

@@ -135,13 +135,15 @@ def _primitive(doc: GltfDocument, piece: Piece, material: int, uv_scale: float,
                normal_mapped: bool) -> dict[str, Any] | None:
     """A triangle primitive of `piece` (already Y-up) with `material`; UVs in texture repeats,
     flipped to glTF's top-left origin; tangents where the material has a normal map. Triangles
-    whose corners welded into fewer than three vertices (no area) are left out; None when no
-    triangle is left."""
+    whose corners welded into fewer than three vertices (no area) are left out, and the vertices
+    only they used; None when no triangle is left."""
     f = piece.faces
     f = f[(f[:, 0] != f[:, 1]) & (f[:, 1] != f[:, 2]) & (f[:, 2] != f[:, 0])]
     if len(f) == 0:
         return None
-    piece = Piece(piece.vertices, piece.uv, piece.normals, f)
+    # only the vertices a triangle uses (one left only by a dropped triangle has no normal)
+    used, f = np.unique(f, return_inverse=True)
+    piece = Piece(piece.vertices[used], piece.uv[used], piece.normals[used], f.reshape(-1, 3))
     uv = piece.uv * uv_scale
     attributes = {"POSITION": doc.accessor(piece.vertices, bounds=True),
                   "NORMAL": doc.accessor(piece.normals),

@@ -143,6 +143,8 @@ def tangents(piece: Piece) -> np.ndarray:
         axis = np.eye(3)[np.argmin(np.abs(n[flat]), axis=1)]
         t[flat] = np.cross(n[flat], axis)
         length[flat] = np.linalg.norm(t[flat], axis=1)
-    t = t / np.where(length < 1e-12, 1.0, length)[:, None]
+    lost = length < 1e-9  # no normal to be across (a zero normal): any unit direction will do
+    t[lost], length[lost] = (1.0, 0.0, 0.0), 1.0
+    t = t / length[:, None]
     w = np.where(np.einsum("ij,ij->i", np.cross(n, t), b) < 0.0, -1.0, 1.0)
     return np.concatenate([t, w[:, None]], axis=1)

@@ -232,6 +232,19 @@ def access_points(ob: SceneObject, cache: AssetCache, radius: float) -> list[np.
     return [w[:2] for w in world]
 
 
+def _pulled_up(scene: Scene, name: str) -> list[SceneObject]:
+    """The floor-standing objects pulled up to object `name` (a chair at its desk)."""
+    return [o for o in scene.objects.values() if o.relations and o.relations[0].parent == o.room
+            and any(r.parent == name for r in o.relations[1:])]
+
+
+def _plan_box(ob: SceneObject, cache: AssetCache) -> sg.Polygon:
+    """The plan outline of `ob`'s placeholder box where it stands."""
+    (x0, y0, _), (x1, y1, _) = cache.placeholder(ob.generator, ob.params).mesh.bounds
+    corners = ob.pose.apply(np.array([[x0, y0, 0.0], [x1, y0, 0.0], [x1, y1, 0.0], [x0, y1, 0.0]]))
+    return sg.Polygon(corners[:, :2])
+
+
 def _r4(x: float) -> float:
     return round(float(x), 4)
 
@@ -271,7 +284,12 @@ def navigation_report(scene: Scene, rooms: Mapping[str, RoomGeometry], cache: As
         if not pts or room is None or room.storey not in rc.storeys:
             continue
         sr = rc.storeys[room.storey]
-        if not any(sr.hits(sg.Point(p).buffer(FRONT_TOLERANCE)) for p in pts):
+        # a chair pulled up to a desk stands where its user does: reaching it will do (as the
+        # solver's circulation has it)
+        near = [sg.Point(p).buffer(FRONT_TOLERANCE) for p in pts] + [
+            _plan_box(seat, cache).buffer(agent_radius + FRONT_TOLERANCE)
+            for seat in _pulled_up(scene, name)]
+        if not any(sr.hits(zone) for zone in near):
             bad_objects.append({"object": name, "room": ob.room})
     failures = [] if rc.start is not None else ["no entrance door to start from"]
     failures += [f"room {n} is not reachable from the entrance" for n in sorted(bad_rooms)]
