@@ -111,7 +111,13 @@ def _clear_corner(bpy, lo, hi, target) -> tuple[float, float, float]:
     height = lo[2] + min(2.3, max(1.2, hi[2] - lo[2] - 0.2))
     corners = [(lo[0] + fx * (hi[0] - lo[0]), lo[1] + fy * (hi[1] - lo[1]), height)
                for fx in (0.15, 0.85) for fy in (0.15, 0.85)]
-    return max(corners, key=lambda eye: _open_length(bpy, eye, target))
+    # the sight line is probed from above the furniture: the look target may be inside a bed
+    probe = (target[0], target[1], lo[2] + 1.3)
+    eye = max(corners, key=lambda e: _open_length(bpy, e, probe))
+    share = _open_length(bpy, eye, probe)
+    if share < 1.0:  # every corner's line meets something: stand short of it, on the open part
+        eye = tuple(t + (e - t) * max(0.3, 0.85 * share) for e, t in zip(eye, probe))
+    return eye
 
 
 def _render(bpy, path: Path) -> None:
