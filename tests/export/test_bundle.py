@@ -9,6 +9,7 @@ from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets import get_factory
 from indoorgen.assets.materials import STYLES, materials_in_family
 from indoorgen.export.bundle import (
+    TEXTURE_VARIANTS,
     MatRef,
     elements_from_rooms,
     is_fixed,
@@ -38,8 +39,20 @@ def test_materials_are_drawn_from_the_object_seed():
     assert set(mats) == set(asset.slots)
     assert mats == object_materials(obj, asset)  # the same seed, the same looks
     ref = next(iter(mats.values()))
-    assert ref.key == f"{ref.name}_{ref.seed}" and ref.seed == texture_seed(ref.name, 0)
+    assert ref.key == f"{ref.name}_{ref.seed}"
+    assert ref.seed in {texture_seed(ref.name, v) for v in range(TEXTURE_VARIANTS)}
     assert 0 <= texture_seed("oak", 3) < 100_000 and texture_seed("oak", 3) != texture_seed("oak", 4)
+
+
+def test_one_material_takes_several_looks_across_scenes():
+    """Leather sofas are not all one colour: the texture variant is drawn with the materials."""
+    looks: dict[str, set[int]] = {}
+    for seed in range(40):
+        obj, asset = _object("sofa_0", "sofa", seed=seed)
+        for ref in object_materials(obj, asset).values():
+            looks.setdefault(ref.name, set()).add(ref.seed)
+    common = max(looks, key=lambda m: len(looks[m]))
+    assert len(looks[common]) == TEXTURE_VARIANTS, looks
 
 
 def test_identical_objects_share_a_look_and_a_mesh_key():

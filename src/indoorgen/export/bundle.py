@@ -247,12 +247,18 @@ def attachment(obj: SceneObject, objects: dict[str, SceneObject],
     return None
 
 
+#: distinct baked looks (colour, grain, weave) each material may take: an object draws one from its
+#: seed and a room from its name, so leather sofas and plaster walls differ between scenes while
+#: the baked textures stay few enough to cache (export/textures.py)
+TEXTURE_VARIANTS = 4
+
+
 def texture_seed(material: str, variant: int) -> int:
     """The seed a material's textures are baked with for `variant` (0..variants-1)."""
     return (zlib.crc32(material.encode()) + 7919 * int(variant)) % 100_000
 
 
-def object_materials(obj: SceneObject, asset: Asset, variants: int = 1,
+def object_materials(obj: SceneObject, asset: Asset, variants: int = TEXTURE_VARIANTS,
                      style: str | None = None) -> dict[str, MatRef]:
     """One `MatRef` per slot of `asset`, deterministic from `obj.seed`: the material name from
     `choose_materials(asset.slots, default_rng(obj.seed), factory.material_choices, style)` (the
@@ -287,7 +293,7 @@ def _room_materials(scene: Scene, room: str) -> dict[str, MatRef]:
     rng = np.random.default_rng([int(scene.seed), zlib.crc32(room.encode())])
     slots = ["floor", "wall", "ceiling", "door", "frame", "glass", "wood", "metal"]
     names = choose_materials(slots, rng, style=scene.style)
-    return {s: MatRef(m, texture_seed(m, 0)) for s, m in names.items()}
+    return {s: MatRef(m, texture_seed(m, int(rng.integers(TEXTURE_VARIANTS)))) for s, m in names.items()}
 
 
 def elements_from_rooms(scene: Scene, rooms: dict) -> list[ArchElement]:
@@ -353,7 +359,7 @@ def elements_from_architecture(scene: Scene, arch) -> list[ArchElement]:
 
 
 def make_bundle(scene: Scene, assets: dict[str, Asset], elements: list[ArchElement], *,
-                variants: int = 1, room_types: dict[str, str] | None = None) -> ExportBundle:
+                variants: int = TEXTURE_VARIANTS, room_types: dict[str, str] | None = None) -> ExportBundle:
     """A bundle from its parts; per-object materials are drawn here (see `object_materials`)."""
     mats = {n: object_materials(scene.objects[n], a, variants, scene.style)
             for n, a in assets.items()
@@ -363,7 +369,7 @@ def make_bundle(scene: Scene, assets: dict[str, Asset], elements: list[ArchEleme
     return ExportBundle(scene, dict(assets), mats, elements, types)
 
 
-def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
+def bundle_from_generated(gen, *, variants: int = TEXTURE_VARIANTS) -> ExportBundle:
     """The bundle of a `pipeline.Generated` (full assets from its cache; architecture from its
     rooms, or from `gen.architecture` when it is a whole home)."""
     arch = getattr(gen, "architecture", None)
@@ -378,7 +384,7 @@ def bundle_from_generated(gen, *, variants: int = 1) -> ExportBundle:
 
 
 def bundle_from_scene(scene: Scene, *, rooms: dict | None = None, cache=None,
-                      variants: int = 1, doors: str | None = None) -> ExportBundle:
+                      variants: int = TEXTURE_VARIANTS, doors: str | None = None) -> ExportBundle:
     """The bundle of a saved scene without solving: the architecture rebuilt from the scene
     (a home's floorplan solidified again, its door leaves as recorded or as `doors` says; a
     room's polygon; unless `rooms` are given) and assets from their generators (through
