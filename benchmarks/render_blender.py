@@ -76,6 +76,20 @@ def _hide_ceilings(bpy) -> None:
             ob.hide_set(True)  # out of the sight-line rays too
 
 
+def _hide_near_walls(bpy, front_y: float) -> None:
+    """Hide the walls along the side the overview camera looks in from (those running along x
+    with their far face before `front_y`): a kitchen run along that wall shows."""
+    from mathutils import Vector
+
+    for ob in bpy.data.objects:
+        if ob.type != "MESH" or "wall" not in ob.name.lower():
+            continue
+        pts = [ob.matrix_world @ Vector(c) for c in ob.bound_box]
+        ys = [p[1] for p in pts]
+        if max(ys) - min(ys) < 0.6 and max(ys) < front_y:
+            ob.hide_render = True
+
+
 def _camera(bpy, eye: tuple[float, float, float], target: tuple[float, float, float],
             lens: float = 18.0):
     """A camera at `eye` looking at `target`."""
@@ -99,8 +113,10 @@ def _open_length(bpy, eye, target) -> float:
 
     depsgraph = bpy.context.evaluated_depsgraph_get()
     span = Vector(eye) - Vector(target)
-    hit, where, *_ = bpy.context.scene.ray_cast(depsgraph, Vector(target), span.normalized(),
-                                                distance=span.length)
+    skip = min(0.5, 0.5 * span.length)  # a pendant lamp over the room's centre does not count
+    start = Vector(target) + span.normalized() * skip
+    hit, where, *_ = bpy.context.scene.ray_cast(depsgraph, start, span.normalized(),
+                                                distance=span.length - skip)
     return (where - Vector(target)).length / span.length if hit else 1.0
 
 
@@ -116,7 +132,7 @@ def _clear_corner(bpy, lo, hi, target) -> tuple[float, float, float]:
     eye = max(corners, key=lambda e: _open_length(bpy, e, probe))
     share = _open_length(bpy, eye, probe)
     if share < 1.0:  # every corner's line meets something: stand short of it, on the open part
-        eye = tuple(t + (e - t) * max(0.3, 0.85 * share) for e, t in zip(eye, probe))
+        eye = tuple(t + (e - t) * max(0.3, 0.85 * share) for e, t in zip(eye, probe, strict=True))
     return eye
 
 
@@ -167,6 +183,7 @@ def main(argv: list[str] | None = None) -> int:
     all_hi = [max(b[1][i] for b in boxes.values()) for i in range(3)]
     span = max(all_hi[0] - all_lo[0], all_hi[1] - all_lo[1])
     centre = ((all_lo[0] + all_hi[0]) / 2, (all_lo[1] + all_hi[1]) / 2, all_lo[2])
+    _hide_near_walls(bpy, all_lo[1] + 0.3)
     _camera(bpy, (centre[0], centre[1] - 0.6 * span, all_lo[2] + 1.1 * span), centre, lens=24.0)
     _render(bpy, out / "overview.png")
     done["overview"] = str(out / "overview.png")
