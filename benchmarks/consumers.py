@@ -89,7 +89,9 @@ def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
             bodies[obj.name] = (pb.loadURDF(
                 str(d / "urdf" / f"{obj.name}.urdf"), obj.pose.position, _quat(obj.pose.yaw),
                 useFixedBase=fixed, physicsClientId=cid), fixed)
-        out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid)
+        contents = {(bodies[a.parent][0], bodies[o.name][0]) for o in bundle.objects
+                    if (a := bundle.attachment(o)) is not None and a.parent in bodies}
+        out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid, contents)
         held = _hold_attached(bundle, bodies, cid)
         names = [n for n, (_, fixed) in bodies.items() if not fixed and n not in held]
         free = [bodies[n][0] for n in names]
@@ -134,8 +136,11 @@ def _hold_attached(bundle: ExportBundle, bodies: dict, cid: int) -> set[str]:
     return held
 
 
-def _limit_penetrations(bodies: dict, cid: int) -> tuple[int, int]:
-    """(joints whose part penetrates another body by > PENETRATION at a limit, joints)."""
+def _limit_penetrations(bodies: dict, cid: int, contents: set[tuple[int, int]]
+                        ) -> tuple[int, int]:
+    """(joints whose part penetrates another body by > PENETRATION at a limit, joints); a
+    body's `contents` (holder, held pairs: the clothes in a drawer, which move with it) are
+    not the other bodies it may meet."""
     bad = total = 0
     others = [b for b, _ in bodies.values()]
     for b, _ in bodies.values():
@@ -148,7 +153,7 @@ def _limit_penetrations(bodies: dict, cid: int) -> tuple[int, int]:
             for q in (info[8], info[9]):
                 pb.resetJointState(b, j, q, physicsClientId=cid)
                 for o in others:
-                    if o == b:
+                    if o == b or (b, o) in contents:
                         continue
                     pts = pb.getClosestPoints(b, o, 0.0, linkIndexA=j, physicsClientId=cid)
                     deepest = min([deepest, *[p[8] for p in pts]])
