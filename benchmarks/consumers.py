@@ -9,7 +9,8 @@ and URDF exports and prints, per scene and then per kind (median and p90 over se
   free bodies that moved < 2 cm in `--seconds` s under gravity and the largest drift (issue 12's
   bar: >= 99 % and none > 10 cm);
 - PyBullet: seconds to load `scene.urdf`, then the same drift with every object URDF loaded as
-  a free body at its pose (objects hanging on walls fixed) on the fixed architecture, and the
+  a free body at its pose (objects hanging on walls fixed, what a drawer or rail holds welded
+  to it) on the fixed architecture, and the
   joints that penetrate another body (> 1 cm) when opened to either limit;
 - Newton, when `import newton` works: load seconds and drift from `scene.usd`.
 `--cache DIR` keeps each generated scene.json there and re-exports it on later runs (so before
@@ -88,8 +89,11 @@ def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
             bodies[obj.name] = (pb.loadURDF(
                 str(d / "urdf" / f"{obj.name}.urdf"), obj.pose.position, _quat(obj.pose.yaw),
                 useFixedBase=fixed, physicsClientId=cid), fixed)
-        out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid)
-        names = [n for n, (_, fixed) in bodies.items() if not fixed]
+        contents = {(bodies[a.parent][0], bodies[o.name][0]) for o in bundle.objects
+                    if (a := bundle.attachment(o)) is not None and a.parent in bodies}
+        out["pb_bad_joints"], out["pb_joints"] = _limit_penetrations(bodies, cid, contents)
+        held = _hold_attached(bundle, bodies, cid)
+        names = [n for n, (_, fixed) in bodies.items() if not fixed and n not in held]
         free = [bodies[n][0] for n in names]
         p0 = np.array([pb.getBasePositionAndOrientation(b, physicsClientId=cid)[0]
                        for b in free]).reshape(-1, 3)
@@ -106,8 +110,37 @@ def bullet_figures(bundle: ExportBundle, d: Path, seconds: float) -> dict:
         pb.disconnect(cid)
 
 
-def _limit_penetrations(bodies: dict, cid: int) -> tuple[int, int]:
-    """(joints whose part penetrates another body by > PENETRATION at a limit, joints)."""
+def _hold_attached(bundle: ExportBundle, bodies: dict, cid: int) -> set[str]:
+    """Weld what lies in a drawer or hangs from a rail to its holder's link, clear of the
+    holder's pieces, as every simulator export does (loaded free, folded clothes inside a
+    dresser burst out of its carcass and flung what stood on it 0.9 m); their names."""
+    held = set()
+    for obj in bundle.objects:
+        att = bundle.attachment(obj)
+        if att is None or att.parent not in bodies or bodies[obj.name][1]:
+            continue
+        holder, body = bodies[att.parent][0], bodies[obj.name][0]
+        links = {pb.getJointInfo(holder, j, physicsClientId=cid)[12].decode(): j
+                 for j in range(pb.getNumJoints(holder, physicsClientId=cid))}
+        for link in [-1, *links.values()]:
+            pb.setCollisionFilterPair(holder, body, link, -1, 0, physicsClientId=cid)
+        link = links.get(att.link, -1)
+        state = (pb.getLinkState(holder, link, physicsClientId=cid)[0:2] if link >= 0 else
+                 pb.getBasePositionAndOrientation(holder, physicsClientId=cid))
+        pos, orn = pb.getBasePositionAndOrientation(body, physicsClientId=cid)
+        inv = pb.invertTransform(*state)
+        local = pb.multiplyTransforms(*inv, pos, orn)
+        pb.createConstraint(holder, link, body, -1, pb.JOINT_FIXED, [0, 0, 0], local[0], [0, 0, 0],
+                            local[1], physicsClientId=cid)
+        held.add(obj.name)
+    return held
+
+
+def _limit_penetrations(bodies: dict, cid: int, contents: set[tuple[int, int]]
+                        ) -> tuple[int, int]:
+    """(joints whose part penetrates another body by > PENETRATION at a limit, joints); a
+    body's `contents` (holder, held pairs: the clothes in a drawer, which move with it) are
+    not the other bodies it may meet."""
     bad = total = 0
     others = [b for b, _ in bodies.values()]
     for b, _ in bodies.values():
@@ -120,7 +153,7 @@ def _limit_penetrations(bodies: dict, cid: int) -> tuple[int, int]:
             for q in (info[8], info[9]):
                 pb.resetJointState(b, j, q, physicsClientId=cid)
                 for o in others:
-                    if o == b:
+                    if o == b or (b, o) in contents:
                         continue
                     pts = pb.getClosestPoints(b, o, 0.0, linkIndexA=j, physicsClientId=cid)
                     deepest = min([deepest, *[p[8] for p in pts]])

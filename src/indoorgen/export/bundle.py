@@ -39,7 +39,7 @@ from indoorgen.assets.materials import choose_materials
 from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.constraints.relations import StableAgainst, parse_relation
 from indoorgen.export.convex import convex_parts, sound_pieces
-from indoorgen.export.physics import SOLID_KINDS, Inertial, link_inertials
+from indoorgen.export.physics import Inertial, link_inertials, object_inertials
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Subpart
 
@@ -118,8 +118,8 @@ class ExportBundle:
         key = ("inertial", self.proto_key(name))
         if key not in self._memo:
             slot_materials = {slot: ref.name for slot, ref in self.materials[name].items()}
-            hollow = SOLID_KINDS.isdisjoint(self.scene.objects[name].tags)
-            self._memo[key] = link_inertials(self.assets[name], slot_materials, hollow=hollow)
+            self._memo[key] = object_inertials(self.assets[name], slot_materials,
+                                               self.scene.objects[name].tags)
         inertials: dict[str, Inertial] = self._memo[key]
         return inertials
 

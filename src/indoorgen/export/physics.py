@@ -14,10 +14,13 @@ The centre of mass comes from the closed render shells (the real material: a lam
 not its shade's hull weighed as a solid drum; a link's shell is one union of its parts, so it
 is the material's centroid at one density); the inertia from the convex pieces, scaled to
 that mass and moved to that centre (parallel axes), so it is always a physical tensor.
+Per kind (`object_inertials`): a bathtub's walls are a thin shell (`WALL_OF_KIND`), a lamp's
+shade a thin skin (`WALL_OF_SLOT`) and its foot carries a weight (`FOOT_BALLAST`), a food box
+is full (`CONTENTS_DENSITY`).
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,25 +29,42 @@ import trimesh
 from indoorgen.assets.materials import get_material
 from indoorgen.assets.protocol import Asset
 from indoorgen.export.meshes import face_slot_names
+from indoorgen.model.tags import Semantics
 
 #: wall thickness (m) of a hollow thing of each material family, so that area x wall x density
-#: is its mass: appliance casings and furniture tubes 1 mm of steel, glassware and panes 4 mm, vitreous
-#: china 8 mm, moulded plastic 3 mm, 18 mm furniture board, upholstery (fabric over foam and frame)
-#: 15 mm at the fabric's density, 30 mm stone worktops and trays (a slab up to 2 x 15 mm stays
-#: solid), corrugated board 3 mm, a painting's canvas 2 mm. Materials things are made solid of
-#: (books, wax, soil, rubber) take `SOLID_WALL`: only blocks over 10 cm thick are capped.
-WALL = {"metal": 1.0e-3, "glass": 4e-3, "ceramic": 8e-3, "plastic": 3e-3, "wood": 18e-3,
-        "fabric": 15e-3, "leather": 15e-3, "stone": 15e-3}
+#: is its mass: appliance casings and furniture tubes 1 mm of steel, glassware and panes 4 mm,
+#: vitreous china 8 mm, moulded plastic 3 mm, 30 mm stone worktops and trays (a slab up to
+#: 2 x 15 mm stays solid), corrugated board 3 mm, a painting's canvas 2 mm. A board's two faces
+#: are both rendered, so furniture board takes 10 mm a face (a 16-20 mm board: at 18 mm a face a
+#: bed weighed 150-200 kg, a wardrobe 190); upholstery (fabric over foam and frame) 10 mm at the
+#: fabric's density, leather (a hide over the same foam, twice a weave's density) 5 mm.
+#: Materials things are made solid of (books, wax, soil, rubber) take `SOLID_WALL`: only blocks
+#: over 10 cm thick are capped.
+WALL = {"metal": 1.0e-3, "glass": 4e-3, "ceramic": 8e-3, "plastic": 3e-3, "wood": 10e-3,
+        "fabric": 10e-3, "leather": 5e-3, "stone": 15e-3}
+#: per-kind exceptions to `WALL` (by tag, then material family): a bathtub is a pressed-steel
+#: or acrylic shell (retailers: 30-60 kg), not 8 mm of vitreous china (a 130 kg tub)
+WALL_OF_KIND = {Semantics.Bathtub: {"ceramic": 3e-3}}
 #: per-material exceptions to `WALL` (by material name; None: solid)
 WALL_OF_MATERIAL = {"cardboard": 3e-3, "painting": 2e-3, "soil": None, "water": None,
                     "wax": None, "fruit_skin": None}
 #: the wall of solid materials (m): half the thickness of a block still weighed as solid
 SOLID_WALL = 0.05
 
-#: kinds of object weighed solid, not as hollow walls: a lamp's foot is weighted (cast metal, a
-#: filled base) to keep it upright; weighed as a 1 mm steel wall a desk lamp's 2 cm foot lost nine
-#: tenths of its mass and the lamp tipped over in MuJoCo (0.4 m in a 2-storey home)
-SOLID_KINDS = frozenset({"lighting"})
+#: per-slot exceptions to `wall_of` (by slot name): a lamp's shade is a 1 mm skin (stretched
+#: linen, paper or blown glass on a wire frame) whatever its material: weighed as 15 mm of
+#: upholstery fabric a shade was 3 kg, as solid paper 18 kg
+WALL_OF_SLOT = {"shade": 1.0e-3}
+
+#: the weight in a lamp's foot (kg, by kind): a cast-iron or steel plate, or a sand-filled
+#: base, that keeps a tall light thing upright (retailers' sheets: table lamps 2-4 kg, desk
+#: lamps 1.5-3 kg, floor lamps 4-9 kg in all). Without it a hollow lamp's mass sat in its
+#: shade's height and lamps tipped over in MuJoCo and Newton (issue 12)
+FOOT_BALLAST = {Semantics.TableLamp: 0.8, Semantics.DeskLamp: 0.8, Semantics.FloorLamp: 3.0}
+
+#: what a full package's contents weigh (kg per m^3 of its closed shell, by kind): breakfast
+#: cereal, pasta, rice and tea packed loose (a 4 L cereal box holds 0.4-0.5 kg)
+CONTENTS_DENSITY = {Semantics.FoodBox: 110.0}
 
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros
 MIN_MASS = 1e-3
@@ -91,15 +111,16 @@ def density_of(material: str) -> float:
         return 1000.0
 
 
-def wall_of(material: str) -> float:
-    """Wall thickness (m) a hollow thing of `material` has (`WALL`; `SOLID_WALL` if solid)."""
+def wall_of(material: str, family_walls: Mapping[str, float] | None = None) -> float:
+    """Wall thickness (m) a hollow thing of `material` has (`WALL`, or `family_walls` where it
+    names the material's family; `SOLID_WALL` if solid)."""
     if material in WALL_OF_MATERIAL:
         return WALL_OF_MATERIAL[material] or SOLID_WALL
     try:
         family = get_material(material).family
     except Exception:
         return SOLID_WALL
-    return WALL.get(family, SOLID_WALL)
+    return {**WALL, **(family_walls or {})}.get(family, SOLID_WALL)
 
 
 def wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, float]:
@@ -108,13 +129,15 @@ def wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, float]:
     return {link: float(v.sum()) for link, v in slot_wall_masses(asset, materials).items()}
 
 
-def slot_wall_masses(asset: Asset, materials: Mapping[str, str]) -> dict[str, np.ndarray]:
+def slot_wall_masses(asset: Asset, materials: Mapping[str, str],
+                     family_walls: Mapping[str, float] | None = None) -> dict[str, np.ndarray]:
     """Each link's mass (kg) as a hollow wall per material slot (an array indexed like
     `asset.slots`, at least one entry): its render faces' area x `wall_of` x density."""
     if len(asset.mesh.faces) == 0:
         return {}
-    per_slot = np.array([(density_of(m) * wall_of(m)) if (m := materials.get(slot)) else
-                         1000.0 * SOLID_WALL for slot in asset.slots] or [1000.0 * SOLID_WALL])
+    per_slot = np.array([(density_of(m) * WALL_OF_SLOT.get(slot, wall_of(m, family_walls)))
+                         if (m := materials.get(slot)) else 1000.0 * SOLID_WALL
+                         for slot in asset.slots] or [1000.0 * SOLID_WALL])
     fs = np.minimum(face_slot_names(asset), len(per_slot) - 1)
     per_face = np.asarray(asset.mesh.area_faces) * per_slot[fs]
     links = (np.zeros(len(fs), int) if asset.face_links is None
@@ -173,10 +196,26 @@ def volume_integrals(triangles: np.ndarray) -> np.ndarray:
     return out / np.array([6, 24, 24, 24, 60, 60, 60, 120, 120, 120], float)
 
 
-def link_inertials(asset: Asset, materials: Mapping[str, str], *, hollow: bool = True
-                   ) -> dict[str, Inertial]:
+def object_inertials(asset: Asset, materials: Mapping[str, str], tags: Iterable[str]
+                     ) -> dict[str, Inertial]:
+    """Inertial of every link of an object of `tags` (`link_inertials`): its kind's walls
+    (`WALL_OF_KIND`), a lamp's foot carrying its weight (`FOOT_BALLAST`), a package full of
+    what it holds (`CONTENTS_DENSITY`)."""
+    kinds = set(tags)
+    family_walls = {fam: w for tag, walls in WALL_OF_KIND.items() if tag in kinds
+                    for fam, w in walls.items()}
+    return link_inertials(asset, materials, family_walls=family_walls,
+                          ballast=sum(kg for tag, kg in FOOT_BALLAST.items() if tag in kinds),
+                          contents=sum(r for tag, r in CONTENTS_DENSITY.items() if tag in kinds))
+
+
+def link_inertials(asset: Asset, materials: Mapping[str, str], *,
+                   family_walls: Mapping[str, float] | None = None, ballast: float = 0.0,
+                   contents: float = 0.0) -> dict[str, Inertial]:
     """Inertial of every link of `asset` whose slots are made of `materials` (slot -> material
-    name; see module doc); `hollow=False` weighs it solid (`SOLID_KINDS`).
+    name; see module doc), walls per material family as `family_walls` says where it does,
+    with `ballast` kg more in the root link's foot (`foot_weight`) and the root link filled
+    with `contents` kg/m^3 (its closed shell's volume, at its centre of mass).
 
     All convex pieces' moments come from one vectorised pass over their triangles; a link's
     density-weighted moments are the sums over its pieces."""
@@ -194,7 +233,7 @@ def link_inertials(asset: Asset, materials: Mapping[str, str], *, hollow: bool =
             moments[:, k] = np.bincount(owner, weights=per_tri[:, k], minlength=len(pieces))
         moments *= np.sign(moments[:, :1] + (moments[:, :1] == 0))  # inverted pieces
     shells = _shell_moments(asset)
-    walls = slot_wall_masses(asset, materials) if hollow else {}
+    walls = slot_wall_masses(asset, materials, family_walls)
     out = {}
     for link in asset.links + [lk for lk, _ in pieces if lk not in asset.links]:
         sel = [i for i, (lk, _) in enumerate(pieces) if lk == link and moments[i, 0] > 1e-12]
@@ -203,7 +242,45 @@ def link_inertials(asset: Asset, materials: Mapping[str, str], *, hollow: bool =
             continue
         out[link] = _link_inertial(moments[sel], rho[sel], slot_of[sel], shells.get(link),
                                    walls.get(link))
+    root = asset.links[0] if asset.links else None
+    if contents > 0 and root in out and root in shells:
+        held = contents * shells[root][0]
+        base = out[root]
+        out[root] = Inertial(base.mass + held, base.com,
+                             base.inertia * (base.mass + held) / base.mass)
+    if ballast > 0 and root in out:
+        out[root] = with_weight(out[root], *foot_weight(asset, ballast))
     return out
+
+
+def foot_weight(asset: Asset, mass: float) -> tuple[float, np.ndarray, np.ndarray]:
+    """A weight of `mass` kg in the asset's foot: a 1 cm plate filling its `bottom` surface
+    (or its bounds' bottom), as (mass, centre, inertia about that centre)."""
+    lo, hi = np.asarray(asset.mesh.bounds)
+    try:
+        bottom = asset.surface("bottom")
+        c = bottom.polygon.centroid
+        centre = bottom.to_world(np.array([[c.x, c.y]]))[0]
+        radius = float(np.sqrt(bottom.polygon.area / np.pi))
+    except (KeyError, ValueError):
+        centre, radius = np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), float(
+            min(hi[:2] - lo[:2]) / 2)
+    centre = np.array([centre[0], centre[1], lo[2] + 0.005])
+    disc = mass * np.diag([radius ** 2 / 4, radius ** 2 / 4, radius ** 2 / 2])
+    return mass, centre, disc
+
+
+def with_weight(inertial: Inertial, mass: float, centre: np.ndarray, inertia: np.ndarray
+                ) -> Inertial:
+    """`inertial` with a rigid weight of `mass` at `centre` (its own `inertia` about it)
+    added: the combined centre of mass, and both inertias moved there (parallel axes)."""
+    total = inertial.mass + mass
+    com = (inertial.mass * inertial.com + mass * centre) / total
+    out = inertial.inertia + inertia
+    for m, c in ((inertial.mass, inertial.com), (mass, centre)):
+        d = c - com
+        out = out + m * (float(d @ d) * np.eye(3) - np.outer(d, d))
+    return Inertial(total, com, 0.5 * (out + out.T))
 
 
 def _slot_density(asset: Asset, materials: Mapping[str, str], slot_index: int) -> float:

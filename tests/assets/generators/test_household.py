@@ -43,6 +43,12 @@ def test_towel_layers(style):
             # the roll's end lies flat: a flat patch of the mesh on the surface
             down = (a.mesh.face_normals[:, 2] < -0.99) & (a.mesh.triangles_center[:, 2] < 1e-6)
             assert a.mesh.area_faces[down].sum() > 0.5 * p["width"] * min(p["tail_length"], 0.02)
+            # ... and the rolls are pressed flat under their centre of mass, which lies over
+            # the flat patch at least 1 cm in from its edges (a roll held only by its end,
+            # beside its centre, rolled off a vanity in MuJoCo and PyBullet)
+            x = a.mesh.triangles[down][:, :, 0]
+            com = a.mesh.center_mass[0]
+            assert x.min() + 0.01 < com < x.max() - 0.01, (n, x.min(), com, x.max())
 
 
 def test_folded_clothes_stack_height():

@@ -34,6 +34,10 @@ from indoorgen.model.scene import as_saved
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
+#: how far a rolled towel lying on its side is pressed flat, as a share of its radius: its
+#: contact is a band about 0.8 of the radius wide under its centre (a soft roll settles so)
+ROLL_SQUASH = 0.08
+
 
 def _seed(p: dict[str, Any]) -> int:
     """A deterministic seed from the params as scene.json saves them (for small per-item
@@ -141,8 +145,26 @@ class Towel(PartsFactory):
         end = np.array([[tail, 0.0], [tail, 0.85 * t]])
         return ccw(np.vstack([outer, end, inner[::-1]]))
 
+    def _roll_squash(self, p) -> float:
+        """How far (m) a roll lying on the surface is pressed flat: `ROLL_SQUASH` of its radius."""
+        return ROLL_SQUASH * self._roll_radius(p)
+
+    def _squashed(self, p, pts: np.ndarray) -> m3d.CrossSection:
+        """The roll profile `pts` pressed flat on the surface: cut `_roll_squash` up and lowered
+        onto z = 0, its end still lying flat from the roll's middle outwards."""
+        cs = m3d.CrossSection([pts], m3d.FillRule.NonZero)
+        dz = self._roll_squash(p)
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        keep = m3d.CrossSection.square((hi[0] - lo[0] + 0.02, hi[1]), False).translate(
+            (lo[0] - 0.01, dz))
+        flat = m3d.CrossSection.batch_boolean([cs, keep], m3d.OpType.Intersect).translate((0, -dz))
+        t = p["layer_thickness"]
+        tail = m3d.CrossSection.square((max(p["tail_length"], 0.0015), 0.85 * t), False)
+        return m3d.CrossSection.batch_boolean([flat, tail], m3d.OpType.Add)
+
     def _roll_centres(self, p) -> list[tuple[float, float]]:
-        """Roll positions: side by side overlapping 2 mm, a third one resting on the two."""
+        """Roll positions: side by side overlapping 2 mm (pressed flat by `_roll_squash`), a
+        third one resting on the two."""
         R, t = self._roll_radius(p), p["layer_thickness"]
         pts = self._roll_profile(dict(p, tail_length=0.0015))
         span = pts[:, 0].max() - pts[:, 0].min()
@@ -151,24 +173,28 @@ class Towel(PartsFactory):
         out = [(0.0, 0.0), (c1, 0.0)][:n]
         if n == 3:
             reach = 2 * (R - 0.75 * t) - 2 * SMALL_OVERLAP  # the turns' smallest outer radius, twice
-            out.append((c1 / 2, math.sqrt(max(reach ** 2 - (c1 / 2) ** 2, 0.0))))
+            out.append((c1 / 2, math.sqrt(max(reach ** 2 - (c1 / 2) ** 2, 0.0))
+                        - self._roll_squash(p)))
         return out
 
     def _rolled(self, p, detail):
         w = p["width"]
         out = []
         centres = self._roll_centres(p)
-        n_bottom = sum(1 for _, cz in centres if cz == 0.0)
+        n_bottom = min(len(centres), 2)
         for i, (cx, cz) in enumerate(centres):
-            # the last roll of the bottom row lets its end lie flat (outwards, +X)
+            # the last roll of the bottom row lets its end lie flat (outwards, +X); the bottom
+            # row is pressed flat where it lies (a roll on a line contact rolls off in MuJoCo:
+            # its end alone, beside its centre of mass, held it)
             tail = p["tail_length"] if i == n_bottom - 1 else 0.0
             pts = self._roll_profile(dict(p, tail_length=max(tail, 0.0015)))
+            cs = (self._squashed(dict(p, tail_length=tail), pts) if i < n_bottom
+                  else m3d.CrossSection([pts], m3d.FillRule.NonZero))
             if not detail:  # the profile's exact extent
-                lo, hi = pts.min(axis=0), pts.max(axis=0)
-                out.append(Part(box_between((cx + lo[0], -w / 2, cz + lo[1]),
-                                            (cx + hi[0], w / 2, cz + hi[1])), "fabric"))
+                x0, z0, x1, z1 = cs.bounds()
+                out.append(Part(box_between((cx + x0, -w / 2, cz + z0),
+                                            (cx + x1, w / 2, cz + z1)), "fabric"))
                 continue
-            cs = m3d.CrossSection([pts], m3d.FillRule.NonZero)
             out.append(Part(xz_extrude(cs, -w / 2, w / 2).translate((cx, 0.0, cz)), "fabric"))
         return out
 

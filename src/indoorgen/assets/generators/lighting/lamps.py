@@ -259,6 +259,14 @@ def _base_radius(shape: str, R: float, t: float) -> float:
     return 0.25 * R + 0.75 * R * math.sin(math.pi * min(t * 1.05, 1.0)) ** 1.3  # vase
 
 
+#: a table lamp's foot: at least this share of its base's widest radius and at least
+#: `FOOT_MIN` (m), flaring out over the lowest share `FOOT_FLARE` of the base's height. A
+#: gourd's or vase's own waist at the bottom (a quarter to a third of its widest radius, 3-4 cm)
+#: under a shade twice as wide tipped lamps over in Newton (0.5-0.9 m, issue 12); real ceramic
+#: lamps stand on a foot ring
+FOOT_SHARE, FOOT_FLARE, FOOT_MIN = 0.6, 0.12, 0.05
+
+
 @register
 class TableLamp(PartsFactory):
     """A table lamp: a lathed ceramic base (vase, gourd, column or cylinder), a neck, socket and
@@ -281,7 +289,18 @@ class TableLamp(PartsFactory):
     }
 
     def _foot_r(self, p) -> float:
-        return max(_base_radius(p["base_shape"], p["base_radius"], 0.0), 0.03)
+        """The foot's radius: the base flares out to `FOOT_SHARE` of its widest radius (at
+        least `FOOT_MIN`), so the lamp stands on a foot as wide as a real one's."""
+        return max(_base_radius(p["base_shape"], p["base_radius"], 0.0),
+                   FOOT_SHARE * p["base_radius"], FOOT_MIN)
+
+    def _profile_r(self, p, t: float) -> float:
+        """The base's radius at fraction t of its height: its shape, flaring out to the foot
+        over the lowest `FOOT_FLARE` of it."""
+        r = _base_radius(p["base_shape"], p["base_radius"], t)
+        if t >= FOOT_FLARE:
+            return r
+        return max(r, self._foot_r(p) + (r - self._foot_r(p)) * t / FOOT_FLARE)
 
     def _shade_outer(self, p, z0: float) -> list[tuple[float, float]]:
         Rb, sh, kind = p["shade_radius"], p["shade_height"], p["shade_shape"]
@@ -296,11 +315,11 @@ class TableLamp(PartsFactory):
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Ceramic base, neck, socket, bulb, harp and shade on its spider."""
         k = FINE if detail else CHEAP
-        hb, R, shape = p["base_height"], p["base_radius"], p["base_shape"]
+        hb = p["base_height"]
         o = OVERLAP
         ts = np.linspace(0.0, 1.0, 24)
         prof = [(0.0, 0.0), (self._foot_r(p), 0.0)]
-        prof += [(max(_base_radius(shape, R, t), 0.016), t * hb) for t in ts[1:]]
+        prof += [(max(self._profile_r(p, t), 0.016), t * hb) for t in ts[1:]]
         prof += [(0.0, hb)]
         base = [Part(k.lathe(prof, 48), "ceramic")]
         z_sb = hb + p["neck_height"]
