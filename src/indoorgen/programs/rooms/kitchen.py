@@ -2,7 +2,8 @@
 requirement wherever the floor allows one), base units set in beside them and each other into
 continuous runs (built, not searched for), wall cabinets hung over the counters and a hood over
 the cooker at the heights the guidelines name, maybe an island with stools, and a counter in use:
-kettle, toaster, knife block and utensil crock, kitchenware, crockery and food."""
+kettle, toaster, knife block and utensil crock, kitchenware, crockery and food, and maybe an open
+shelf over a counter with jars, mugs and herbs."""
 from indoorgen.constraints import (
     InLine,
     ObjSet,
@@ -62,6 +63,8 @@ RUN_FILLER = 0.048
 in_run = InLine(Subpart.Side, Subpart.Side, margin=RUN_FILLER)
 #: what a kitchen in use keeps out on its counters, one of each at most
 COUNTER_KIT = (S.Kettle, S.Toaster, S.KnifeBlock, S.UtensilCrock)
+#: the most jars, mugs and little plants an open shelf holds
+SHELF_THINGS = 6
 #: free floor round an island (m): NKBA Kitchen Planning Guideline 6, a walkway 36 in wide
 ISLAND_AISLE = 0.9
 
@@ -87,6 +90,10 @@ def kitchen(room: ObjSet) -> Problem:
     counters = cabinets | islands
     wall_cabinets = scene()[S.WallCabinet].related_to(room, on_wall).related_to(
         cabinets, hung_above(WALL_CABINET_GAP))
+    shelves = scene()[S.WallShelf].related_to(room, on_wall).related_to(
+        cabinets, hung_above(WALL_CABINET_GAP))
+    shelf_things = scene()[S.Jar] | scene()[S.Cup] | scene()[S.PottedPlant, S.SmallObject]
+    on_shelves = shelf_things.related_to(shelves, on_top)
     hoods = scene()[S.RangeHood].related_to(room, on_wall).related_to(
         cookers, hung_above(HOOD_GAP, Subpart.Top))
     lights = ceiling_lights(room)
@@ -111,6 +118,9 @@ def kitchen(room: ObjSet) -> Problem:
             "stools only at the island": islands.all(
                 lambda i: stools.related_to(i, at_table).count().in_range(0, 4)),
             "wall cabinets": wall_cabinets.count().in_range(0, 3),
+            "open shelves": shelves.count().in_range(0, 2),
+            "jars, mugs and herbs on a shelf": shelves.all(
+                lambda sh: shelf_things.related_to(sh, on_top).count() <= SHELF_THINGS),
             "a hood at most": hoods.count().in_range(0, 1),
             "a ceiling light": lights.count().in_range(1, 2),
             "a microwave at most": appliances_on_counters.count().in_range(0, 1),
@@ -152,6 +162,8 @@ def kitchen(room: ObjSet) -> Problem:
                 lambda h: h.center_distance(cookers).hinge(0.0, 0.08)).minimize(40),
             "extraction": hoods.count().maximize(0.5),
             "storage over the counters": wall_cabinets.count().maximize(0.3),
+            "an open shelf over a counter": shelves.count().maximize(0.3),
+            "jars, mugs and herbs on the shelves": on_shelves.count().maximize(0.2),
             "square to the walls": angle_alignment_cost(floor, room).minimize(1),
             "a lived-in kitchen": (kitchenware.count() + tableware.count() + food.count()).maximize(0.2),
             "the everyday kit out": sum_counts(list(kit.values())).maximize(0.5),
