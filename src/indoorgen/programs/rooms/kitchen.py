@@ -34,9 +34,12 @@ TRIANGLE_AIM = (1.4, 2.5)
 #: weight of the work triangle's legs outside TRIANGLE_LEG, per metre: four times a run's gap,
 #: so a run is not closed up at the cost of a leg
 TRIANGLE_WEIGHT = 40
-#: the narrowest floor (m, each way) on which a work triangle always fits: a kitchen's
-#: smallest single room; an L, or a galley with a 1.2 m aisle (NKBA's for two cooks)
-TRIANGLE_ROOM_SIDE = 2.8
+#: the floor (m, each way) on which a work triangle is required: from a kitchen's smallest
+#: single room (an L, or a galley with a 1.2 m aisle) to its largest. In a longer room the
+#: three may stand in one run along a wall, where the legs' band narrows to 2.4-2.7 m from
+#: fridge to cooker (both other legs at least 1.2 m): the search misses it (home seed 1's
+#: 3.4 x 6 m kitchen, windows and doors on three walls), so there it stays a score
+TRIANGLE_ROOM_SIDES = (2.8, 4.8)
 #: the most a missed triangle weighs as a hard violation (m): less than a missing object, so
 #: the solver never drops an appliance to spare a leg
 TRIANGLE_HARD_CAP = 0.5
@@ -181,10 +184,16 @@ def work_triangle(sinks: ObjSet, cookers: ObjSet, fridges: ObjSet,
 
 
 def room_for_triangle(room: ObjSet) -> Scalar:
-    """1 in a kitchen whose floor is TRIANGLE_ROOM_SIDE or more each way (its box), 0 where a
-    side is 0.2 m shorter, between the two in between."""
-    ramp = [((room.volume((axis,)) - TRIANGLE_ROOM_SIDE) * 5 + 1).clip(0.0, 1.0) for axis in (0, 1)]
-    return ramp[0] * ramp[1]
+    """1 in a compact kitchen, TRIANGLE_ROOM_SIDES each way (its box), where an L always fits
+    the triangle; 0 where a side is 0.2 m outside them, between the two in between."""
+    lo, hi = TRIANGLE_ROOM_SIDES
+    x, y = (room.volume((axis,)) for axis in (0, 1))
+    return within(x, lo, hi) * within(y, lo, hi)
+
+
+def within(side: Scalar, lo: float, hi: float) -> Scalar:
+    """1 where `side` is between `lo` and `hi` metres, 0 from 0.2 m outside them."""
+    return ((side - lo) * 5 + 1).clip(0.0, 1.0) * ((hi - side) * 5 + 1).clip(0.0, 1.0)
 
 
 def sum_counts(sets: list[ObjSet]) -> Scalar:
