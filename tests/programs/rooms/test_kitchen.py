@@ -12,8 +12,10 @@ from indoorgen.constraints import scene
 from indoorgen.constraints.bounds import find_bounds
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, on_floor
+from indoorgen.model.tags import Subpart
+from indoorgen.programs.relations import against_wall, hung_above, on_floor, on_wall
 from indoorgen.programs.rooms.kitchen import (
+    HOOD_GAP,
     IN_RUN,
     RUN_FILLER,
     TRIANGLE_HARD_CAP,
@@ -135,3 +137,22 @@ def test_the_triangle_is_required_where_the_floor_allows_it(room_y, required):
     violation = result.violations["the work triangle where it fits"]
     assert (violation > 0) == required
     assert violation <= TRIANGLE_HARD_CAP < 1.0
+
+
+@pytest.mark.parametrize("hood_at,hood_yaw,ok", [
+    ((0.25, 1.5, 1.6), 0.0, True),                # behind the cooker, on its wall
+    ((0.3, 1.56, 1.6), 0.0, True),                # on its wall, 0.06 m to a side
+    ((0.55, 0.25, 1.6), math.pi / 2, False),      # on the next wall of the corner
+])
+def test_a_hood_hangs_on_the_cookers_wall(hood_at, hood_yaw, ok):
+    """A hood hangs behind the cooker on the cooker's own wall, not beside it on the next wall
+    of a corner (where its centre can still be over the cooker's top)."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 3), (0, 3)])
+    view.add("range", {S.Object, S.Range}, center=(0.4, 1.5, 0.45), extents=(0.7, 0.76, 0.9),
+             relations=[(on_floor, "r"), (against_wall, "r")], generator="range", params={})
+    view.add("hood", {S.Object, S.RangeHood}, center=hood_at, yaw=hood_yaw,
+             extents=(0.5, 0.7, 0.5), generator="range_hood", params={},
+             relations=[(on_wall, "r"), (hung_above(HOOD_GAP, Subpart.Top), "range")])
+    result = Evaluator(kitchen(scene()[S.Room].named("r")), view).evaluate()
+    assert (result.violations["a hood behind the cooker"] == 0) == ok

@@ -11,6 +11,7 @@ from indoorgen.constraints import (
     Scalar,
     accessibility_cost,
     angle_alignment_cost,
+    facing_angle,
     scene,
 )
 from indoorgen.model.tags import Semantics as S
@@ -49,6 +50,12 @@ WALL_CABINET_GAP = 0.5
 #: range hood 24-36 in (0.6-0.9 m) over the cooking surface (HVI, manufacturers' guides): the
 #: hood hangs this far over the range's top (its hob, or its backguard up to 0.22 m above it)
 HOOD_GAP = 0.65
+#: weight of a hood's centre off the range's, per metre (the report allows 0.15 m across it)
+HOOD_CENTRING = 20
+#: the least angle (deg) at the cooker between its front and its hood's centre: a hood on the
+#: cooker's wall stands behind it (180 when centred; 145 allows it 0.7 times its depth offset,
+#: at most 0.2 m: 0.14 m, to a side), one on the next wall of a corner stands beside it (~90)
+HOOD_BEHIND = 145
 #: appliances "in the run": this close (m) to a counter beside them
 IN_RUN = 0.05
 #: weight of a run's gaps, per metre of gap (each gap is worth closing before another unit),
@@ -125,6 +132,10 @@ def kitchen(room: ObjSet) -> Problem:
             "jars, mugs and herbs on a shelf": shelves.all(
                 lambda sh: shelf_things.related_to(sh, on_top).count() <= SHELF_THINGS),
             "a hood at most": hoods.count().in_range(0, 1),
+            # on the cooker's own wall, behind its centre, not on the next wall of a corner (the
+            # angle at the cooker from its front to the hood; weighed under an object's worth)
+            "a hood behind the cooker": hoods.all(
+                lambda h: facing_angle(cookers, h) / 180 >= HOOD_BEHIND / 180),
             "a ceiling light": lights.count().in_range(1, 2),
             "a microwave at most": appliances_on_counters.count().in_range(0, 1),
             # NKBA Guideline 4 where a kitchen has the floor for it: the solver searches (and
@@ -162,8 +173,10 @@ def kitchen(room: ObjSet) -> Problem:
                 lambda i: i.distance(along_walls).hinge(1.0, 9.0)).minimize(3),
             "stools at the island": stools.count().maximize(0.3),
             "a hood centred over the cooker": hoods.mean(
-                lambda h: h.center_distance(cookers).hinge(0.0, 0.08)).minimize(40),
-            "extraction": hoods.count().maximize(0.5),
+                lambda h: h.center_distance(cookers).hinge(0.0, 0.08)).minimize(HOOD_CENTRING),
+            # a hood over every cooker: worth more than its centring's most (a hood against the
+            # wall is up to 0.2 m shallower than the range, so its centre always stands off)
+            "extraction": hoods.count().maximize(5),
             "storage over the counters": wall_cabinets.count().maximize(0.3),
             "an open shelf over a counter": shelves.count().maximize(0.3),
             "jars, mugs and herbs on the shelves": on_shelves.count().maximize(0.2),
