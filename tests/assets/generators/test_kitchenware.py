@@ -1,5 +1,6 @@
 """Kitchenware generators (generators/kitchenware/): pots and pans with lids and handles, jars,
-utensils lying flat, cutting boards (the generic asset contract runs on them in
+utensils lying flat, cutting boards, and what stands out on a counter: kettles, toasters, knife
+blocks, utensil crocks (the generic asset contract runs on them in
 test_generators.py)."""
 from __future__ import annotations
 
@@ -120,3 +121,38 @@ def test_cutting_board_top_and_hole(style):
     assert distances(a.mesh, pts).max() < 1e-3
     c = np.asarray(f._hole(p).centroid.coords[0]) + design_offset(f, p)[:2]
     assert first_hit_down(a.mesh, c[0], c[1]) == -math.inf  # the hole goes through
+
+
+# ------------------------------------------------------------------ what stands on a counter
+COUNTER_KIT = ["kettle", "toaster", "knife_block", "utensil_crock"]
+
+
+def test_counter_kit_is_small_and_names_real_materials():
+    check_small_objects(COUNTER_KIT)
+    check_material_choices(COUNTER_KIT)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_counter_kit_has_believable_sizes(seed):
+    """Each fits under a wall cabinet (0.45-0.6 m over the counter) and on a 0.6 m counter."""
+    for name in COUNTER_KIT:
+        _, _, a = make(name, seed)
+        d, w, h = a.extents
+        assert 0.05 <= h <= 0.45 and max(d, w) <= 0.45, (name, a.extents)
+
+
+@pytest.mark.parametrize("rows", [1, 2])
+def test_toaster_slots_open_into_the_body(rows):
+    """Bread goes in from the top: a ray dropped down a slot meets the body well below its top."""
+    f, p, a = make("toaster", 0, rows=rows)
+    top = a.mesh.bounds[1][2]
+    off = design_offset(f, p)
+    d = p["depth"]
+    x = (0 - (rows - 1) / 2) * d / (rows + 0.6) + off[0]
+    assert top - first_hit_down(a.mesh, x, off[1]) > 0.05
+
+
+def test_utensils_stand_out_of_the_crock():
+    """The utensils rise well above the crock's rim."""
+    _, p, a = make("utensil_crock", 1)
+    assert a.extents[2] > p["height"] + 0.1

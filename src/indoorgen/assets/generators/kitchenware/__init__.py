@@ -1,2 +1,3 @@
-"""Kitchenware: cookware (pots, pans, lids), utensils (cutlery, spatulas, cutting boards) and
-storage jars; what they share is in `_parts`."""
+"""Kitchenware: cookware (pots, pans, lids), utensils (cutlery, spatulas, cutting boards),
+storage jars and what stands out on a counter in use (kettles, toasters, knife blocks, utensil
+crocks); what they share is in `_parts`."""
