@@ -8,6 +8,7 @@ import pytest
 
 from indoorgen.errors import OutputError
 from indoorgen.outputs import (
+    PROBE_PREFIX,
     RECORD,
     atomic_dir,
     check_writable,
@@ -108,6 +109,20 @@ def test_leftovers_of_a_killed_run_are_cleaned_and_user_files_restored(tmp_path)
     assert not tmp.exists() and not old.exists() and live.exists()
     assert (out / "notes.txt").read_text() == "mine"
     assert (out / "scene.json").read_text() == "new"
+
+
+def test_a_killed_runs_writability_probe_is_removed_and_a_running_ones_kept(tmp_path):
+    """A batch killed with SIGKILL between making and removing its probe left it among the
+    scenes; the next run beside it removes it, never another run's or a non-empty one."""
+    out = tmp_path / "scene"
+    dead = tmp_path / f"{PROBE_PREFIX}{_dead_pid()}-abc"
+    live = tmp_path / f"{PROBE_PREFIX}{os.getpid()}-xyz"
+    full = tmp_path / f"{PROBE_PREFIX}{_dead_pid()}-def"
+    for d in (dead, live, full):
+        d.mkdir()
+    (full / "notes.txt").write_text("not a probe's")
+    _write(out, {"scene.json": "new"})
+    assert not dead.exists() and live.exists() and (full / "notes.txt").exists()
 
 
 @pytest.mark.parametrize("name", [".", "..", ""])

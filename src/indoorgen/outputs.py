@@ -28,6 +28,8 @@ SCENE_FILES = frozenset({"scene.json", "floorplan.json", "report.json", "plan.pn
 #: the help of every command's --overwrite
 OVERWRITE_HELP = ("write into a non-empty directory indoorgen did not write, beside its files "
                   "(none of them is replaced or removed)")
+#: the start of the empty directory that checks a parent is writable, before `<pid>-`
+PROBE_PREFIX = ".indoorgen-probe-"
 #: the names of a run's temporary and old directories after `.<out name>.`
 _STALE = re.compile(r"(?P<kind>tmp|old)-(?P<pid>[0-9]+)(-.*)?")
 
@@ -65,7 +67,7 @@ def check_writable(out: Path, directory: bool = True, *, replacing: bool = True,
     if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
         raise OutputError(f"cannot write to {out}: {probe} is not a writable directory")
     try:  # permissions can say yes where the filesystem says no (root, /proc, read-only mounts)
-        tempfile.TemporaryDirectory(prefix=".indoorgen-probe-", dir=probe).cleanup()
+        tempfile.TemporaryDirectory(prefix=f"{PROBE_PREFIX}{os.getpid()}-", dir=probe).cleanup()
     except OSError as e:
         raise OutputError(f"cannot write to {out}: {probe} is not writable ({e.strerror})") from None
     if directory and out.resolve().parent.is_dir():
@@ -181,6 +183,11 @@ def clean_stale(out: Path) -> None:
     parent = Path(out).resolve().parent
     if not parent.is_dir():
         return
+    for p in parent.glob(f"{PROBE_PREFIX}*-*"):  # a writability probe a kill left behind
+        pid = p.name[len(PROBE_PREFIX):].split("-")[0]
+        if pid.isdigit() and p.is_dir() and not _alive(int(pid)):
+            with contextlib.suppress(OSError):
+                p.rmdir()  # only ever empty: a probe holds nothing
     for p in parent.glob(f".{Path(out).name}.*-*"):
         m = _STALE.fullmatch(p.name[len(Path(out).name) + 2:])
         if m is None or not p.is_dir() or _alive(int(m["pid"])):
