@@ -11,7 +11,6 @@ from pathlib import Path
 from xml.etree import ElementTree as ET
 
 import mujoco
-import numpy as np
 import pybullet
 import pytest
 import trimesh
@@ -19,31 +18,11 @@ from pxr import Usd, UsdPhysics, UsdValidation
 
 from indoorgen.architecture.rebuild import scene_architecture
 from indoorgen.architecture.solidify import solidify
-from indoorgen.export import write_formats
-from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
+from indoorgen.export.bundle import bundle_from_scene
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.model.scene import Scene
-from indoorgen.pipeline import HomeConfig, generate_home
 from support.cli import run
 from support.doors import RAY_HEIGHTS, blocked_heights, door_openings
-
-#: a short solve: these tests are about the doors, not the furniture
-STEPS = {"large": 120, "medium": 80, "small": 60}
-SMALL_HOME = "bedroom=1,bathroom=1,kitchen=1"
-TEX = 64
-
-
-def _export(gen, d: Path) -> Path:
-    write_formats(bundle_from_generated(gen), d, "usd,urdf,mjcf,glb", texture_resolution=TEX)
-    (d / "scene.json").write_text(gen.scene.dumps())
-    return d
-
-
-@pytest.fixture(scope="module")
-def home1(tmp_path_factory):
-    """A furnished 1-storey home with its doors open, exported."""
-    gen = generate_home(11, HomeConfig(rooms=SMALL_HOME, area=55.0, steps=STEPS))
-    return gen, _export(gen, tmp_path_factory.mktemp("home1"))
 
 
 def _check_joints(gen, d: Path) -> None:
@@ -119,9 +98,10 @@ def _check_joints(gen, d: Path) -> None:
     assert errors == [], [(e.GetName(), e.GetMessage()) for e in errors[:5]]
 
 
-def _check_rays(d: Path, blocked: bool) -> None:
-    """Re-export from scene.json and cast rays through every door opening at its leaf."""
-    scene = Scene.from_json(json.loads((d / "scene.json").read_text()))
+def _check_rays(scene_json: str, blocked: bool) -> None:
+    """Re-export from a scene.json's text and cast rays through every door opening at its
+    leaf."""
+    scene = Scene.from_json(json.loads(scene_json))
     _, arch = scene_architecture(scene)
     leaves = {e.parent: e for e in bundle_from_scene(scene).elements if e.joint is not None}
     openings = door_openings(arch)
@@ -131,20 +111,27 @@ def _check_rays(d: Path, blocked: bool) -> None:
         assert hits == (list(RAY_HEIGHTS) if blocked else []), (name, hits)
 
 
-@pytest.mark.slow  # the home takes ~25-60 s to furnish and export
-def test_home_doors_are_jointed_in_every_format(home1):
-    gen, d = home1
+@pytest.mark.slow
+@pytest.mark.xdist_group("export_homes")
+@pytest.mark.parametrize("home", ["home1", "home2"])
+def test_home_doors_are_jointed_in_every_format(generated_homes, exported_homes, home):
+    gen, (_, d) = generated_homes[home], exported_homes[home]
     _check_joints(gen, d)
     assert gen.scene.config["doors"] == "open"
     assert all(v == pytest.approx(math.pi / 2) for v in gen.scene.doors.values())
+    # the 2-storey home has doors on both storeys
+    storeys = {e.storey for e in gen.architecture.elements if e.kind == "door"}
+    assert storeys == set(range(gen.scene.config["floors"]))
 
 
 @pytest.mark.slow
-def test_open_doors_leave_every_opening_clear(home1):
-    _, d = home1
-    _check_rays(d, blocked=False)
+@pytest.mark.xdist_group("export_homes")
+@pytest.mark.parametrize("home", ["home1", "home2"])
+def test_open_doors_leave_every_opening_clear(generated_homes, exported_homes, home):
+    gen, (_, d) = generated_homes[home], exported_homes[home]
+    _check_rays(gen.scene.dumps(), blocked=False)
     glb = trimesh.load(d / "scene.glb")
-    for name in json.loads((d / "scene.json").read_text())["doors"]:
+    for name in gen.scene.doors:
         assert glb.graph.transforms.parents[f"{name}_leaf"] == name  # a node of its own
 
 
@@ -157,7 +144,7 @@ def test_closed_doors_from_the_cli_block_openings_and_the_robot(tmp_path):
     scene = json.loads((out / "scene.json").read_text())
     assert scene["config"]["doors"] == "closed"
     assert scene["doors"] and set(scene["doors"].values()) == {0.0}
-    _check_rays(out, blocked=True)
+    _check_rays((out / "scene.json").read_text(), blocked=True)
     nav = json.loads((out / "report.json").read_text())["navigation"]
     # shut doors wall every room off from the hall inside the front door
     interior = [n for n in scene["doors"] if n != "entrance"]
@@ -174,13 +161,3 @@ def test_random_doors_are_reproducible():
     assert len(states) > 2 and len(set(states.values())) == 2  # some shut, some open
 
 
-@pytest.mark.slow
-def test_two_storey_home_doors_are_jointed_and_open(tmp_path):
-    # seed 2: its staircase room's ceiling pieces compile in MuJoCo (several seeds' do not yet:
-    # degenerate slivers, issue 12)
-    gen = generate_home(2, HomeConfig(floors=2, steps=STEPS))
-    assert {e.storey for e in gen.architecture.elements if e.kind == "door"} == {0, 1}
-    d = _export(gen, tmp_path)
-    _check_joints(gen, d)
-    _check_rays(d, blocked=False)
-    assert np.isclose(list(gen.scene.doors.values()), math.pi / 2).all()

@@ -26,7 +26,12 @@ def scene_digest(key: str) -> str:
         gen = generate_home(int(seed), HomeConfig(floors=int(kind[-1]), preset=HOME_PRESETS[kind]))
     else:
         gen = generate(int(seed), GenerateConfig(room_type=kind))
-    return hashlib.sha256(gen.scene.dumps().encode()).hexdigest()
+    return digest(gen.scene)
+
+
+def digest(scene) -> str:
+    """sha256 of a scene's scene.json text."""
+    return hashlib.sha256(scene.dumps().encode()).hexdigest()
 
 
 #: the preset each pinned home is solved on: the 1-storey home as `indoorgen generate --seed 0`
@@ -50,9 +55,15 @@ def test_room_scene_json_is_pinned(key):
 
 
 @pytest.mark.slow
+@pytest.mark.xdist_group("export_homes")
 @pytest.mark.parametrize("key", HOME_KEYS)
-def test_home_scene_json_is_pinned(key):
-    assert scene_digest(key) == pinned(key)
+def test_home_scene_json_is_pinned(key, generated_homes):
+    # the suite's shared homes are these keys' homes (tests/conftest.py): not generated again
+    kind, seed = key.split("/")
+    gen = generated_homes[kind]
+    assert (gen.scene.seed, gen.scene.config["floors"], gen.scene.config["preset"]) == \
+        (int(seed), int(kind[-1]), HOME_PRESETS[kind])
+    assert digest(gen.scene) == pinned(key)
 
 
 if __name__ == "__main__":

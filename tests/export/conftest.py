@@ -10,19 +10,18 @@ from indoorgen.architecture.room import rectangle
 from indoorgen.assets import get_factory
 from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.export import write_formats
-from indoorgen.export.bundle import bundle_from_generated, bundle_from_scene
+from indoorgen.export.bundle import bundle_from_scene
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.model.tags import Subpart
-from indoorgen.pipeline import GenerateConfig, HomeConfig, generate_home
+from indoorgen.pipeline import GenerateConfig
 from indoorgen.programs.relations import hung_from, inside
+from support.exports import export_each
 
 #: texture size used by the tests (small: baking is not what they check)
 TEX = 128
 ALL = "usd,urdf,mjcf,glb,obj"
 ROOMS = {"living_room": 0, "dining_room": 0}
-#: whole homes the export tests open in the real consumers (fast preset: ~15-20 s each)
-HOMES = {"home1": (0, 1), "home2": (0, 2)}
 
 #: articulated generators laid out on the floor of a test room (wall cabinet on a wall)
 ARTICULATED = ["cabinet", "dresser", "nightstand", "tv_stand", "wardrobe", "desk", "oven",
@@ -39,14 +38,7 @@ def generated():
 @pytest.fixture(scope="session")
 def exported(generated, tmp_path_factory):
     """room type -> (bundle, directory with every format, timings)."""
-    out = {}
-    for rt, gen in generated.items():
-        d = tmp_path_factory.mktemp(rt)
-        bundle = bundle_from_generated(gen)
-        timings: dict = {}
-        write_formats(bundle, d, ALL, texture_resolution=TEX, timings=timings)
-        out[rt] = (bundle, d, timings)
-    return out
+    return export_each(generated, tmp_path_factory, ALL, TEX)
 
 
 def articulated_scene() -> Scene:
@@ -118,23 +110,3 @@ def articulated(tmp_path_factory):
     d = tmp_path_factory.mktemp("articulated")
     write_formats(bundle, d, "usd,urdf,mjcf", texture_resolution=TEX)
     return bundle, d
-
-
-@pytest.fixture(scope="session")
-def generated_homes():
-    """'home1' / 'home2' -> Generated (a 1- and a 2-storey home, fast preset). Tests using it
-    should carry `@pytest.mark.xdist_group("export_homes")` so one worker builds them once."""
-    return {k: generate_home(seed, HomeConfig(floors=floors, preset="fast"))
-            for k, (seed, floors) in HOMES.items()}
-
-
-@pytest.fixture(scope="session")
-def exported_homes(generated_homes, tmp_path_factory):
-    """'home1' / 'home2' -> (bundle, directory with every format)."""
-    out = {}
-    for k, gen in generated_homes.items():
-        d = tmp_path_factory.mktemp(k)
-        bundle = bundle_from_generated(gen)
-        write_formats(bundle, d, ALL, texture_resolution=TEX)
-        out[k] = (bundle, d)
-    return out

@@ -10,7 +10,6 @@ import pytest
 from indoorgen.architecture.solidify import Architecture
 from indoorgen.architecture.walls import WallThickness
 from indoorgen.model.floorplan import Floorplan, StairSpec, Storey
-from indoorgen.pipeline import HomeConfig, generate_home
 from indoorgen.quality.navigation import (
     access_points,
     navigability,
@@ -183,10 +182,12 @@ def test_nav_images_one_per_storey(tmp_path):
 
 
 @pytest.mark.slow
-def test_generated_home_report_is_consistent():
-    gen = generate_home(0, HomeConfig(rooms="bedroom=1,bathroom=1,kitchen=1", area=80.0))
+@pytest.mark.xdist_group("export_homes")
+@pytest.mark.parametrize("home", ["home1", "home2"])
+def test_generated_home_report_is_consistent(generated_homes, home):
+    gen = generated_homes[home]
     rep = navigation_report(gen.scene, gen.rooms, gen.cache, gen.architecture)
-    assert set(rep["storeys"]) == {"0"}
+    assert set(rep["storeys"]) == {str(k) for k in range(gen.scene.config["floors"])}
     for s in rep["storeys"].values():
         assert 0 < s["reachable_m2"] <= s["walkable_m2"] <= s["free_m2"]
         assert 0 <= s["reachable_share_of_free"] <= s["reachable_share"] <= 1
