@@ -88,6 +88,23 @@ def test_joints_are_limited_and_driven(exported, exported_homes):
 
 
 @pytest.mark.xdist_group("export_homes")
+def test_filtered_pairs_name_colliders_or_bodies(exported, exported_homes):
+    """A door leaf's filtered pairs name its frame's colliders: an engine ignores a pair with a
+    prim that is neither a body nor a collider (Newton warned on every door)."""
+    pairs = 0
+    for _, stage in _bundles(exported, exported_homes):
+        for p in stage.Traverse():
+            if not p.HasAPI(UsdPhysics.FilteredPairsAPI):
+                continue
+            for t in UsdPhysics.FilteredPairsAPI(p).GetFilteredPairsRel().GetTargets():
+                other = stage.GetPrimAtPath(t)
+                assert other and (other.HasAPI(UsdPhysics.CollisionAPI)
+                                  or other.HasAPI(UsdPhysics.RigidBodyAPI)), (p.GetPath(), t)
+                pairs += 1
+    assert pairs
+
+
+@pytest.mark.xdist_group("export_homes")
 def test_every_rigid_body_has_its_mass(exported, exported_homes):
     for bundle, stage in _bundles(exported, exported_homes):
         bodies = [p for p in stage.Traverse(Usd.TraverseInstanceProxies())

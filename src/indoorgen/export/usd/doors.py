@@ -33,7 +33,8 @@ def _quat(m: np.ndarray) -> Gf.Quatf:
 def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: ArchElement,
                        bundle: ExportBundle) -> None:
     """Make the leaf prim at `path` a rigid body with convex collision pieces and a damped
-    joint `path/joint` to the world; filter its collisions with its door's `frame` prim."""
+    joint `path/joint` to the world; filter its collisions with the colliders of its door's
+    `frame` prim."""
     j = el.joint
     assert j is not None  # moving elements have joints
     prim = stage.GetPrimAtPath(path)
@@ -42,7 +43,9 @@ def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: Ar
     for i, piece in enumerate(bundle.element_pieces(el)):
         define_collision_piece(stage, scope.GetPath().AppendChild(f"piece_{i}"), piece)
     rigid_body(prim, bundle.element_inertial(el))
-    UsdPhysics.FilteredPairsAPI.Apply(prim).CreateFilteredPairsRel().SetTargets([frame])
+    casing = frame_colliders(stage, frame, path)
+    if casing:
+        UsdPhysics.FilteredPairsAPI.Apply(prim).CreateFilteredPairsRel().SetTargets(casing)
 
     axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
     origin = np.asarray(j.origin, float)
@@ -71,3 +74,9 @@ def write_leaf_physics(stage: Usd.Stage, path: Sdf.Path, frame: Sdf.Path, el: Ar
     joint.GetPrim().CreateAttribute("indoorgen:state", Sdf.ValueTypeNames.Double).Set(value)
     add_drive(joint, j.kind != "prismatic", damping=DOOR_DAMPING, max_force=DRIVE_MAX_FORCE)
 
+
+def frame_colliders(stage: Usd.Stage, frame: Sdf.Path, leaf: Sdf.Path) -> list[Sdf.Path]:
+    """The colliders below a door's `frame` prim outside its `leaf`: what a filtered pair
+    names (the frame's Xform is neither a body nor a collider, so engines ignore it there)."""
+    return [p.GetPath() for p in Usd.PrimRange(stage.GetPrimAtPath(frame))
+            if p.HasAPI(UsdPhysics.CollisionAPI) and not p.GetPath().HasPrefix(leaf)]
