@@ -15,14 +15,17 @@ from indoorgen.constraints import Problem
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.scene import Door, Pose, RelationInstance, Room, Scene, SceneObject
 from indoorgen.model.tags import Semantics
+from indoorgen.model.walkable import AGENT_RADIUS, CELL, paint
 from indoorgen.pipeline import _room_set
 from indoorgen.programs.rooms.bedroom import bedroom
 from indoorgen.quality.navigation import navigation_report
 from indoorgen.solver.circulation import (
     CIRCULATION,
     CIRCULATION_WEIGHT,
+    ENTRY_DEPTH,
     Circulation,
     circulation_report,
+    clearance,
     floor_polygon,
     room_floor,
     standing,
@@ -58,6 +61,39 @@ def test_a_bed_across_the_room_cuts_a_door_off():
     # one door and the bed's sides are reached from each other; the other door is cut off
     assert w.violation == 1
     assert w.unreachable in (["door a"], ["door b"])
+
+
+def test_a_bed_across_a_room_walls_in_the_floor_beyond_it():
+    # one door: the floor past the bed holds no door, but it is floor the room had to offer
+    st = make_state(W, D, DOORS[:1])
+    put(st, "bed", floor(), (W / 2, D / 2), math.pi / 2, seed=BED_SEED, name="bed")
+    w = walkway(st, ROOM)
+    assert w.violation == 1
+    assert len(w.unreachable) == 1 and w.unreachable[0].startswith("floor pocket of ")
+    # the same bed along a wall walls in nothing
+    st = make_state(W, D, DOORS[:1])
+    put(st, "bed", floor(), (W / 2, 0.9), 0.0, seed=BED_SEED, name="bed")
+    assert walkway(st, ROOM).violation == 0
+
+
+def test_a_chair_in_a_corner_is_no_pocket():
+    # a nook smaller than POCKET_AREA behind a chair is not worth a walkway
+    st = _two_door_room()
+    put(st, "armchair", floor(), (0.75, 0.75), math.pi / 4, name="chair")
+    assert all(not n.startswith("floor pocket") for n in walkway(st, ROOM).unreachable)
+
+
+def test_a_door_is_reached_where_an_agent_steps_through_it():
+    st = _two_door_room()
+    fixed = room_floor(st.rooms[ROOM])
+    door = next(t for t in fixed.targets if t.name == "door a")
+    ys, xs = np.nonzero(paint(np.zeros(fixed.grid.shape, bool), door.patches))
+    x = fixed.grid.x0 + (xs + 0.5) * fixed.grid.cell
+    # door a is in the left wall (x = 0): its entry cells are the agent centres nearest it,
+    # ENTRY_DEPTH deep, not the whole approach strip
+    assert x.min() >= clearance(AGENT_RADIUS, CELL) - 1e-9
+    assert x.max() - x.min() <= ENTRY_DEPTH + 1e-9
+    assert fixed.centres[ys, xs].all()
 
 
 def test_a_bed_along_a_wall_leaves_the_way_through():

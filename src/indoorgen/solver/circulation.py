@@ -15,9 +15,17 @@ components: the centres an agent can reach from one another. The *targets* are
   for a bed either side point, within `FRONT_TOLERANCE`; or beside a seat standing on the floor
   that is related to it (the chair at a desk stands where its user would).
 
-The violation is the number of targets outside the component that serves the most of them
-(weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
-front can be reached from every other. Doors or landings that
+A door is reached at its *entry cells*: the cells of its strip, in the empty room, within
+`ENTRY_DEPTH` of those nearest the door, where an agent stepping through it first stands (a
+strip reached only at its far edge is a door whose way in is blocked).
+
+The violation is the number of targets outside the component that serves the most of them,
+plus the number of *floor pockets*: components of at least `POCKET_AREA` of agent centres, on
+floor the empty room joins to its doors, that the furniture cuts off and that serve no target
+(a bed across the neck of an L-shaped room leaves its arm unreachable though every door is
+reached). It is weighted by `CIRCULATION_WEIGHT` in the room's problem, so 0 means every door,
+landing and front can be reached from every other and no floor is walled in. Doors or
+landings that
 even the empty room cannot serve (an architectural fault no furniture can fix) are left out and
 logged.
 
@@ -70,6 +78,12 @@ CIRCULATION_WEIGHT = 2.0
 DOOR_ZONE_GAP = 0.05
 #: Stages whose objects have fronts the agent must reach (the navigation measure's "large").
 FRONT_STAGES = frozenset({"large"})
+#: The least area (m^2) of agent centres that counts as a floor pocket: a pocket smaller than
+#: this (a corner behind a chair) leaves the navigation measure's reachable share unchanged to
+#: a percent in a 15 m^2 room.
+POCKET_AREA = 0.2
+#: How deep (m) beyond the cells nearest a door its entry cells reach (three cells).
+ENTRY_DEPTH = 0.15
 
 
 @dataclass
@@ -90,6 +104,7 @@ class RoomFloor:
     centres: np.ndarray
     targets: list[Target]
     unservable: list[str]
+    served: np.ndarray
 
 
 @dataclass
@@ -120,25 +135,51 @@ def floor_polygon(shape: RoomShape) -> sg.base.BaseGeometry:
     return poly.intersection(surface)
 
 
-def static_targets(shape: RoomShape, grid: Grid, radius: float) -> list[Target]:
-    """The room's doors and open connections (the strip in front of each) and its stair
-    landings (keep-out zones beside no door)."""
+def static_targets(shape: RoomShape, grid: Grid, radius: float,
+                   centres: np.ndarray | None = None) -> list[Target]:
+    """The room's doors and open connections (the strip in front of each; with the empty
+    room's `centres`, its entry cells there) and its stair landings (keep-out zones beside no
+    door)."""
     room = shape.room
     poly = np.asarray(room.polygon, float)
     out, mids = [], []
     for d in room.doors:
         seg, inward = door_segment(poly, d.wall, d.offset, d.width)
         mids.append(sg.Point(seg.mean(axis=0)))
-        out.append(Target(f"door {d.name}", grid.patches([approach_strip(seg, inward,
-                                                                          radius + APPROACH)])))
+        strip = grid.patches([approach_strip(seg, inward, radius + APPROACH)])
+        if centres is not None:
+            strip = [entry_cells(grid, p, centres, seg) for p in strip]
+        out.append(Target(f"door {d.name}", strip))
     landings = [z for z in shape.door_zones
                 if not z.is_empty and all(z.distance(m) > DOOR_ZONE_GAP for m in mids)]
     out += [Target(f"stair landing {k}", grid.patches([z])) for k, z in enumerate(landings)]
     return out
 
 
-def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str]]:
-    """The component serving most targets: the count of the others, and their names."""
+def entry_cells(grid: Grid, patch: Patch, centres: np.ndarray, segment: np.ndarray) -> Patch:
+    """The cells of a door's strip `patch` that are agent centres in the empty room and lie
+    within `ENTRY_DEPTH` of the nearest of them to the door's `segment` (the strip unchanged
+    when none is a centre)."""
+    i0, j0, m = patch
+    free = m & centres[i0:i0 + m.shape[0], j0:j0 + m.shape[1]]
+    if not free.any():
+        return patch
+    ii, jj = np.nonzero(free)
+    xy = np.column_stack([grid.x0 + (j0 + jj + 0.5) * grid.cell,
+                          grid.y0 + (i0 + ii + 0.5) * grid.cell])
+    a, b = np.asarray(segment[0], float), np.asarray(segment[1], float)
+    t = np.clip((xy - a) @ (b - a) / max(float((b - a) @ (b - a)), 1e-12), 0.0, 1.0)
+    depth = np.linalg.norm(xy - (a + t[:, None] * (b - a)), axis=1)
+    keep = depth <= depth.min() + ENTRY_DEPTH + 1e-9
+    entry = np.zeros_like(m)
+    entry[ii[keep], jj[keep]] = True
+    return i0, j0, entry
+
+
+def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str], int, set[int]]:
+    """The component serving most targets: the count of the others, their names, its label
+    (0 when no target is served) and the labels of the components those others reach (they
+    are counted already)."""
     hit = [{int(v) for p in t.patches for v in np.unique(patch_values(labels, p)) if v}
            for t in targets]
     counts: dict[int, int] = {}
@@ -146,10 +187,28 @@ def _best(targets: list[Target], labels: np.ndarray) -> tuple[int, list[str]]:
         for lab in h:
             counts[lab] = counts.get(lab, 0) + 1
     if not counts:
-        return len(targets), [t.name for t in targets]
+        return len(targets), [t.name for t in targets], 0, set()
     best = min(counts, key=lambda lab: (-counts[lab], lab))
-    missed = [t.name for t, h in zip(targets, hit, strict=True) if best not in h]
-    return len(missed), missed
+    missed = [(t.name, h) for t, h in zip(targets, hit, strict=True) if best not in h]
+    return (len(missed), [n for n, _ in missed], best,
+            {lab for _, h in missed for lab in h})
+
+
+def pockets(labels: np.ndarray, served: np.ndarray, skip: set[int], grid: Grid) -> list[str]:
+    """The floor pockets (see the module) among the components `labels`, on the `served`
+    floor, but those in `skip` (the walkway's, and those holding a target it misses): a name
+    for each."""
+    sizes = np.bincount(labels[served], minlength=int(labels.max()) + 1)
+    sizes[0] = 0
+    sizes[sorted(skip)] = 0
+    out = []
+    for lab in np.flatnonzero(sizes * grid.cell ** 2 >= POCKET_AREA):
+        ii, jj = np.nonzero(labels == lab)
+        x = grid.x0 + (float(jj.mean()) + 0.5) * grid.cell
+        y = grid.y0 + (float(ii.mean()) + 0.5) * grid.cell
+        out.append(f"floor pocket of {sizes[lab] * grid.cell ** 2:.2f} m^2 at "
+                   f"({x:.1f}, {y:.1f})")
+    return out
 
 
 def clearance(radius: float, cell: float) -> float:
@@ -165,13 +224,16 @@ def room_floor(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CEL
     """The fixed part of a room's circulation, with the doors and landings the empty room can
     serve as targets (the others are reported, not counted)."""
     grid = Grid.covering(sg.Polygon(shape.room.polygon).bounds, cell)
-    targets = static_targets(shape, grid, radius)
     centres = grid.rasterise([floor_polygon(shape).buffer(-clearance(radius, cell))])
-    _, missed = _best(targets, ndimage.label(centres)[0])
+    targets = static_targets(shape, grid, radius, centres)
+    labels = ndimage.label(centres)[0]
+    _, missed, best, _ = _best(targets, labels)
     if missed:
         log.warning("room %s: %s cannot be reached even in the empty room", shape.room.name,
                     ", ".join(missed))
-    return RoomFloor(grid, centres, [t for t in targets if t.name not in missed], missed)
+    served = labels == best if best else np.zeros_like(centres)
+    return RoomFloor(grid, centres, [t for t in targets if t.name not in missed], missed,
+                     served)
 
 
 def standing(state: State, room: str) -> list[str]:
@@ -269,7 +331,10 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
             targets.append(Target(front.name, front.patches + [
                 p for c in seats for p in cache.beside(state.objects[c], floor_z)]))
     labels = ndimage.label(fixed.centres & ~blocked)[0]
-    count, missed = _best(targets, labels)
+    count, missed, best, counted = _best(targets, labels)
+    if best:
+        cut_off = pockets(labels, fixed.served, counted | {best}, fixed.grid)
+        count, missed = count + len(cut_off), missed + cut_off
     result = Walkway(count, missed, list(fixed.unservable))
     cache.last = (key, result)
     return result
@@ -277,9 +342,9 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
 
 class Circulation(Constraint):
     """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
-    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the
-    module). Keeps, per solver state it is evaluated on, the room's caches (they go when the
-    state goes)."""
+    fronts a walking agent of `radius` cannot reach from the rest in room `room`, and of floor
+    pockets it is cut off from (see the module). Keeps, per solver state it is evaluated on,
+    the room's caches (they go when the state goes)."""
 
     def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
         super().__init__()
