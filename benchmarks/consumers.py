@@ -12,6 +12,10 @@ and URDF exports and prints, per scene and then per kind (median and p90 over se
   a free body at its pose (objects hanging on walls fixed, what a drawer or rail holds welded
   to it) on the fixed architecture, and the
   joints that penetrate another body (> 1 cm) when opened to either limit;
+- with `--validators`, the Khronos glTF-Validator's errors on `scene.glb` (when node and the npm
+  `gltf-validator` are installed, the package directory in `INDOORGEN_GLTF_VALIDATOR`, as
+  `.ci/run` installs it) and NVIDIA's Omniverse asset validator's errors and failures on
+  `scene.usdc` (issue 12's bar: none of either);
 - Newton, when `import newton` works: load seconds and drift from `scene.usd` over 1 s
   (benchmarks/newton_usd.py's XPBD stepping; issue 12's bar: >= 99 % within 2 cm).
 `--cache DIR` keeps each generated scene.json there and re-exports it on later runs (so before
@@ -21,8 +25,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import math
+import os
+import shutil
 import statistics
+import subprocess
 import tempfile
 import time
 from pathlib import Path
@@ -39,6 +47,10 @@ from indoorgen.model.scene import Scene
 
 #: Newton's simulated time and step (s): issue 12's bar is a second
 NEWTON_SECONDS, NEWTON_DT = 1.0, 1.0 / 600.0
+#: the environment variable naming the npm `gltf-validator` package directory, and the script
+#: that runs it on one file (the suite's own)
+GLTF_VALIDATOR_ENV = "INDOORGEN_GLTF_VALIDATOR"
+GLTF_SCRIPT = Path(__file__).resolve().parents[1] / "tests" / "support" / "gltf_validate.js"
 #: deepest a joint's part may reach into another body at a limit before it counts (m)
 PENETRATION = 0.01
 
@@ -183,10 +195,35 @@ def newton_figures(d: Path) -> dict:
             "nt_still": float((moved < 0.02).mean()), "nt_max": float(moved.max())}
 
 
+def validator_figures(d: Path) -> dict:
+    """The glTF validator's error count on scene.glb (when it is installed) and the asset
+    validator's error and failure counts on scene.usdc, with the first few."""
+    out: dict = {}
+    pkg = os.environ.get(GLTF_VALIDATOR_ENV)
+    node = shutil.which("node")
+    if pkg and node:
+        run = subprocess.run([node, str(GLTF_SCRIPT), pkg, str(d / "scene.glb")],
+                             capture_output=True, text=True, timeout=900, check=True)
+        issues = json.loads(run.stdout)["issues"]
+        out["gltf_errors"] = int(issues["numErrors"])
+        out["gltf_first"] = [m["code"] for m in issues["messages"] if m["severity"] == 0][:3]
+    try:
+        import omni.asset_validator as av
+    except ImportError:
+        return out
+    logging.getLogger("omni.asset_validator").setLevel(logging.WARNING)
+    found = list(av.ValidationEngine(init_rules=True).validate(str(d / "scene.usdc")).issues())
+    bad = [i for i in found if i.severity in (av.IssueSeverity.ERROR, av.IssueSeverity.FAILURE)]
+    out["oav_bad"] = len(bad)
+    out["oav_first"] = [i.rule.__name__ if i.rule else i.message[:60] for i in bad[:3]]
+    return out
+
+
 def run_one(kind: str, seed: int, args) -> dict:
     """Every figure of one scene."""
     bundle = scene_bundle(kind, seed, args.preset, args.cache)
-    fmts = "mjcf,urdf" + (",usd" if args.newton else "")
+    fmts = "mjcf,urdf" + (",usd" if args.newton or args.validators else "") + (
+        ",glb" if args.validators else "")
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         write_formats(bundle, d, fmts, texture_resolution=16)
@@ -195,6 +232,8 @@ def run_one(kind: str, seed: int, args) -> dict:
             out.update(bullet_figures(bundle, d, args.seconds))
         if args.newton:
             out.update(newton_figures(d))
+        if args.validators:
+            out.update(validator_figures(d))
     return out
 
 
@@ -214,6 +253,8 @@ def main() -> None:
     ap.add_argument("--cache", type=Path, default=None)
     ap.add_argument("--no-bullet", dest="bullet", action="store_false")
     ap.add_argument("--newton", action="store_true", help="also Newton from the USD")
+    ap.add_argument("--validators", action="store_true",
+                    help="also the glTF validator on scene.glb and the asset validator on USD")
     args = ap.parse_args()
     rows = []
     jobs = ([("living_room", s) for s in range(args.rooms)]
@@ -234,7 +275,10 @@ def main() -> None:
         nt = (f" | NT {r.get('nt_error') or ''}{r.get('nt_load_s', 0):.2f} s "
               f"{100 * r.get('nt_still', 0):.1f}% max {100 * r.get('nt_max', 0):.1f} cm"
               if args.newton else "")
-        print(f"{kind:11s} {seed:3d}  {mj}{pb_}{nt}", flush=True)
+        va = (f" | glTF errors {r.get('gltf_errors', '-')} {r.get('gltf_first', '')}"
+              f" | USD errors+failures {r.get('oav_bad', '-')} {r.get('oav_first', '')}"
+              if args.validators else "")
+        print(f"{kind:11s} {seed:3d}  {mj}{pb_}{nt}{va}", flush=True)
     print("\nkind         n  compiled  MJ load s  MJ % still  MJ max cm  pass  PB load s  "
           "PB % still  PB max cm  joints penetrating  NT % still  NT pass  (median / p90)")
     for kind in dict.fromkeys(k for k, _ in jobs):
