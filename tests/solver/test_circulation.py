@@ -23,6 +23,8 @@ from indoorgen.solver.circulation import (
     CIRCULATION,
     CIRCULATION_WEIGHT,
     ENTRY_DEPTH,
+    FLOOR_POCKETS,
+    POCKET_WEIGHT,
     Circulation,
     circulation_report,
     clearance,
@@ -68,19 +70,23 @@ def test_a_bed_across_a_room_walls_in_the_floor_beyond_it():
     st = make_state(W, D, DOORS[:1])
     put(st, "bed", floor(), (W / 2, D / 2), math.pi / 2, seed=BED_SEED, name="bed")
     w = walkway(st, ROOM)
-    assert w.violation == 1
-    assert len(w.unreachable) == 1 and w.unreachable[0].startswith("floor pocket of ")
+    # every door and the bed's side are reached: no violation, one pocket for the score
+    assert w.violation == 0 and w.unreachable == []
+    assert len(w.pockets) == 1 and w.pockets[0].startswith("floor pocket of ")
+    result = Evaluator(with_circulation(Problem(), ROOM), st, check=True).evaluate()
+    assert result.violations[CIRCULATION] == 0
+    assert result.scores[FLOOR_POCKETS] == 1 and result.loss == POCKET_WEIGHT
     # the same bed along a wall walls in nothing
     st = make_state(W, D, DOORS[:1])
     put(st, "bed", floor(), (W / 2, 0.9), 0.0, seed=BED_SEED, name="bed")
-    assert walkway(st, ROOM).violation == 0
+    assert walkway(st, ROOM).pockets == []
 
 
 def test_a_chair_in_a_corner_is_no_pocket():
     # a nook smaller than POCKET_AREA behind a chair is not worth a walkway
     st = _two_door_room()
     put(st, "armchair", floor(), (0.75, 0.75), math.pi / 4, name="chair")
-    assert all(not n.startswith("floor pocket") for n in walkway(st, ROOM).unreachable)
+    assert walkway(st, ROOM).pockets == []
 
 
 def test_a_door_is_reached_where_an_agent_steps_through_it():
@@ -159,7 +165,8 @@ def test_the_evaluator_sees_the_constraint_change_as_objects_move():
     ev.notify(removed=[bed])
     assert ev.evaluate().violations[CIRCULATION] == 0
     report = circulation_report(problem, st, ROOM)
-    assert report == {"violation": 0, "unreachable": [], "unservable_by_architecture": []}
+    assert report == {"violation": 0, "unreachable": [], "unservable_by_architecture": [],
+                      "floor_pockets": []}
     assert circulation_report(Problem(), st, ROOM) is None
 
 

@@ -19,12 +19,14 @@ A door is reached at its *entry cells*: the cells of its strip, in the empty roo
 `ENTRY_DEPTH` of those nearest the door, where an agent stepping through it first stands (a
 strip reached only at its far edge is a door whose way in is blocked).
 
-The violation is the number of targets outside the component that serves the most of them,
-plus the number of *floor pockets*: components of at least `POCKET_AREA` of agent centres, on
-floor the empty room joins to its doors, that the furniture cuts off and that serve no target
-(a bed across the neck of an L-shaped room leaves its arm unreachable though every door is
-reached). It is weighted by `CIRCULATION_WEIGHT` in the room's problem, so 0 means every door,
-landing and front can be reached from every other and no floor is walled in. Doors or
+The violation is the number of targets outside the component that serves the most of them
+(weighted by `CIRCULATION_WEIGHT` in the room's problem), so 0 means every door, landing and
+front can be reached from every other. *Floor pockets* are a score beside it (`FloorPockets`,
+weighed `POCKET_WEIGHT` each): components of at least `POCKET_AREA` of agent centres, on floor
+the empty room joins to its doors, that the furniture cuts off and that serve no target (a bed
+across the neck of an L-shaped room leaves its arm unreachable though every door is reached).
+A score, not a requirement: the navigation report measures the floor they cost, and a home
+whose every door and front is reached is not failed for a walled-in corner. Doors or
 landings that
 even the empty room cannot serve (an architectural fault no furniture can fix) are left out and
 logged.
@@ -49,6 +51,7 @@ from scipy import ndimage
 from indoorgen.constraints.logic import Constraint
 from indoorgen.constraints.node import Env, EvalContext
 from indoorgen.constraints.problem import Problem
+from indoorgen.constraints.scalars import Scalar
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.walkable import (
     AGENT_RADIUS,
@@ -82,6 +85,11 @@ FRONT_STAGES = frozenset({"large"})
 #: this (a corner behind a chair) leaves the navigation measure's reachable share unchanged to
 #: a percent in a 15 m^2 room.
 POCKET_AREA = 0.2
+#: What one floor pocket costs in the room's score: as much as a missing walkway target weighs
+#: as a violation.
+POCKET_WEIGHT = 2.0
+#: The name of the floor-pocket score term in every room's problem.
+FLOOR_POCKETS = "no floor walled in"
 #: How deep (m) beyond the cells nearest a door its entry cells reach (three cells).
 ENTRY_DEPTH = 0.15
 
@@ -114,11 +122,13 @@ class Walkway:
     violation: int
     unreachable: list[str]
     unservable: list[str] = field(default_factory=list)
+    pockets: list[str] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
         """The room's `circulation` record in report.json."""
         return {"violation": self.violation, "unreachable": list(self.unreachable),
-                "unservable_by_architecture": list(self.unservable)}
+                "unservable_by_architecture": list(self.unservable),
+                "floor_pockets": list(self.pockets)}
 
 
 def floor_polygon(shape: RoomShape) -> sg.base.BaseGeometry:
@@ -332,19 +342,17 @@ def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float =
                 p for c in seats for p in cache.beside(state.objects[c], floor_z)]))
     labels = ndimage.label(fixed.centres & ~blocked)[0]
     count, missed, best, counted = _best(targets, labels)
-    if best:
-        cut_off = pockets(labels, fixed.served, counted | {best}, fixed.grid)
-        count, missed = count + len(cut_off), missed + cut_off
-    result = Walkway(count, missed, list(fixed.unservable))
+    cut_off = pockets(labels, fixed.served, counted | {best}, fixed.grid) if best else []
+    result = Walkway(count, missed, list(fixed.unservable), cut_off)
     cache.last = (key, result)
     return result
 
 
 class Circulation(Constraint):
     """Violated by `CIRCULATION_WEIGHT` times the number of doors, landings and large objects'
-    fronts a walking agent of `radius` cannot reach from the rest in room `room`, and of floor
-    pockets it is cut off from (see the module). Keeps, per solver state it is evaluated on,
-    the room's caches (they go when the state goes)."""
+    fronts a walking agent of `radius` cannot reach from the rest in room `room` (see the
+    module). Keeps, per solver state it is evaluated on, the room's caches (they go when the
+    state goes)."""
 
     def __init__(self, room: str, radius: float = AGENT_RADIUS, cell: float = CELL):
         super().__init__()
@@ -362,22 +370,46 @@ class Circulation(Constraint):
 
     def compute(self, ev: EvalContext, env: Env) -> float:
         """The weighted count of unreachable targets in the room's current arrangement."""
+        return CIRCULATION_WEIGHT * self.watched(ev).violation
+
+    def watched(self, ev: EvalContext) -> Walkway:
+        """The room's walkway in the evaluated state, watching every object in the room."""
         state = ev.view
         if not isinstance(state, State):
             raise TypeError(f"circulation needs the solver's State, got {type(state).__name__}")
         ev.watch_membership()
         ev.watch(n for stage in ("large", "medium", "small")
                  for n in state.members(self.room, stage))
-        return CIRCULATION_WEIGHT * self.walkway(state).violation
+        return self.walkway(state)
 
     def label(self) -> str:
         """`circulation(room)`."""
         return f"circulation({self.room})"
 
 
+class FloorPockets(Scalar):
+    """The number of floor pockets (see the module) in the room of `circulation`, from its
+    cached walkway."""
+
+    def __init__(self, circulation: Circulation):
+        super().__init__()
+        self.circulation = circulation
+
+    def compute(self, ev: EvalContext, env: Env) -> float:
+        """How many pockets of floor the room's furniture walls in."""
+        return float(len(self.circulation.watched(ev).pockets))
+
+    def label(self) -> str:
+        """`floor_pockets(room)`."""
+        return f"floor_pockets({self.circulation.room})"
+
+
 def with_circulation(problem: Problem, room: str) -> Problem:
-    """`problem` with the room's circulation constraint added (named `CIRCULATION`)."""
-    return problem + Problem({CIRCULATION: Circulation(room)})
+    """`problem` with the room's circulation constraint (named `CIRCULATION`) and its floor
+    pockets' score (`FLOOR_POCKETS`) added."""
+    node = Circulation(room)
+    return problem + Problem({CIRCULATION: node},
+                             {FLOOR_POCKETS: FloorPockets(node).minimize(POCKET_WEIGHT)})
 
 
 def circulation_report(problem: Problem, state: State, room: str) -> dict[str, Any] | None:
