@@ -243,6 +243,12 @@ def _stat(xs: list[float]) -> str:
     return f"{statistics.median(xs):.3g} / {float(np.percentile(xs, 90)):.3g}"
 
 
+def _total(xs: list[int | None]) -> str:
+    """The sum of the counts measured ('-' when none was)."""
+    got = [x for x in xs if x is not None]
+    return str(sum(got)) if got else "-"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rooms", type=int, default=2, help="living rooms (seeds 0..N-1)")
@@ -280,7 +286,8 @@ def main() -> None:
               if args.validators else "")
         print(f"{kind:11s} {seed:3d}  {mj}{pb_}{nt}{va}", flush=True)
     print("\nkind         n  compiled  MJ load s  MJ % still  MJ max cm  pass  PB load s  "
-          "PB % still  PB max cm  joints penetrating  NT % still  NT pass  (median / p90)")
+          "PB % still  PB max cm  joints penetrating  NT % still  NT pass  glTF errors  "
+          "USD errors+failures  (median / p90; errors summed)")
     for kind in dict.fromkeys(k for k, _ in jobs):
         rs = [r for r in rows if r["kind"] == kind]
         ok = [r for r in rs if "mj_error" not in r]
@@ -295,7 +302,9 @@ def main() -> None:
               f"  {_stat([100 * r['pb_max'] for r in pbr]):>12s}"
               f"  {sum(r['pb_bad_joints'] for r in pbr)}/{sum(r['pb_joints'] for r in pbr)}"
               f"  {_stat([100 * r['nt_still'] for r in ntr]):>12s}"
-              f"  {sum(r['nt_still'] >= 0.99 for r in ntr)}/{len(ntr)}")
+              f"  {sum(r['nt_still'] >= 0.99 for r in ntr)}/{len(ntr)}"
+              f"  {_total([r.get('gltf_errors') for r in rs]):>11s}"
+              f"  {_total([r.get('oav_bad') for r in rs]):>19s}")
 
 
 if __name__ == "__main__":
