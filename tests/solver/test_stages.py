@@ -8,6 +8,7 @@ from indoorgen.constraints import Problem, scene
 from indoorgen.model.scene import Room
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import on_floor, on_top, on_wall
+from indoorgen.solver import stages
 from indoorgen.solver.stages import DEFAULT_STEPS, STAGES, make_namer, solve
 from indoorgen.solver.state import State
 from support.solverscene import ROOM, assert_consistent, make_state, snapshot, table_program
@@ -97,3 +98,28 @@ def test_rooms_are_solved_apart_and_named_as_one_namer_would():
         for p in ob.placements:  # parents renamed with their children
             assert p.parent in st.rooms or st.objects[p.parent].room == ob.room
     assert all(len(set(ns)) == len(ns) for ns in by_gen.values())
+
+
+def test_a_stage_left_unmet_starts_the_room_again_and_the_last_solve_runs_every_stage(
+        monkeypatch):
+    # two dining tables in a 1.6 x 1.6 m room: the large stage can never meet it
+    room = scene()[S.Room].named(ROOM)
+    tables = scene().related_to(room, on_floor)[S.DiningTable]
+    problem = Problem(constraints={
+        "two tables": tables.count() == 2,
+        "art": scene()[S.WallArt].related_to(room, on_wall).count().in_range(1, 1)})
+    solved: list[tuple[str, int]] = []  # (stage, the room's solve it belongs to)
+    real_repair = stages.repair_stage
+
+    def repair(*args, **kwargs):
+        solved.append((args[4], args[-1]))
+        return real_repair(*args, **kwargs)
+
+    monkeypatch.setattr(stages, "repair_stage", repair)
+    stats, _ = solve(make_state(1.6, 1.6), {ROOM: problem}, seed=3, steps=FEW)
+    last = stages.ROOM_ATTEMPTS - 1
+    # every solve stops at its unmet large stage but the last, which runs every stage; each
+    # solve's repairs draw their own random streams (the solve's number)
+    assert solved == [("large", k) for k in range(last)] + [(s, last) for s in STAGES]
+    assert [s.stage for s in stats] == list(STAGES)
+    assert stats[0].violation > 0

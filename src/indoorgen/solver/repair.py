@@ -84,10 +84,11 @@ def _put_back(state: State, ev: Evaluator, obs: list[ObjState]) -> None:
 
 def repair_stage(state: State, problem: Problem, ev: Evaluator, room: str, stage: str,
                  seed: int, config: AnnealConfig, namer: Callable[[str], str], steps: int,
-                 first: StageStats) -> StageStats:
+                 first: StageStats, room_attempt: int = 0) -> StageStats:
     """Solve `stage` of `room` again (up to REPAIR_ATTEMPTS times, each from its own random
-    stream) while one of its own hard constraints is unmet, keeping the best solve. Returns
-    the kept solve's stats (`repairs`: the attempts made, `seconds`: all of them)."""
+    stream, drawn afresh for each of the room's whole solves `room_attempt`) while one of its
+    own hard constraints is unmet, keeping the best solve. Returns the kept solve's stats
+    (`repairs`: the attempts made, `seconds`: all of them)."""
     best = first
     seconds, attempts = first.seconds, 0
     for attempt in range(1, REPAIR_ATTEMPTS + 1):
@@ -95,7 +96,8 @@ def repair_stage(state: State, problem: Problem, ev: Evaluator, room: str, stage
             break
         attempts = attempt
         kept = _take_out(state, ev, room, stage)
-        rng = stream(seed, "room", room, "repair", stage, attempt)
+        rng = stream(seed, "room", room, "repair", stage, attempt,
+                     *((room_attempt,) if room_attempt else ()))
         annealer = Annealer(state, problem, ev, room, stage, rng, config, namer)
         construct(annealer.ctx)
         annealer.result = ev.evaluate()

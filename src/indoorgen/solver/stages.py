@@ -22,7 +22,7 @@ from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.circulation import with_circulation
-from indoorgen.solver.repair import repair_stage
+from indoorgen.solver.repair import own_violation, repair_stage
 from indoorgen.solver.state import ObjState, State
 from indoorgen.solver.window_dressing import dress_windows
 
@@ -34,8 +34,11 @@ STAGES = tuple(STAGE_ORDER)
 DEFAULT_STEPS = {"large": 350, "medium": 300, "small": 450}
 #: whole solves of a room tried while a hard constraint stays unmet after every stage and its
 #: repairs (a medium-stage requirement can hinge on where the large stage put furniture: chairs
-#: around a table too near a wall); the best kept, a room none satisfies reported failed
-ROOM_ATTEMPTS = 3
+#: around a table too near a wall); the best kept, a room none satisfies reported failed. A
+#: solve whose stage leaves one of its own requirements unmet stops there (later stages cannot
+#: meet it) and the next begins, so most of these cost one stage (a kitchen whose large stage
+#: left no place for the fridge); the last always runs every stage
+ROOM_ATTEMPTS = 5
 
 
 def make_namer(counts: dict[str, int] | None = None) -> Callable[[str], str]:
@@ -79,10 +82,19 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
             rng = stream(seed, "room", room, "solve", stage, *((attempt,) if attempt else ()))
             st = Annealer(state, problem, ev, room, stage, rng, config, namer).run(steps[stage])
             st = repair_stage(state, problem, ev, room, stage, seed, config, namer, steps[stage],
-                              st)
+                              st, attempt)
             log.info("%s/%s: %d objects, violation %.3g, loss %.3g in %.2fs", room, stage,
                      st.objects, st.violation, st.loss, st.seconds)
             stats.append(st)
+            if (stage != STAGES[-1] and attempt < ROOM_ATTEMPTS - 1
+                    and own_violation(ev.evaluate(), problem, stage) > 1e-9):
+                break  # later stages cannot meet this stage's requirement: start again
+        if len(stats) < len(STAGES):
+            log.info("%s: %s stage unmet, solved again (attempt %d)", room, stats[-1].stage,
+                     attempt + 1)
+            for n in reversed([n for n, ob in state.objects.items() if ob.room == room]):
+                state.remove(n)
+            continue
         if problem.window_dressing:  # hung once the furniture stands, sized to each window
             dress_windows(state, room, problem.window_dressing,
                           stream(seed, "room", room, "solve", "windows",
