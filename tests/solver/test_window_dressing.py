@@ -12,10 +12,12 @@ from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.architecture.solidify import HomeRoomGeometry
 from indoorgen.assets import get_factory
 from indoorgen.assets.cache import AssetCache
-from indoorgen.model.scene import Room
+from indoorgen.model.scene import Door, Room
+from indoorgen.solver.circulation import walkway
 from indoorgen.solver.stages import make_namer
 from indoorgen.solver.state import ObjState, State
 from indoorgen.solver.window_dressing import HEM_FLOOR, HEM_SILL, ON_WALL, dress_windows
+from support.solverscene import ROOM, floor, put
 
 #: a window in wall_0 (y = 0, the room at y > 0): 1.2 m wide, 0.9-2.1 m high, its frame 3 cm
 #: proud of the wall
@@ -75,3 +77,21 @@ def test_over_a_sofa_under_the_window_the_curtain_ends_below_the_sill():
     lo, _ = st.world_mesh("curtain_0").bounds
     assert WINDOW[0, 2] - HEM_SILL - 1e-6 <= lo[2] < WINDOW[0, 2]
     assert not st.collides("curtain_0") and _clear_of_window(st, "curtain_0")
+
+
+def test_a_curtain_that_would_close_the_walkway_is_left_off():
+    # a 5 x 2.9 m room, a door in the middle of each short wall, a bed across it from the far
+    # wall leaving a 0.75 m way past the window: a curtain's folds would close it
+    room = Room(ROOM, "bedroom", rectangle(5.0, 2.9), doors=[Door("a", 3, 1.45, 0.9),
+                                                             Door("b", 1, 1.45, 0.9)])
+    st = State({ROOM: HomeRoomGeometry(**vars(build_room(room)), windows=[WINDOW])},
+               AssetCache())
+    bed = put(st, "bed", floor(), (2.6, 2.9 - 1.075), math.pi / 2, seed=6)
+    lo, hi = st.world_mesh(bed).bounds
+    assert 0.7 < lo[1] < 0.8 and lo[0] < WINDOW[0, 0] + 0.2 and hi[0] > WINDOW[1, 0] - 0.2
+    assert walkway(st, ROOM).violation == 0
+    assert dress_windows(st, ROOM, "curtain", np.random.default_rng(3), make_namer()) == []
+    assert walkway(st, ROOM).violation == 0
+    # without the bed the same window takes its curtain
+    st.remove(bed)
+    assert dress_windows(st, ROOM, "curtain", np.random.default_rng(3), make_namer()) != []

@@ -32,13 +32,16 @@ log = logging.getLogger(__name__)
 STAGES = tuple(STAGE_ORDER)
 #: annealing steps per stage when the caller gives none
 DEFAULT_STEPS = {"large": 350, "medium": 300, "small": 450}
-#: whole solves of a room tried while a hard constraint stays unmet after every stage and its
-#: repairs (a medium-stage requirement can hinge on where the large stage put furniture: chairs
-#: around a table too near a wall); the best kept, a room none satisfies reported failed. A
-#: solve whose stage leaves one of its own requirements unmet stops there (later stages cannot
-#: meet it) and the next begins, so most of these cost one stage (a kitchen whose large stage
-#: left no place for the fridge); the last always runs every stage
-ROOM_ATTEMPTS = 5
+#: solves of a room tried while a hard constraint stays unmet after a stage and its repairs
+#: (a medium-stage requirement can hinge on where the large stage put furniture: chairs around
+#: a table too near a wall); the best kept, a room none satisfies reported failed. A solve
+#: whose stage leaves one of its own requirements unmet stops there (later stages cannot meet
+#: it) and the next begins, so most of these cost one stage (a kitchen whose large stage left
+#: no place for the fridge); the last always runs every stage
+ROOM_ATTEMPTS = 10
+#: of those, the most that run every stage and still miss a requirement (a small-stage miss
+#: costs a whole solve) before the best is kept
+FULL_SOLVES = 3
 
 
 def make_namer(counts: dict[str, int] | None = None) -> Callable[[str], str]:
@@ -75,7 +78,9 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
     named: dict[str, int] = {}
     namer = make_namer(named)
     best: tuple[list[StageStats], list[ObjState]] | None = None
+    full = 0
     for attempt in range(ROOM_ATTEMPTS):
+        last = attempt == ROOM_ATTEMPTS - 1
         ev = Evaluator(problem, state, check=config.check)
         stats = []
         for stage in STAGES:
@@ -86,7 +91,7 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
             log.info("%s/%s: %d objects, violation %.3g, loss %.3g in %.2fs", room, stage,
                      st.objects, st.violation, st.loss, st.seconds)
             stats.append(st)
-            if (stage != STAGES[-1] and attempt < ROOM_ATTEMPTS - 1
+            if (stage != STAGES[-1] and not last
                     and own_violation(ev.evaluate(), problem, stage) > 1e-9):
                 break  # later stages cannot meet this stage's requirement: start again
         if len(stats) < len(STAGES):
@@ -106,7 +111,8 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
         if best is None or (stats[-1].violation, stats[-1].loss) < \
                 (best[0][-1].violation, best[0][-1].loss):
             best = stats, objects
-        if best[0][-1].violation <= 1e-9:
+        full += 1
+        if best[0][-1].violation <= 1e-9 or full == FULL_SOLVES:
             break
         log.info("%s: solved again (attempt %d), violation %.3g", room, attempt + 1,
                  stats[-1].violation)

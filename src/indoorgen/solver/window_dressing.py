@@ -5,8 +5,10 @@ over the floor, or to below the sill where furniture stands under the window).
 The constraint language knows no windows, so a program asks for its dressing by name
 (`Problem.window_dressing`) and the solver hangs one on each window of the room (a home's rooms
 know their windows' boxes, `RoomShape.windows`; a single room has none). A curtain goes up in
-the first of a few sizes that meets nothing (walls, furniture, door zones: `State.collides`), or
-not at all; it hangs on the wall (`on_wall`), so it is exported fixed, without a free body.
+the first of a few sizes that meets nothing (walls, furniture, door zones: `State.collides`) and
+cuts no walkway the furniture left (`solver.circulation`: a floor-length curtain beside a sofa
+had closed the one way to its front), or not at all; it hangs on the wall (`on_wall`), so it is
+exported fixed, without a free body.
 """
 from __future__ import annotations
 
@@ -22,6 +24,7 @@ from indoorgen.assets.protocol import Surface
 from indoorgen.constraints import StableAgainst
 from indoorgen.model.tags import Subpart
 from indoorgen.rng import child_seed
+from indoorgen.solver.circulation import walkway
 from indoorgen.solver.placement import placements_hold, solve_pose
 from indoorgen.solver.state import ObjState, Placement, State
 
@@ -56,8 +59,13 @@ def dress_windows(state: State, room: str, generator: str, rng: np.random.Genera
     floor = float(getattr(shape, "elevation", 0.0))
     walls = [s for s in shape.surfaces if s.subpart == Subpart.Wall]
     fac = get_factory(generator)
-    out = []
-    for bounds in getattr(shape, "windows", ()):
+    out: list[str] = []
+    windows = getattr(shape, "windows", ())
+    if not len(windows):
+        return out
+    # what the furniture left unreached: a curtain may not add to it
+    allowed = walkway(state, room).violation
+    for bounds in windows:
         bounds = np.asarray(bounds, float)
         wall = _window_wall(walls, bounds)
         seed = child_seed(rng)
@@ -70,7 +78,7 @@ def dress_windows(state: State, room: str, generator: str, rng: np.random.Genera
                  if p["standoff"] <= fac.params["standoff"].high]
         for params, hem in sizes:
             name = _hang(state, room, generator, fac.tags, params, seed, wall, bounds, hem,
-                         namer, stage)
+                         namer, stage, allowed)
             if name is not None:
                 out.append(name)
                 break
@@ -119,9 +127,10 @@ def _sizes(base: dict, bounds: np.ndarray, wall: Surface, floor: float,
 
 def _hang(state: State, room: str, generator: str, tags: frozenset, params: dict, seed: int,
           wall: Surface, bounds: np.ndarray, hem: float, namer: Callable[[str], str],
-          stage: str) -> str | None:
+          stage: str, allowed: int) -> str | None:
     """Add the curtain centred on the window with its hem `hem` over the floor; its name, or
-    None (and nothing added) if it meets anything."""
+    None (and nothing added) if it meets anything or leaves more than `allowed` of the room's
+    walkway targets unreached."""
     asset = state.cache.placeholder(generator, params)
     placement = Placement(ON_WALL, room, "back", wall.name)
     centre = bounds.mean(axis=0)
@@ -139,7 +148,8 @@ def _hang(state: State, room: str, generator: str, tags: frozenset, params: dict
     ob = ObjState(f"{generator}_trial", generator, params, seed, frozenset(tags), room, stage,
                   asset, [placement], position, yaw)
     state.add(ob)
-    fits = not state.collides(ob.name) and placements_hold(state, ob.name)
+    fits = (not state.collides(ob.name) and placements_hold(state, ob.name)
+            and walkway(state, room).violation <= allowed)
     state.remove(ob.name)
     if not fits:
         return None
