@@ -175,11 +175,9 @@ def entry_cells(grid: Grid, patch: Patch, centres: np.ndarray, segment: np.ndarr
     if not free.any():
         return patch
     ii, jj = np.nonzero(free)
-    xy = np.column_stack([grid.x0 + (j0 + jj + 0.5) * grid.cell,
-                          grid.y0 + (i0 + ii + 0.5) * grid.cell])
-    a, b = np.asarray(segment[0], float), np.asarray(segment[1], float)
-    t = np.clip((xy - a) @ (b - a) / max(float((b - a) @ (b - a)), 1e-12), 0.0, 1.0)
-    depth = np.linalg.norm(xy - (a + t[:, None] * (b - a)), axis=1)
+    depth = shapely.distance(shapely.points(grid.x0 + (j0 + jj + 0.5) * grid.cell,
+                                            grid.y0 + (i0 + ii + 0.5) * grid.cell),
+                             sg.LineString(np.asarray(segment, float)))
     keep = depth <= depth.min() + ENTRY_DEPTH + 1e-9
     entry = np.zeros_like(m)
     entry[ii[keep], jj[keep]] = True
@@ -317,11 +315,17 @@ class _RoomCache:
         return patches
 
 
+def room_cache(shape: RoomShape, radius: float = AGENT_RADIUS, cell: float = CELL
+               ) -> _RoomCache:
+    """An empty cache of a room's circulation: its fixed floor, for `walkway` to fill."""
+    return _RoomCache(room_floor(shape, radius, cell), radius, cell)
+
+
 def walkway(state: State, room: str, radius: float = AGENT_RADIUS, cell: float = CELL,
             cache: _RoomCache | None = None) -> Walkway:
     """The circulation of `room` in the state's current arrangement (`cache`: what an earlier
-    evaluation of this room and state kept)."""
-    cache = cache or _RoomCache(room_floor(state.rooms[room], radius, cell), radius, cell)
+    evaluation of this room and state kept, made with the same radius and cell)."""
+    cache = cache or room_cache(state.rooms[room], radius, cell)
     names = standing(state, room)
     key = tuple(_pose_key(state.objects[n]) + (n,) for n in names)
     if cache.last is not None and cache.last[0] == key:
@@ -363,9 +367,8 @@ class Circulation(Constraint):
         """The room's circulation in the state's current arrangement, from cache if unchanged."""
         cache = self._caches.get(state)
         if cache is None:
-            cache = self._caches[state] = _RoomCache(
-                room_floor(state.rooms[self.room], self.radius, self.cell), self.radius,
-                self.cell)
+            cache = self._caches[state] = room_cache(state.rooms[self.room], self.radius,
+                                                     self.cell)
         return walkway(state, self.room, self.radius, self.cell, cache)
 
     def compute(self, ev: EvalContext, env: Env) -> float:

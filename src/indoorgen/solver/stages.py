@@ -94,20 +94,19 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
             if (stage != STAGES[-1] and not last
                     and own_violation(ev.evaluate(), problem, stage) > 1e-9):
                 break  # later stages cannot meet this stage's requirement: start again
-        if len(stats) < len(STAGES):
-            log.info("%s: %s stage unmet, solved again (attempt %d)", room, stats[-1].stage,
-                     attempt + 1)
-            for n in reversed([n for n, ob in state.objects.items() if ob.room == room]):
-                state.remove(n)
-            continue
-        if problem.window_dressing:  # hung once the furniture stands, sized to each window
+        complete = len(stats) == len(STAGES)
+        if complete and problem.window_dressing:  # hung once the furniture stands
             dress_windows(state, room, problem.window_dressing,
                           stream(seed, "room", room, "solve", "windows",
                                  *((attempt,) if attempt else ())), namer)
         mine = [n for n, ob in state.objects.items() if ob.room == room]
-        objects = [_detached(state.objects[n]) for n in mine]
+        objects = [_detached(state.objects[n]) for n in mine] if complete else []
         for n in reversed(mine):
             state.remove(n)
+        if not complete:
+            log.info("%s: %s stage unmet, solved again (attempt %d)", room, stats[-1].stage,
+                     attempt + 1)
+            continue
         if best is None or (stats[-1].violation, stats[-1].loss) < \
                 (best[0][-1].violation, best[0][-1].loss):
             best = stats, objects

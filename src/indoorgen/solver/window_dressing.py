@@ -24,7 +24,7 @@ from indoorgen.assets.protocol import Surface
 from indoorgen.constraints import StableAgainst
 from indoorgen.model.tags import Subpart
 from indoorgen.rng import child_seed
-from indoorgen.solver.circulation import walkway
+from indoorgen.solver.circulation import room_cache, walkway
 from indoorgen.solver.placement import placements_hold, solve_pose
 from indoorgen.solver.state import ObjState, Placement, State
 
@@ -63,8 +63,10 @@ def dress_windows(state: State, room: str, generator: str, rng: np.random.Genera
     windows = getattr(shape, "windows", ())
     if not len(windows):
         return out
-    # what the furniture left unreached: a curtain may not add to it
-    allowed = walkway(state, room).violation
+    # what the furniture left unreached: a curtain may not add to it (one cache: each size
+    # tried rasterises only itself)
+    cache = room_cache(shape)
+    allowed = walkway(state, room, cache=cache).violation
     for bounds in windows:
         bounds = np.asarray(bounds, float)
         wall = _window_wall(walls, bounds)
@@ -78,7 +80,8 @@ def dress_windows(state: State, room: str, generator: str, rng: np.random.Genera
                  if p["standoff"] <= fac.params["standoff"].high]
         for params, hem in sizes:
             name = _hang(state, room, generator, fac.tags, params, seed, wall, bounds, hem,
-                         namer, stage, allowed)
+                         namer, stage, lambda: walkway(state, room, cache=cache).violation
+                         <= allowed)
             if name is not None:
                 out.append(name)
                 break
@@ -127,10 +130,9 @@ def _sizes(base: dict, bounds: np.ndarray, wall: Surface, floor: float,
 
 def _hang(state: State, room: str, generator: str, tags: frozenset, params: dict, seed: int,
           wall: Surface, bounds: np.ndarray, hem: float, namer: Callable[[str], str],
-          stage: str, allowed: int) -> str | None:
+          stage: str, walkway_kept: Callable[[], bool]) -> str | None:
     """Add the curtain centred on the window with its hem `hem` over the floor; its name, or
-    None (and nothing added) if it meets anything or leaves more than `allowed` of the room's
-    walkway targets unreached."""
+    None (and nothing added) if it meets anything or `walkway_kept` says it closes a way."""
     asset = state.cache.placeholder(generator, params)
     placement = Placement(ON_WALL, room, "back", wall.name)
     centre = bounds.mean(axis=0)
@@ -149,7 +151,7 @@ def _hang(state: State, room: str, generator: str, tags: frozenset, params: dict
                   asset, [placement], position, yaw)
     state.add(ob)
     fits = (not state.collides(ob.name) and placements_hold(state, ob.name)
-            and walkway(state, room).violation <= allowed)
+            and walkway_kept())
     state.remove(ob.name)
     if not fits:
         return None
