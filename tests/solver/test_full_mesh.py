@@ -10,6 +10,7 @@ from indoorgen.assets.cache import AssetCache, mesh_bvh
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.scene import Room
 from indoorgen.programs.relations import on_ceiling
+from indoorgen.solver.broadphase import WINDOW_ZONE
 from indoorgen.solver.full_mesh import full_mesh_check
 from indoorgen.solver.state import Placement, State
 from support.solverscene import ROOM, assert_consistent, floor, make_state, put, top_of, wall
@@ -52,7 +53,8 @@ def test_a_window_zone_removes_only_what_must_keep_out_of_it():
     light = put(st, "pendant_light", ceiling(), (1.0, 0.3), stage="medium")
     art = put(st, "wall_art", wall(0), (2.0, 0.0, 1.5), stage="medium")
     assert not any(st.collides(n) for n in (table, candle, light)) and st.collides(art)
-    zone = st.static[-1]  # the candle and the light reach into the window's zone
+    zone = next(piece for piece, kind in zip(st.static, st.static_kinds, strict=True)
+                if kind == WINDOW_ZONE)  # the candle and the light reach into it
     assert all(fcl.collide(zone, fcl.CollisionObject(
         mesh_bvh(st.cache.full(st.objects[n].generator, st.objects[n].params).mesh),
         fcl.Transform(yaw_matrix(st.objects[n].yaw), st.objects[n].position)),
@@ -62,12 +64,20 @@ def test_a_window_zone_removes_only_what_must_keep_out_of_it():
 
 
 def test_a_screen_keeps_out_of_a_window_zone_even_on_its_stand():
-    # a low TV stand under a window is allowed (below the tall-furniture height); the TV on it
-    # is not: watched against the daylight, the screen glares
+    # a TV before a window glares, watched against the daylight: it keeps out of the window's
+    # zone wherever it stands, so its stand keeps out of the zone down to the floor (a stand
+    # under the sill left its TV nowhere to go); other low furniture stands there freely
     geo = build_room(Room(ROOM, "living_room", rectangle(4.0, 3.0), 2.7, 0.12))
     geo.windows = [np.array([(1.0, -0.06, 0.7), (3.0, 0.06, 2.2)])]
     st = State({ROOM: geo}, AssetCache())
     stand = put(st, "tv_stand", floor(), (2.0, 0.3), np.pi / 2)
     tv = put(st, "tv", top_of(stand), (2.0, 0.3), np.pi / 2, stage="small")
     assert st.window_bound(tv) and not st.window_bound(stand)
-    assert not st.collides(stand) and st.collides(tv)
+    assert st.collides(stand) and st.collides(tv)
+    assert full_mesh_check(st) == [tv]  # the zone below the sill is a rule, not a solid
+    st.remove(stand)
+    stand = put(st, "tv_stand", floor(), (3.6, 1.5), np.pi)  # beside the window, both stand
+    tv = put(st, "tv", top_of(stand), (3.6, 1.5), np.pi, stage="small")
+    assert not st.collides(stand) and not st.collides(tv)
+    table = put(st, "coffee_table", floor(), (2.0, 0.6))  # a low table before it is fine
+    assert not st.collides(table)

@@ -25,8 +25,9 @@ import numpy as np
 
 #: boxes closer than this count as overlapping (fcl reports touching solids as colliding)
 BOX_TOL = 1e-9
-#: kinds of fixed pieces: walls, floors and ceilings; door keep-out zones; window keep-out zones
-SOLID, DOOR_ZONE, WINDOW_ZONE = 0, 1, 2
+#: kinds of fixed pieces: walls, floors and ceilings; door keep-out zones; window keep-out zones;
+#: the zones before windows down to the floor, where no screen's stand goes
+SOLID, DOOR_ZONE, WINDOW_ZONE, SCREEN_ZONE = 0, 1, 2, 3
 #: kinds of an object's pieces: solid; keep-free sweeps of moving parts; keep-free use zones
 #: (a toilet's clearance, a front's)
 PIECE_SOLID, PIECE_SWEEP, PIECE_ZONE = 0, 1, 2
@@ -110,12 +111,13 @@ class Broadphase:
         self._pieces[name] = (pieces, boxes, _keys(boxes), kinds)
         self._union[self._row[name]] = _keys(_union_box(boxes)[None])[0]
 
-    def collides(self, name: str, *, windows: bool = False,
+    def collides(self, name: str, *, windows: bool = False, screens: bool = False,
                  carries: Callable[[str, str], bool] | None = None) -> bool:
         """Does a piece of object `name` overlap a piece it may not: of the architecture (window
-        zones only if `windows`), or of another object (keep-free pieces only against solid
-        ones, not against what yields to them, and not against what the keep-free piece's
-        owner carries: `carries(a, b)`, does `b` rest on or in `a`, as a drawer's contents do)?"""
+        zones only if `windows`, the zones below them only if `screens`), or of another object
+        (keep-free pieces only against solid ones, not against what yields to them, and not
+        against what the keep-free piece's owner carries: `carries(a, b)`, does `b` rest on or
+        in `a`, as a drawer's contents do)?"""
         pieces, boxes, keys, kinds = self._pieces[name]
         if not pieces:
             return False
@@ -130,7 +132,8 @@ class Broadphase:
         under = self._yields[name] == YIELD_UNDER
         for j in _overlapping(self._static_keys, own):
             kind = self._static_kinds[j]
-            if (kind == WINDOW_ZONE and not windows) or (kind == DOOR_ZONE and under):
+            if (kind == WINDOW_ZONE and not windows) or (kind == SCREEN_ZONE and not screens) \
+                    or (kind == DOOR_ZONE and under):
                 continue  # a rug may lie where a door swings and one walks through
             mask = None if kind == SOLID else solid_only
             if self._any_hit(pieces, keys, mask, self._static[j], self._static_keys[j], request):

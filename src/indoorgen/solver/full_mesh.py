@@ -18,7 +18,7 @@ from indoorgen.assets.cache import mesh_bvh
 from indoorgen.constraints.bounds import STAGE_ORDER
 from indoorgen.model.frames import yaw_matrix
 from indoorgen.model.tags import Semantics
-from indoorgen.solver.broadphase import DOOR_ZONE, WINDOW_ZONE
+from indoorgen.solver.broadphase import DOOR_ZONE, SCREEN_ZONE, WINDOW_ZONE
 from indoorgen.solver.state import State
 
 log = logging.getLogger(__name__)
@@ -39,7 +39,8 @@ def full_mesh_check(state: State) -> list[str]:
     for co, kind in zip(state.static, state.static_kinds, strict=True):
         if kind == WINDOW_ZONE:
             windows.registerObject(co)
-        else:  # a rug may lie in a door's zone, where a door swings over it
+        elif kind != SCREEN_ZONE:  # (where screens' stands keep out: a rule, not a solid)
+            # a rug may lie in a door's zone, where a door swings over it
             for under, m in managers.items():
                 if not (under and kind == DOOR_ZONE):
                     m.registerObject(co)

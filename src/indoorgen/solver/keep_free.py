@@ -56,6 +56,11 @@ WINDOW_DRESSINGS = frozenset({Semantics.Curtain})
 #: screens keep out of a window's zone wherever they stand (on a TV stand too): a screen before a
 #: window is watched against the daylight and mirrors it (glare; TV-placement guidance)
 WINDOW_SCREENS = frozenset({Semantics.TV})
+#: what holds a screen keeps out of the zone before a window down to the floor: the screen will
+#: stand on it, before the window (a stand under a sill left its TV nowhere to go)
+SCREEN_STANDS = frozenset({Semantics.TVStand})
+#: that zone starts this far over the floor (m), so a stand standing on it does not touch it
+SCREEN_LIFT = 0.01
 #: a sweep volume is inset this much on each side (m): an opened part may touch a wall or an
 #: object (the report allows 5 mm), and a part built flush on the floor must not hit the floor
 SWEEP_INSET = 0.004
@@ -192,9 +197,10 @@ def window_zone(bounds: np.ndarray) -> tuple[sg.Polygon, int]:
     return sg.box(x0 - WINDOW_DEPTH, y0, x1 + WINDOW_DEPTH, y1), 1
 
 
-def window_volume(bounds: np.ndarray) -> trimesh.Trimesh:
-    """A window's keep-out zone as a solid: its plan zone over the opening's heights."""
+def window_volume(bounds: np.ndarray, floor: float | None = None) -> trimesh.Trimesh:
+    """A window's keep-out zone as a solid: its plan zone over the opening's heights (from
+    `floor` instead, if given: where screens' stands keep out)."""
     zone, _ = window_zone(bounds)
-    z0, z1 = float(bounds[0][2]), float(bounds[1][2])
+    z0, z1 = float(bounds[0][2]) if floor is None else floor, float(bounds[1][2])
     x0, y0, x1, y1 = zone.bounds
     return trimesh.creation.box(bounds=np.array([(x0, y0, z0), (x1, y1, z1)]))

@@ -28,12 +28,15 @@ from indoorgen.model.tags import Semantics, Subpart
 from indoorgen.solver.broadphase import (
     DOOR_ZONE,
     PIECE_SOLID,
+    SCREEN_ZONE,
     SOLID,
     WINDOW_ZONE,
     Broadphase,
     world_boxes,
 )
 from indoorgen.solver.keep_free import (
+    SCREEN_LIFT,
+    SCREEN_STANDS,
     WINDOW_DRESSINGS,
     WINDOW_SCREENS,
     WINDOW_TALL,
@@ -124,7 +127,7 @@ class State:
         self.static: list[fcl.CollisionObject] = []
         static_boxes: list[np.ndarray] = []
         kinds: list[int] = []
-        self.static_kinds = kinds  # of each static piece: SOLID, DOOR_ZONE or WINDOW_ZONE
+        self.static_kinds = kinds  # of each static piece: SOLID, DOOR_ZONE, WINDOW_ZONE...
 
         def fixed(shape: fcl.CollisionGeometry, mesh: trimesh.Trimesh, kind: int) -> None:
             self.static.append(fcl.CollisionObject(shape, fcl.Transform()))
@@ -140,6 +143,8 @@ class State:
             for bounds in getattr(g, "windows", ()):  # a home's rooms know their windows
                 piece = window_volume(bounds)
                 fixed(convex_shape(piece), piece, WINDOW_ZONE)
+                below = window_volume(bounds, float(getattr(g, "elevation", 0.0)) + SCREEN_LIFT)
+                fixed(convex_shape(below), below, SCREEN_ZONE)
         self.broadphase: dict[str, Broadphase] = {
             room: Broadphase(self.static, np.array(static_boxes).reshape(-1, 6), np.array(kinds, int))
             for room in rooms}
@@ -417,12 +422,13 @@ class State:
         parts, its clear space) reach into a wall or into an object not resting on or under it?"""
         ob = self.objects[name]
         bp, windows = self.broadphase[ob.room], self._window_bound(ob)
+        screens = bool(SCREEN_STANDS & ob.tags)
         if ob.free_pending:
-            if bp.collides(name, windows=windows, carries=self._carries):
+            if bp.collides(name, windows=windows, screens=screens, carries=self._carries):
                 return True
             self._unregister(ob)
             self._register(ob, build=True)
-        return bp.collides(name, windows=windows, carries=self._carries)
+        return bp.collides(name, windows=windows, screens=screens, carries=self._carries)
 
     def _carries(self, a: str, b: str) -> bool:
         """Does `b` belong in `a`'s keep-free space: resting on, in or from `a` (by its bottom: a
