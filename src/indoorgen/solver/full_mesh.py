@@ -39,10 +39,9 @@ def full_mesh_check(state: State) -> list[str]:
     for co, kind in zip(state.static, state.static_kinds, strict=True):
         if kind == WINDOW_ZONE:
             windows.registerObject(co)
-        elif kind != SCREEN_ZONE:  # (where screens' stands keep out: a rule, not a solid)
-            # a rug may lie in a door's zone, where a door swings over it
+        elif kind != SCREEN_ZONE:  # where screens' stands keep out is a rule, not a solid
             for under, m in managers.items():
-                if not (under and kind == DOOR_ZONE):
+                if not (under and kind == DOOR_ZONE):  # a rug may lie where a door swings
                     m.registerObject(co)
     for m in (*managers.values(), windows):
         m.setup()

@@ -127,7 +127,8 @@ class State:
         self.static: list[fcl.CollisionObject] = []
         static_boxes: list[np.ndarray] = []
         kinds: list[int] = []
-        self.static_kinds = kinds  # of each static piece: SOLID, DOOR_ZONE, WINDOW_ZONE...
+        # of each static piece: SOLID, DOOR_ZONE, WINDOW_ZONE or SCREEN_ZONE
+        self.static_kinds = kinds
 
         def fixed(shape: fcl.CollisionGeometry, mesh: trimesh.Trimesh, kind: int) -> None:
             self.static.append(fcl.CollisionObject(shape, fcl.Transform()))
