@@ -2,10 +2,13 @@
 hand-drawn plan."""
 from __future__ import annotations
 
+import numpy as np
 import pytest
 import shapely.geometry as sg
 
 from indoorgen.floorplan.check import floorplan_problems, home_problems, narrow_area
+from indoorgen.floorplan.grid import square_pieces
+from indoorgen.model.polygons import polygon_pieces
 from indoorgen.model.floorplan import Floorplan
 from indoorgen.model.floorplan_io import from_json
 from support.plans import apartment
@@ -78,3 +81,22 @@ def test_required_counts_and_outline_are_checked():
 def test_narrow_area():
     assert narrow_area(sg.box(0, 0, 4, 4), 1.2) == pytest.approx(0.0)
     assert narrow_area(sg.box(0, 0, 4, 1), 1.2) == pytest.approx(4.0)
+
+
+# 2-storey home 5's upstairs hallway: a 1.5 m corridor and a 2.5 m lobby that meet only across
+# one 0.5 m cell corner to corner; no part of it is narrow, but an agent cannot get from one
+# part to the other
+NECKED_HALL = sg.Polygon([(3.5, 7.0), (3.5, 10.5), (2.5, 10.5), (2.5, 12.5), (0.0, 12.5),
+                          (0.0, 10.0), (2.0, 10.0), (2.0, 7.0)])
+
+
+def test_a_neck_between_wide_parts_is_found_on_polygons_and_grids():
+    assert narrow_area(NECKED_HALL, 1.2) < 0.01
+    assert polygon_pieces(NECKED_HALL, 1.2) == 2
+    assert polygon_pieces(sg.box(0, 0, 4, 1.5), 1.2) == 1
+    cells = np.zeros((12, 8), bool)  # the same hall on the 0.5 m planning grid
+    cells[0:7, 4:7] = True
+    cells[6:11, 0:5] = True
+    assert square_pieces(cells, 3) == 2
+    cells[7:10, 5:7] = True  # widen the lobby over the corridor
+    assert square_pieces(cells, 3) == 1

@@ -6,7 +6,16 @@ import pytest
 import shapely.geometry as sg
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.floorplan.contour import GRID, bevelled_rectangle, make_contour, upper_contour, user_contour
+from indoorgen.floorplan.contour import (
+    GRID,
+    UPPER_MIN_WIDTH,
+    UPPER_SLACK,
+    bevelled_rectangle,
+    make_contour,
+    upper_contour,
+    user_contour,
+)
+from indoorgen.model.polygons import narrow_area
 
 
 @pytest.mark.parametrize("area", [40.0, 90.0, 160.0])
@@ -37,6 +46,22 @@ def test_upper_contour_is_a_subset_keeping_the_stairs():
         up = upper_contour(np.random.default_rng(seed), below, keep, 50.0, p_same=0.0)
         assert up.difference(below).area < 1e-9
         assert up.contains(keep) and up.area >= 50.0
+
+
+def test_upper_contour_is_cut_towards_its_rooms_area():
+    """A large ground floor under a few upstairs rooms: the upper outline is cut down towards
+    its target (never under the least area, never off the stairs, nowhere under 3 m wide), even
+    with the staircase against the outline's edge."""
+    below = sg.box(0.0, 0.0, 14.0, 14.0)
+    for keep in (sg.box(3.0, 3.0, 5.0, 9.0), sg.box(0.0, 8.0, 6.0, 10.0)):
+        areas = []
+        for seed in range(20):
+            up = upper_contour(np.random.default_rng(seed), below, keep, 80.0, target=100.0)
+            assert up.difference(below).area < 1e-9
+            assert up.buffer(1e-6).contains(keep) and up.area >= 80.0
+            assert narrow_area(up, UPPER_MIN_WIDTH) < 0.01
+            areas.append(up.area)
+        assert np.median(areas) <= UPPER_SLACK * 100.0, areas
 
 
 def test_user_contour_errors():

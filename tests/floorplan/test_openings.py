@@ -2,8 +2,12 @@
 follow the room-type table."""
 from __future__ import annotations
 
-from indoorgen.floorplan.openings import DOOR_HEIGHT, door_width
+import numpy as np
+
+from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.floorplan.openings import DOOR_HEIGHT, END_DOOR_TYPES, END_MARGIN, door_width
 from indoorgen.floorplan.rooms import room_type_of
+from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.model.room_types import ROOM_TYPES
 from support.plans import two_storey_home
 
@@ -31,3 +35,23 @@ def test_generated_openings_follow_the_table():
     assert fp.entrance is not None and fp.entrance.width == 1.0
     (st,) = fp.stairs
     assert (st.from_level, st.to_level) == (0, 1)
+
+
+def test_kitchen_and_bathroom_doors_stand_near_a_corner():
+    """A door into a kitchen or bathroom goes at an end of its wall, never mid-wall: by one of
+    the room's corners, so the counter run or the fixtures keep the wall unbroken, or, where
+    the other room meets the middle of a long wall, by that room's corner."""
+    doors, by_own = 0, 0
+    for seed in range(6):
+        fp = generate_floorplan(seed, FloorplanConfig(anneal=FloorplanAnnealConfig(
+            steps_per_storey=20)))
+        for s in fp.storeys:
+            for d in s.doors:
+                for r in (r for r in d.rooms if room_type_of(r) in END_DOOR_TYPES):
+                    gaps = [np.min(np.hypot(*(np.asarray(s.room(o).shape().exterior.coords)
+                                             - np.asarray(d.center)).T)) - d.width / 2
+                            for o in (r, *(o for o in d.rooms if o != r))]
+                    doors += 1
+                    by_own += gaps[0] <= END_MARGIN + 0.25
+                    assert min(gaps) <= END_MARGIN + 0.25, (seed, d.name, gaps)
+    assert doors >= 8 and by_own >= 0.8 * doors, (by_own, doors)

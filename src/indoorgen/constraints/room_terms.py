@@ -59,7 +59,7 @@ MIN_GARAGE_WIDTH = 3.0
 #: rooms one lives in, not to these (`ideal_areas`; a 24 m^2 bathroom beside a 14 m^2 bedroom,
 #: an 11 m^2 closet and a 47.5 m^2 staircase room were what plain typical-area shares made)
 SERVICE_ROOMS = frozenset({"bathroom", "closet", "utility", "staircase_room"})
-PLANNED_WIDTHS = {"bedroom": 2.5, "living_room": 2.5, "dining_room": 2.5, "kitchen": 2.0,
+PLANNED_WIDTHS = {"bedroom": 2.5, "living_room": 3.0, "dining_room": 3.0, "kitchen": 2.0,
                   "bathroom": 1.5}
 #: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
 CORNER_TURN_DEG = 20.0

@@ -3,7 +3,8 @@
 `floorplan_problems` lists every rule a plan breaks (an empty list means it is sound): rooms of
 a storey overlap or leave gaps in the outline; a room is unreachable from the front door
 through doors, open connections and stairs; a door is narrower than 0.8 m or not in a wall its
-two rooms share; a room is narrower than 1.2 m (a closet than 1 m); bathroom privacy is broken;
+two rooms share; a room is narrower than 1.2 m (a closet than 1 m), or has parts joined by a
+narrower neck; bathroom privacy is broken;
 required rooms are missing; a flight is not held by staircase rooms on both its storeys; and
 what `home_problems` lists (stairs, garages, balconies, entrance, bathroom access).
 """
@@ -19,7 +20,7 @@ from indoorgen.floorplan.graph import balcony_problems, privacy_problems, zone_p
 from indoorgen.floorplan.rooms import min_width
 from indoorgen.floorplan.stairs import stair_door_ok, stair_obstacles
 from indoorgen.model.floorplan import Floorplan
-from indoorgen.model.polygons import cross_2d
+from indoorgen.model.polygons import cross_2d, narrow_area, polygon_pieces
 from indoorgen.model.room_types import (
     BALCONY,
     BATHROOM,
@@ -38,13 +39,6 @@ MIN_LANDING = 0.9
 WALL_HALF = 0.12
 #: What the front door may open into.
 ENTRANCE_TYPES = frozenset({HALLWAY, LIVING_ROOM})
-
-
-def narrow_area(poly: sg.Polygon, width: float) -> float:
-    """Area of the parts of `poly` narrower than `width` (erode by width/2, buffer back)."""
-    r = width / 2 - 1e-4
-    opened = poly.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
-    return max(0.0, poly.area - opened.intersection(poly).area)
 
 
 def _door_problems(fp: Floorplan) -> list[str]:
@@ -111,6 +105,8 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             if narrow_area(p, width) > 0.01:
                 out.append(f"{r.name} is narrower than {width} m somewhere "
                            f"({narrow_area(p, width):.2f} m^2)")
+            elif polygon_pieces(p, width) > 1:
+                out.append(f"{r.name} has a neck narrower than {width} m between its parts")
     out += _door_problems(fp)
     if fp.entrance is None:
         out.append("the plan has no entrance")

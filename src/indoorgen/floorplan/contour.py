@@ -3,8 +3,9 @@
 The ground floor's area is the sum of its rooms' typical areas (Table 8) times a slack factor, or
 the user's `--area`; its outline is a rectangle on the 0.5 m grid whose corners are randomly
 bevelled with a rectangular notch, a round profile or a 45-degree chamfer. An upper storey is the
-storey below, or that outline with a rectangular strip or corner removed (never touching the
-staircase). A user may give the ground outline as a polygon instead.
+storey below, or that outline with rectangular strips or corners removed (never touching the
+staircase): cut down towards its own rooms' typical areas where the storey below is much larger
+than they need. A user may give the ground outline as a polygon instead.
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ import shapely.geometry as sg
 from shapely.geometry.polygon import orient
 
 from indoorgen.errors import InvalidGeometryError
-from indoorgen.model.polygons import validate_polygon
+from indoorgen.model.polygons import narrow_area, validate_polygon
 
 #: The planning grid (m): every split, extrusion and rectangular bevel lies on it.
 GRID = 0.5
@@ -104,34 +105,74 @@ def make_contour(rng: np.random.Generator, area: float, max_aspect: float = 1.6)
     return best[1]
 
 
+#: An upper storey larger than this times its rooms' target area is cut down towards it (with
+#: at most UPPER_CUTS cuts, each the best of UPPER_DRAWS random strips and corners); below it, an
+#: upper storey is the storey below or that minus one strip or corner, as drawn. An upper storey
+#: of a few bedrooms on a ground floor sized for a kitchen, dining room and garage otherwise
+#: came out up to twice its rooms' typical area, in living rooms of 45-50 m^2.
+UPPER_SLACK = 1.15
+UPPER_CUTS = 2
+UPPER_DRAWS = 16
+#: The narrowest part an upper outline may keep (m): a room's width with its walls.
+UPPER_MIN_WIDTH = 3.0
+
+
 def upper_contour(rng: np.random.Generator, below: sg.Polygon, keep: sg.Polygon | None,
-                  min_area: float, p_same: float = 0.5) -> sg.Polygon:
-    """The outline of the storey above `below`: the same, or `below` minus a grid-aligned strip
-    or corner rectangle, still containing `keep` (the staircase, plus a grid cell of margin) and
-    at least `min_area` m^2."""
+                  min_area: float, target: float | None = None,
+                  p_same: float = 0.5) -> sg.Polygon:
+    """The outline of the storey above `below`: `below` itself or less a grid-aligned strip or
+    corner rectangle (cut towards `target` m^2 when `below` is over UPPER_SLACK times it), always
+    containing `keep` (the staircase, plus a grid cell of margin) and at least `min_area` m^2."""
+
+    # the staircase and a grid cell round it, where the storey below has that cell
+    margin = keep.buffer(GRID, join_style="mitre").intersection(below) if keep is not None \
+        else None
+
+    def fits(poly) -> bool:
+        return (isinstance(poly, sg.Polygon) and not poly.interiors and poly.area >= min_area
+                and (keep is None or poly.buffer(1e-6).contains(margin))
+                and narrow_area(poly, UPPER_MIN_WIDTH) < 0.01)
+
+    if target is not None and below.area > UPPER_SLACK * target:
+        poly = below
+        for _ in range(UPPER_CUTS):
+            cuts = [poly.difference(_random_cut(rng, poly, 0.6)) for _ in range(UPPER_DRAWS)]
+            ok = [c for c in cuts if fits(c)]
+            if not ok:
+                break
+            best = min(ok, key=lambda c: abs(c.area - target))
+            if abs(best.area - target) >= abs(poly.area - target):
+                break
+            poly = best
+            if poly.area <= UPPER_SLACK * target:
+                break
+        return _clean(poly)
     if rng.random() < p_same:
         return below
-    x0, y0, x1, y1 = below.bounds
     for _ in range(8):
-        side = int(rng.integers(4))
-        corner = rng.random() < 0.5
-        ext = (x1 - x0) if side % 2 == 0 else (y1 - y0)
-        depth = float(snap(rng.uniform(1.5, max(1.5, 0.4 * ext))))
-        along = (y1 - y0) if side % 2 == 0 else (x1 - x0)
-        length = float(snap(rng.uniform(0.35, 0.65) * along)) if corner else along + 1.0
-        if side == 0:    # remove from +x
-            cut = sg.box(x1 - depth, y0 - 0.5, x1 + 0.5, y0 + length)
-        elif side == 1:  # from +y
-            cut = sg.box(x1 - length, y1 - depth, x1 + 0.5, y1 + 0.5)
-        elif side == 2:  # from -x
-            cut = sg.box(x0 - 0.5, y1 - length, x0 + depth, y1 + 0.5)
-        else:            # from -y
-            cut = sg.box(x0 - 0.5, y0 - 0.5, x0 + length, y0 + depth)
-        poly = below.difference(cut)
-        if (isinstance(poly, sg.Polygon) and not poly.interiors and poly.area >= min_area
-                and (keep is None or poly.contains(keep.buffer(GRID, join_style="mitre")))):
+        poly = below.difference(_random_cut(rng, below, 0.4))
+        if fits(poly):
             return _clean(poly)
     return below
+
+
+def _random_cut(rng: np.random.Generator, poly: sg.Polygon, depth_share: float) -> sg.Polygon:
+    """A grid-aligned rectangle to remove from `poly`: a strip along one side (or a corner of
+    it) reaching in up to `depth_share` of the outline's extent (at least 1.5 m)."""
+    x0, y0, x1, y1 = poly.bounds
+    side = int(rng.integers(4))
+    corner = rng.random() < 0.5
+    ext = (x1 - x0) if side % 2 == 0 else (y1 - y0)
+    depth = float(snap(rng.uniform(1.5, max(1.5, depth_share * ext))))
+    along = (y1 - y0) if side % 2 == 0 else (x1 - x0)
+    length = float(snap(rng.uniform(0.35, 0.65) * along)) if corner else along + 1.0
+    if side == 0:    # from +x
+        return sg.box(x1 - depth, y0 - 0.5, x1 + 0.5, y0 + length)
+    if side == 1:    # from +y
+        return sg.box(x1 - length, y1 - depth, x1 + 0.5, y1 + 0.5)
+    if side == 2:    # from -x
+        return sg.box(x0 - 0.5, y1 - length, x0 + depth, y1 + 0.5)
+    return sg.box(x0 - 0.5, y0 - 0.5, x0 + length, y0 + depth)
 
 
 def user_contour(points) -> sg.Polygon:

@@ -50,11 +50,11 @@ log = logging.getLogger(__name__)
 #: both ends, `openings.LANDING`), in cells.
 STAIR_CELLS = (4, 12)
 #: Attempts at subdividing and assigning one storey, and at the whole home.
-STOREY_ATTEMPTS = 40
-HOME_ATTEMPTS = 12
+STOREY_ATTEMPTS = 80
+HOME_ATTEMPTS = 20
 #: The first attempts of each round make rooms `rooms.planned_width` wide; the rest, for crowded
 #: homes those do not fit, only `rooms.min_width` (a narrow room rather than no home).
-PLANNED_WIDTH_ATTEMPTS = 8
+PLANNED_WIDTH_ATTEMPTS = 16
 #: Finished plans drawn at most before giving up on `check.home_problems`.
 REDRAWS = 4
 
@@ -133,8 +133,9 @@ class _Failed(Exception):
     """One home attempt did not work out (the next attempt draws new randomness)."""
 
 
-def _init_storey(seed: int, attempt: int, plan: GridPlan, k: int) -> bool:
-    """Subdivide storey k and assign its rooms until the hard rules hold."""
+def _init_storey(seed: int, attempt: int, plan: GridPlan, k: int, *tail: str) -> bool:
+    """Subdivide storey k and assign its rooms until the hard rules hold (`tail` names a
+    second try's random streams)."""
     grid = plan.grids[k]
     names = plan.names[k]
     g = plan.graph.storeys[k]
@@ -143,7 +144,7 @@ def _init_storey(seed: int, attempt: int, plan: GridPlan, k: int) -> bool:
     ideal = {n: plan.ideal_area(n) for n in names}
     need_ext = {plan.graph.entrance} if k == 0 else set()
     for t in range(STOREY_ATTEMPTS):
-        rng = stream(seed, "floorplan", "init", attempt, k, t)
+        rng = stream(seed, "floorplan", "init", attempt, k, t, *tail)
         spaces = mondrian(rng, grid, int(math.ceil(1.5 * len(names))), fixed=plan.stair_rect)
         if spaces.max() + 1 < len(names):
             continue
@@ -200,7 +201,8 @@ def _contours(seed: int, attempt: int, cfg: FloorplanConfig, hg: HomeGraph):
     contours = [ground]
     for k in range(1, hg.n_storeys):
         min_area = max(_needed_area(names[k]) * 1.4, _typical(names[k]) * 0.85)
-        contours.append(upper_contour(rng, contours[-1], stair_poly, min_area))
+        target = _typical(names[k]) * float(rng.uniform(1.1, 1.3))
+        contours.append(upper_contour(rng, contours[-1], stair_poly, min_area, target))
     frame = (grid0.origin, grid0.shape)
     grids = [grid0] + [make_grid(c, frame) for c in contours[1:]]
     return grids, rect
@@ -218,12 +220,28 @@ def _attempt(seed: int, attempt: int, cfg: FloorplanConfig, counts: dict[str, in
         hg = sample_home_graph(lambda a: stream(seed, "floorplan", "graph", attempt, a),
                                cfg.floors, counts, max_area=max_area)
     grids, rect = _contours(seed, attempt, cfg, hg)
-    plan = GridPlan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect)
-    plan.planned_widths = attempt % HOME_ATTEMPTS < PLANNED_WIDTH_ATTEMPTS
+    planned = attempt % HOME_ATTEMPTS < PLANNED_WIDTH_ATTEMPTS
+    plan = _grid_plan(hg, grids, [np.full(g.shape, OUTSIDE, np.int64) for g in grids], rect,
+                      planned)
     for k in range(hg.n_storeys):
-        if not _init_storey(seed, attempt, plan, k):
-            raise _Failed(f"storey {k}: no subdivision satisfies the room graph "
-                          f"({len(plan.names[k])} rooms in {grids[k].contour.area:.0f} m^2)")
+        if _init_storey(seed, attempt, plan, k):
+            continue
+        if k and grids[k].contour.area < grids[k - 1].contour.area - 1e-6:
+            # an upper outline cut towards its rooms' area: try the storey below's whole outline
+            grids[k] = make_grid(grids[k - 1].contour, (grids[0].origin, grids[0].shape))
+            plan.labels[k] = np.full(grids[k].shape, OUTSIDE, np.int64)
+            plan = _grid_plan(hg, grids, plan.labels, rect, planned)
+            if _init_storey(seed, attempt, plan, k, "uncut"):
+                continue
+        raise _Failed(f"storey {k}: no subdivision satisfies the room graph "
+                      f"({len(plan.names[k])} rooms in {grids[k].contour.area:.0f} m^2)")
+    return plan
+
+
+def _grid_plan(hg: HomeGraph, grids, labels: list[np.ndarray], rect, planned: bool) -> GridPlan:
+    """A plan on `grids` with `labels`, its rooms `planned_width` wide if `planned`."""
+    plan = GridPlan(hg, grids, labels, rect)
+    plan.planned_widths = planned
     return plan
 
 
@@ -302,7 +320,8 @@ def generate_floorplan(seed: int, config: FloorplanConfig | None = None) -> Floo
     else:
         raise InvalidGeometryError(f"cannot lay out this seed's home after {REDRAWS} plans: "
                                    f"{'; '.join(problems[:3])}")
-    fp.info.update({"redraws": redraw, "seed": seed, "config": cfg.to_json(),
+    fp.info.update({"redraws": redraw, "planned_widths": plan.planned_widths, "seed": seed,
+                    "config": cfg.to_json(),
                     "graph": plan.graph.to_json(),
                     "contours": [g.contour for g in plan.grids],
                     "anneal": stats.to_json(), "stats": stats,

@@ -3,8 +3,14 @@
 A probabilistic grammar (Infinigen Indoors, Tables 6 and 7) grows each storey's graph from a
 living room: every room, once added, draws its children by type. Then:
 
+- a balcony or a bathroom is a leaf: what the grammar hangs on it (a utility room, a closet)
+  goes on its parent, since a small room with two doors on its walls has no wall left for
+  its fixtures;
 - hallways are shared: the other children of a room that has hallways are redistributed among
   them (with probability `HALLWAY_SHARE`), so a hallway serves several siblings;
+- a living room keeps at most `MAX_LIVING_NEIGHBOURS` doors to other rooms: the private and
+  service rooms past that move onto a hallway (one is added if it has none), since a living
+  room with a door on every wall has nowhere to put a sofa facing a TV;
 - homes with 2-3 storeys get one staircase room per storey, hung on a hallway (preferring those
   with few children) or the living room; stairs join consecutive staircase rooms;
 - the ground floor gets an entrance: a hallway if there is one, else the living room;
@@ -66,6 +72,13 @@ UPPER_CHILDREN: dict[str, dict[str, float | tuple[float, ...]]] = {
 }
 #: Probability that a sibling of a hallway is moved from the common parent onto a hallway.
 HALLWAY_SHARE = 0.6
+#: Types whose children go on their own parent instead (`grow_storey`).
+LEAVES = frozenset({BALCONY, BATHROOM})
+#: Doors a living room keeps to other rooms at most, and the kinds of room that move from it
+#: onto a hallway past that (`_relieve_living_rooms`); the dining room, kitchen, balcony,
+#: hallways and another living room stay, as they belong to the shared zone.
+MAX_LIVING_NEIGHBOURS = 3
+OFF_HALLWAY = (BEDROOM, BATHROOM, CLOSET, UTILITY, GARAGE)
 #: Graphs with more rooms than this on one storey (staircase included), or a room with more
 #: neighbours than MAX_DEGREE, are resampled unless counts are fixed: they rarely fit a plan.
 MAX_ROOMS_PER_STOREY = 12
@@ -158,8 +171,7 @@ def grow_storey(rng: np.random.Generator, level: int) -> tuple[nx.Graph, dict[in
     queue = [0]
     while queue and g.number_of_nodes() < 3 * MAX_ROOMS_PER_STOREY:
         i = queue.pop(0)
-        # a balcony is a leaf: the rooms the grammar hangs on it go on its parent instead
-        host = parent[i] if g.nodes[i]["type"] == BALCONY else i
+        host = parent[i] if g.nodes[i]["type"] in LEAVES else i
         for child_type, spec in table.get(g.nodes[i]["type"], {}).items():
             for _ in range(_draw_count(rng, spec)):
                 j = g.number_of_nodes()
@@ -183,6 +195,31 @@ def _share_hallways(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int
                     rng.random() >= HALLWAY_SHARE:
                 continue
             h = halls[int(rng.integers(len(halls)))]
+            g.remove_edge(p, c)
+            g.add_edge(h, c)
+            parent[c] = h
+
+
+def _relieve_living_rooms(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int],
+                          stairs: bool) -> None:
+    """Move private and service children (`OFF_HALLWAY`) of a living room with more than
+    `MAX_LIVING_NEIGHBOURS` neighbours onto its hallways, adding a hallway if it has none;
+    with `stairs` (a home of several storeys) a storey without a hallway keeps a door free for
+    the staircase room `_finish` hangs on its living room."""
+    for p in _of_type(g, LIVING_ROOM):
+        movable = [c for c in sorted(g.neighbors(p))
+                   if parent.get(c) == p and g.nodes[c]["type"] in OFF_HALLWAY]
+        excess = g.degree(p) - MAX_LIVING_NEIGHBOURS + (stairs and not _of_type(g, HALLWAY))
+        if excess <= 0 or not movable:
+            continue
+        halls = [c for c in sorted(g.neighbors(p)) if g.nodes[c]["type"] == HALLWAY]
+        if not halls:
+            halls = [_hang(rng, g, parent, HALLWAY, [p])]
+            excess = g.degree(p) - MAX_LIVING_NEIGHBOURS  # the stairs will hang on the hallway
+        order = rng.permutation(len(movable))
+        for c in (movable[k] for k in order[:excess]):
+            load = [sum(1 for q in parent.values() if q == h) for h in halls]
+            h = halls[int(np.argmin(load))]
             g.remove_edge(p, c)
             g.add_edge(h, c)
             parent[c] = h
@@ -425,6 +462,9 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
         if counts and not _repair_counts(rng, trees, counts):
             last = ["cannot attach the requested rooms"]
             continue
+        if HALLWAY not in counts:
+            for g, par in trees:
+                _relieve_living_rooms(rng, g, par, n_storeys > 1)
         if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY - (n_storeys > 1)
                               or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
             continue

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 import shapely.geometry as sg
+from scipy import ndimage
 
 from indoorgen.floorplan.contour import GRID
 
@@ -244,6 +245,15 @@ def _window_sum(m: np.ndarray, k: int) -> np.ndarray:
     c = np.zeros((m.shape[0] + 1, m.shape[1] + 1), np.int32)
     c[1:, 1:] = np.cumsum(np.cumsum(m, axis=0, dtype=np.int32), axis=1)
     return c[k:, k:] - c[:-k, k:] - c[k:, :-k] + c[:-k, :-k]
+
+
+def square_pieces(mask: np.ndarray, k: int) -> int:
+    """How many separate places a k x k square can slide around in inside `mask` (connected
+    by one-cell steps): more than one where a neck narrower than k joins parts of it."""
+    ny, nx = mask.shape
+    if k <= 1 or ny < k or nx < k:
+        return int(ndimage.label(mask)[1])
+    return int(ndimage.label(_window_sum(mask, k) == k * k)[1])
 
 
 def opening(mask: np.ndarray, k: int) -> np.ndarray:

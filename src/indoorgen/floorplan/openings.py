@@ -1,7 +1,8 @@
 """Doors, open connections, windows, the front door and the stairs of a solved plan.
 
 - A door joins each pair of graph neighbours, on their longest shared straight wall: centred or
-  near one end (leaving wall for furniture); its width depends on the room it leads into.
+  near one end (leaving wall for furniture), always near an end into a kitchen or bathroom; its
+  width depends on the room it leads into.
 - Living/dining and dining/kitchen pairs are instead joined by an open connection (the whole
   shared wall removed) with probability `open_prob`.
 - A garage's vehicle door goes in the middle of its longest straight exterior wall.
@@ -24,6 +25,7 @@ from indoorgen.floorplan.view import GridPlan, longest_run
 from indoorgen.model.floorplan import DoorSpec, Entrance, StairSpec, VehicleDoor, WindowSpec
 from indoorgen.model.polygons import cross_2d
 from indoorgen.model.room_types import (
+    BATHROOM,
     DINING_ROOM,
     GARAGE,
     KITCHEN,
@@ -34,6 +36,9 @@ from indoorgen.model.room_types import (
 
 #: Clear wall kept between a door or window and the end of its wall run (m).
 END_MARGIN = 0.15
+#: Rooms whose doors go near an end of their wall, never in its middle: a kitchen's counter
+#: run and a bathroom's fixtures need the wall unbroken.
+END_DOOR_TYPES = frozenset({KITCHEN, BATHROOM})
 #: Pairs of types joined by an open connection (no wall) rather than a door, when chosen.
 OPEN_PAIRS = frozenset({frozenset({LIVING_ROOM, DINING_ROOM}), frozenset({DINING_ROOM, KITCHEN})})
 #: A garage's vehicle door (m): a single-car up-and-over or sectional door.
@@ -107,9 +112,15 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
             lo = wall / 2 + END_MARGIN + w / 2
             if length < 2 * lo:
                 continue
-            # centred, or near one end (leaving wall for furniture)
-            t = length / 2 if rng.random() < 0.5 else (lo if rng.random() < 0.5 else length - lo)
-            centre = p + t * u
+            # centred, or near one end (leaving wall for furniture); into a kitchen or bathroom
+            # always at the end nearer one of its corners, so its walls stay unbroken
+            end_room = next((r for r in (a, b) if room_type_of(r) in END_DOOR_TYPES), None)
+            if end_room is not None:
+                centre = _door_by_corner(plan, end_room, runs, lo)
+            elif rng.random() < 0.5:
+                centre = p + length / 2 * u
+            else:
+                centre = p + (lo if rng.random() < 0.5 else length - lo) * u
             stair_room = next((r for r in (a, b) if room_type_of(r) == STAIRCASE_ROOM), None)
             if stair_room is not None and stairs:
                 centre = _stair_door_site(plan, stair_room, runs, centre, w, lo, level, stairs,
@@ -118,6 +129,26 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
         doors.append(dk)
         openings.append(ok)
     return doors, openings
+
+
+def _door_by_corner(plan: GridPlan, room: str, runs, lo: float) -> np.ndarray:
+    """The centre of a door into `room` at the end of a shared wall (of `runs`, each long enough
+    for the door) nearest one of `room`'s corners (`lo`: from the wall's end to the door's
+    centre); ties go to the longest wall, as `runs` are ordered."""
+    poly = plan.polygon(room)
+    assert poly is not None  # solved plans hold simple polygons
+    corners = np.asarray(poly.exterior.coords)
+    best: tuple[float, np.ndarray] | None = None
+    for length, p, q in runs:
+        if length < 2 * lo:
+            continue
+        u = (q - p) / length
+        for end, c in ((p, p + lo * u), (q, q - lo * u)):
+            gap = float(np.min(np.hypot(*(corners - end).T)))
+            if best is None or gap < best[0] - 1e-9:
+                best = (gap, c)
+    assert best is not None  # the longest run is long enough (checked by the caller)
+    return best[1]
 
 
 def _stair_door_site(plan: GridPlan, room: str, runs, preferred: np.ndarray, width: float,

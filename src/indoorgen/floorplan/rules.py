@@ -23,7 +23,8 @@ from indoorgen.model.room_types import BALCONY, GARAGE, ROOM_TYPES, STAIRCASE_RO
 def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
-    `planned_width` wide (`min_width` in a plan of a home's last tries), at least its type's
+    `planned_width` wide (`min_width` in a plan of a home's last tries) with no narrower neck
+    between its parts, at least its type's
     minimum area, a balcony on the storey's edge, and the staircase room holding the whole
     staircase placeholder with a door-wide wall clear of its flights and stairwells for each
     graph neighbour."""
@@ -47,6 +48,8 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
     width = planned_width(t) if plan.planned_widths else min_width(t)
     if plan.narrow_area(o, width) > 0.01:
         out.append(f"{o} is narrower than {width} m")
+    elif plan.narrow_pieces(o, width) > 1:
+        out.append(f"{o} has a neck narrower than {width} m")
     if plan.missing_doors(o):
         out.append(f"{o} lacks a door-wide wall with a graph neighbour")
     return out

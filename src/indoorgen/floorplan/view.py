@@ -17,9 +17,10 @@ from shapely.geometry.polygon import orient
 
 from indoorgen.constraints.room_terms import MIN_DOOR_WALL, SERVICE_ROOMS, STOREY, RoomView, ideal_areas
 from indoorgen.floorplan.graph import HomeGraph
-from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, trace
+from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, square_pieces, trace
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.stairs import flight_mask, flights
+from indoorgen.model.polygons import polygon_pieces
 from indoorgen.model.room_types import ROOM_TYPES
 
 _TURN = math.radians(20.0)
@@ -351,6 +352,17 @@ class GridPlan(RoomView):
     def wall_lines(self, o: str) -> tuple[frozenset, frozenset]:
         """The x and y positions of o's vertical and horizontal walls."""
         return self._shape(o)["lines"]
+
+    def narrow_pieces(self, o: str, width: float) -> int:
+        """How many parts of o a `width` square can move about in, each cut off from the others
+        by a neck narrower than `width` (1 for a room one walks through whole)."""
+        def f():
+            if self.has_partial(o):
+                return polygon_pieces(self.polygon(o), width)
+            g = self.grids[self.index[o][0]]
+            ys, xs = self.bbox(o)
+            return square_pieces(self.mask(o)[ys, xs], int(math.ceil(width / g.size - 1e-9)))
+        return self.cached(o, ("pieces", width), f)
 
     def narrow_area(self, o: str, width: float) -> float:
         """Area of the parts of o narrower than `width` (m^2)."""

@@ -112,3 +112,18 @@ def largest_polygon(geom: Any) -> sg.Polygon:
         return geom
     parts = [g for g in getattr(geom, "geoms", []) if isinstance(g, sg.Polygon)]
     return max(parts, key=lambda g: g.area) if parts else sg.Polygon()
+
+
+def polygon_pieces(poly: sg.Polygon, width: float) -> int:
+    """How many parts of `poly` a `width` square can move about in (its erosion by width / 2):
+    more than one where a neck narrower than `width` joins them."""
+    eroded = poly.buffer(-(width / 2 - 1e-4), join_style="mitre")
+    return len(getattr(eroded, "geoms", [eroded])) if not eroded.is_empty else 0
+
+
+def narrow_area(poly: sg.Polygon, width: float) -> float:
+    """Area (m^2) of the parts of `poly` narrower than `width` (eroded by width / 2 and grown
+    back: what the opening loses)."""
+    r = width / 2 - 1e-4
+    opened = poly.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
+    return max(0.0, float(poly.area - opened.intersection(poly).area))

@@ -86,7 +86,7 @@ class RoomTypeSpec:
 
 _SPECS = (
     RoomTypeSpec(LIVING_ROOM, (4.6, 6.4), (3.9, 5.4), in_floorplans=True, typical_area=25.0,
-                 min_area=10.0, functional=True, square=True, entrance=True,
+                 min_area=15.0, functional=True, square=True, entrance=True,
                  windows=Windows(1.2, 2.4, 1.5, 0.8, max_count=3), colour="#f4d6a0",
                  aliases=("living", "livingroom")),
     RoomTypeSpec(DINING_ROOM, (4.0, 5.4), (3.6, 4.8), in_floorplans=True, typical_area=20.0,
@@ -94,7 +94,7 @@ _SPECS = (
                  windows=Windows(1.0, 2.0, 1.4, 0.9, max_count=2), colour="#f2bf8c",
                  aliases=("dining", "diningroom")),
     RoomTypeSpec(KITCHEN, (3.2, 4.8), (2.8, 4.2), in_floorplans=True, typical_area=20.0,
-                 min_area=6.0, functional=True, square=True,
+                 min_area=8.0, functional=True, square=True,
                  windows=Windows(0.9, 1.6, 1.2, 1.05, max_count=2), colour="#e8a87c"),
     RoomTypeSpec(BEDROOM, (3.4, 4.6), (3.2, 4.2), in_floorplans=True, typical_area=20.0,
                  min_area=7.0, exterior=True, view=True, functional=True, square=True,
