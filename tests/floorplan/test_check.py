@@ -8,9 +8,9 @@ import shapely.geometry as sg
 
 from indoorgen.floorplan.check import floorplan_problems, home_problems, narrow_area
 from indoorgen.floorplan.grid import square_pieces
-from indoorgen.model.polygons import polygon_pieces
 from indoorgen.model.floorplan import Floorplan
 from indoorgen.model.floorplan_io import from_json
+from indoorgen.model.polygons import polygon_pieces
 from support.plans import apartment
 
 

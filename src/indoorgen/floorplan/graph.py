@@ -13,7 +13,8 @@ living room: every room, once added, draws its children by type. Then:
   room with a door on every wall has nowhere to put a sofa facing a TV;
 - homes with 2-3 storeys get one staircase room per storey, hung on a hallway (preferring those
   with few children) or the living room; stairs join consecutive staircase rooms;
-- the ground floor gets an entrance: a hallway if there is one, else the living room;
+- the ground floor gets an entrance: a hallway (always where the living room already has
+  `MAX_LIVING_NEIGHBOURS` doors) or the living room;
 - graphs that are not planar or break bathroom privacy are rejected (see `privacy_problems`);
 - user room counts are met by repairing a sampled graph (adding rooms under grammar-valid
   parents, removing leaves), so unusual counts do not need millions of rejections.
@@ -201,21 +202,24 @@ def _share_hallways(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int
 
 
 def _relieve_living_rooms(rng: np.random.Generator, g: nx.Graph, parent: dict[int, int],
-                          stairs: bool) -> None:
+                          stairs: bool, entrance: bool) -> None:
     """Move private and service children (`OFF_HALLWAY`) of a living room with more than
-    `MAX_LIVING_NEIGHBOURS` neighbours onto its hallways, adding a hallway if it has none;
-    with `stairs` (a home of several storeys) a storey without a hallway keeps a door free for
-    the staircase room `_finish` hangs on its living room."""
+    `MAX_LIVING_NEIGHBOURS` neighbours onto its hallways, adding a hallway if it has none. A
+    storey without a hallway keeps a door free for each thing `_finish` hangs on its living
+    room: the staircase room with `stairs` (a home of several storeys), the front door with
+    `entrance` (the ground floor)."""
     for p in _of_type(g, LIVING_ROOM):
         movable = [c for c in sorted(g.neighbors(p))
                    if parent.get(c) == p and g.nodes[c]["type"] in OFF_HALLWAY]
-        excess = g.degree(p) - MAX_LIVING_NEIGHBOURS + (stairs and not _of_type(g, HALLWAY))
+        reserve = 0 if _of_type(g, HALLWAY) else int(stairs) + int(entrance)
+        excess = g.degree(p) - MAX_LIVING_NEIGHBOURS + reserve
         if excess <= 0 or not movable:
             continue
         halls = [c for c in sorted(g.neighbors(p)) if g.nodes[c]["type"] == HALLWAY]
         if not halls:
             halls = [_hang(rng, g, parent, HALLWAY, [p])]
-            excess = g.degree(p) - MAX_LIVING_NEIGHBOURS  # the stairs will hang on the hallway
+            # the stairs hang on the hallway, and the front door opens into it (`_finish`)
+            excess = g.degree(p) - MAX_LIVING_NEIGHBOURS
         order = rng.permutation(len(movable))
         for c in (movable[k] for k in order[:excess]):
             load = [sum(1 for q in parent.values() if q == h) for h in halls]
@@ -396,8 +400,12 @@ def _finish(rng: np.random.Generator, trees: list[tuple[nx.Graph, dict]]) -> Hom
             hosts = _of_type(g, HALLWAY) or _of_type(g, LIVING_ROOM)[:1]
             stair_nodes.append(_hang(rng, g, par, STAIRCASE_ROOM, hosts))
         if k == 0:
+            # the front door opens into a hallway, or into the living room (never its fourth
+            # door, `MAX_LIVING_NEIGHBOURS`)
             halls = [h for h in _of_type(g, HALLWAY) if h not in stair_nodes]
-            entrance = halls[int(rng.integers(len(halls)))] if halls and rng.random() < 0.6 else 0
+            busy = g.degree(0) >= MAX_LIVING_NEIGHBOURS
+            entrance = halls[int(rng.integers(len(halls)))] \
+                if halls and (rng.random() < 0.6 or busy) else 0
     counters: dict[str, int] = {}
     storeys, names = [], []
     for k, (g, _) in enumerate(trees):
@@ -463,8 +471,8 @@ def sample_home_graph(rng_for: Callable[[int], np.random.Generator], n_storeys: 
             last = ["cannot attach the requested rooms"]
             continue
         if HALLWAY not in counts:
-            for g, par in trees:
-                _relieve_living_rooms(rng, g, par, n_storeys > 1)
+            for k, (g, par) in enumerate(trees):
+                _relieve_living_rooms(rng, g, par, n_storeys > 1, k == 0)
         if not counts and any(g.number_of_nodes() > MAX_ROOMS_PER_STOREY - (n_storeys > 1)
                               or max(d for _, d in g.degree) > MAX_DEGREE for g, _ in trees):
             continue
