@@ -13,7 +13,7 @@ STEPS = {"large": 40, "medium": 30, "small": 30}
 
 @pytest.mark.slow
 def test_two_workers_give_the_scene_one_gives():
-    scenes = [generate_home(5, HomeConfig(rooms=SMALL_HOME, area=55.0, steps=STEPS,
+    scenes = [generate_home(5, HomeConfig(rooms=SMALL_HOME, area=60.0, steps=STEPS,
                                           preset="fast", workers=k))
               for k in (1, 2)]
     one, two = (g.scene for g in scenes)
