@@ -256,15 +256,25 @@ def stair_circulation(st: StairSpec) -> sg.Polygon:
 def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarray]]:
     """The sides of a flight's stairwell on its upper storey that need a guard rail: all but
     the head (where one steps off) and those lying on the staircase room's outline, where its
-    wall already guards the drop."""
+    wall already guards the drop; a side running up to a wall ends at the wall's face."""
     p = np.asarray(st.polygon, float)  # bl, br, tr, tl
     sides = [(p[0], p[1]), (p[1], p[2]), (p[3], p[0])]
     upper = next((s for s in fp.storeys if s.level == st.to_level), None)
     _, b = fp.stair_rooms(st)
     if upper is None or b is None:
         return sides
-    edge = upper.room(b).shape().exterior
-    return [(a, c) for a, c in sides if edge.distance(sg.Point((a + c) / 2)) > 1e-3]
+    shape = upper.room(b).shape()
+    # a rail that runs up to the outline stops at the wall's face (the thicker, outside one)
+    inner = shape.buffer(-WallThickness().exterior / 2, join_style="mitre")
+    out = []
+    for a, c in sides:
+        if shape.exterior.distance(sg.Point((a + c) / 2)) <= 1e-3:
+            continue
+        kept = sg.LineString([a, c]).intersection(inner)
+        if isinstance(kept, sg.LineString) and kept.length > RAIL_THICKNESS:
+            u, v = np.asarray(kept.coords, float)[[0, -1]]
+            out.append((u, v))
+    return out
 
 
 def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
