@@ -72,3 +72,18 @@ def test_zero_area_faces_never_survive():
     piece = sound_piece(trimesh.Trimesh(v, f, process=False))
     assert piece is not None and piece.area_faces.min() > 0
     assert np.isclose(piece.volume, cube.volume)
+
+
+def test_a_many_sided_hull_is_cut_to_the_engines_vertex_cap_keeping_its_base():
+    from indoorgen.export.convex import vertex_limited
+    vase = trimesh.creation.cylinder(radius=0.05, height=0.34, sections=96)
+    vase.apply_translation([0, 0, 0.17])
+    piece = vertex_limited(vase, 64)
+    assert len(piece.vertices) <= 64 and _is_convex(piece)
+    assert np.isclose(piece.volume, vase.volume, rtol=0.03)
+    # it still stands on its whole base, not on a point
+    base = piece.vertices[np.abs(piece.vertices[:, 2]) < 1e-4]
+    assert np.ptp(base[:, 0]) > 0.09 and np.ptp(base[:, 1]) > 0.09
+    assert piece.bounds[0, 2] > -1e-4 and piece.bounds[1, 2] < 0.34 + 1e-4
+    small = trimesh.creation.box([1, 1, 1])
+    assert vertex_limited(small, 64) is small

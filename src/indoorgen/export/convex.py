@@ -23,12 +23,17 @@ import numpy as np
 import shapely
 import shapely.geometry as sg
 import trimesh
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 from shapely.ops import unary_union
 
 log = logging.getLogger(__name__)
 
 #: heights closer than this are one level (m)
 LEVEL_TOL = 1e-3
+#: cut points closer than this are one point (m)
+WELD = 1e-6
 #: thinnest band kept (m)
 MIN_BAND = 1e-3
 #: grid the cross-sections are snapped to (m): far finer than any architectural feature
@@ -90,6 +95,24 @@ def box_bounds(piece: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray] | None:
     if np.any(size <= 0) or abs(abs(piece.volume) - np.prod(size)) > 1e-9 + 1e-6 * np.prod(size):
         return None
     return (lo + hi) / 2, size
+
+
+def vertex_limited(piece: trimesh.Trimesh, limit: int) -> trimesh.Trimesh:
+    """`piece` as a convex hull of at most `limit` of its vertices: itself when it has no more,
+    else the hull of its extreme points along each axis and, one at a time, the vertex farthest
+    from those chosen (farthest-point sampling keeps points all round the base a thing stands
+    on). Engines that cap a hull's vertices themselves may cut its base off: Newton's cap turned
+    a vase's hull into one starting 7 cm up, and the vase fell that far."""
+    v = np.unique(np.asarray(piece.vertices, float), axis=0)
+    if len(v) <= limit:
+        return piece
+    chosen = list(dict.fromkeys(np.concatenate([v.argmin(axis=0), v.argmax(axis=0)]).tolist()))
+    gap = np.min(np.linalg.norm(v[:, None] - v[chosen][None], axis=2), axis=1)
+    while len(chosen) < limit:
+        i = int(gap.argmax())
+        chosen.append(i)
+        gap = np.minimum(gap, np.linalg.norm(v - v[i], axis=1))
+    return sound_piece(trimesh.convex.convex_hull(v[chosen])) or piece
 
 
 def sound_pieces(pieces: list[trimesh.Trimesh]) -> list[trimesh.Trimesh]:
@@ -164,7 +187,7 @@ def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
     segs = trimesh.intersections.mesh_plane(mesh, [0.0, 0.0, 1.0], [0.0, 0.0, z])
     if len(segs) == 0:
         return sg.Polygon()
-    segs = np.round(np.asarray(segs)[:, :, :2], 7)
+    segs = _weld(np.asarray(segs)[:, :, :2])
     segs = segs[np.abs(segs[:, 0] - segs[:, 1]).max(axis=1) > 0]
     faces = list(shapely.polygonize(shapely.linestrings(segs)).geoms)
     if not faces:
@@ -177,6 +200,19 @@ def _section(mesh: trimesh.Trimesh, z: float) -> sg.base.BaseGeometry:
         if depth % 2 == 0:
             keep.append(f)
     return shapely.set_precision(unary_union(keep), GRID)
+
+
+def _weld(segs: np.ndarray) -> np.ndarray:
+    """Segments (N, 2, 2) with endpoints closer than `WELD` made one point, so that the cut
+    rings close: endpoints interpolated on either side of a rounding boundary would otherwise
+    leave a ring open and its face out of the section."""
+    pts = segs.reshape(-1, 2)
+    pairs = cKDTree(pts).query_pairs(WELD, output_type="ndarray")
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])) if len(pairs) else
+                       ([], ([], [])), shape=(len(pts), len(pts)))
+    _, label = connected_components(graph, directed=False)
+    _, first = np.unique(label, return_index=True)   # each point's group's first point
+    return pts[first[label]].reshape(segs.shape)
 
 
 def _ring_points(geom, z: float) -> np.ndarray:

@@ -37,6 +37,10 @@ HINGE_DAMPING, SLIDE_DAMPING = 0.5, 10.0
 #: the sag a gravity-loaded joint's spring allows under the child's full weight: a hinge's
 #: (degrees) and a slide's (m)
 HOLD_ANGLE, HOLD_SLIDE = 1.0, 0.005
+#: the least share of its weight a joint's spring holds, as a catch does: a door on an upright
+#: hinge or a level drawer feels gravity once its furniture leans (a cabinet settling 3 mm on
+#: a 2-storey home's floor tipped 0.1 degrees, and both glass doors swung open 2 cm in a second)
+CATCH_TILT = 0.05
 
 
 class _ObjectMeshes:
@@ -229,12 +233,14 @@ def _joint_drive(j: Joint, child: Inertial) -> dict[str, float]:
     """SI stiffness and damping of a furniture joint's drive: damping on every joint (a drawer
     or door stays where it is pushed), and, where gravity turns or slides the child (a lamp's
     arm, an oven door's bottom hinge), a spring to its rest pose that holds it there within
-    HOLD_ANGLE (HOLD_SLIDE) against its full weight, critically damped."""
+    HOLD_ANGLE (HOLD_SLIDE) against its full weight, critically damped; every joint's spring
+    holds at least CATCH_TILT of that weight."""
     axis = np.asarray(j.axis, float) / np.linalg.norm(j.axis)
-    tilt = math.sqrt(max(0.0, 1.0 - axis[2] ** 2))  # share of gravity the joint feels
+    # share of gravity the joint feels
+    tilt = max(math.sqrt(max(0.0, 1.0 - axis[2] ** 2)), CATCH_TILT)
     weight = child.mass * GRAVITY
     if j.kind == "prismatic":
-        load, inertia, hold = weight * abs(axis[2]), child.mass, HOLD_SLIDE
+        load, inertia, hold = weight * max(abs(axis[2]), CATCH_TILT), child.mass, HOLD_SLIDE
         damping = SLIDE_DAMPING
     else:
         lever = child.com - np.asarray(j.origin, float)

@@ -13,7 +13,7 @@ import trimesh
 from pxr import Gf, Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
 
 from indoorgen.errors import OutputError
-from indoorgen.export.convex import box_bounds
+from indoorgen.export.convex import box_bounds, vertex_limited
 from indoorgen.export.physics import Inertial, matrix_to_quat
 
 ATTR_GENERATOR = "indoorgen:generator"
@@ -32,6 +32,9 @@ SEMANTICS_TAXONOMY = "class"
 #: another a candidate (9,240 contacts in a living room at rest, 90% of a step's time); 5 mm is
 #: three 600 Hz steps of a 2 m/s fall
 CONTACT_GAP = 0.005
+#: the most vertices a collision hull is written with: PhysX's and Newton's default
+#: `hullVertexLimit`, past which they reduce a hull themselves, and not always well
+HULL_VERTEX_LIMIT = 64
 
 
 def new_stage(kilograms_per_unit: float | None = None) -> Usd.Stage:
@@ -162,10 +165,11 @@ def define_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh,
 def define_collision_piece(stage: Usd.Stage, path: Sdf.Path, piece: trimesh.Trimesh) -> Usd.Prim:
     """A convex collision piece at `path` (purpose guide, CollisionAPI): a box-shaped piece as
     a UsdGeom.Cube scaled to its size (engines collide it as a box primitive: fewer, cheaper
-    contacts than a hull), any other as a mesh with the convexHull approximation."""
+    contacts than a hull), any other as a mesh with the convexHull approximation, of at most
+    `HULL_VERTEX_LIMIT` vertices."""
     box = box_bounds(piece)
     if box is None:
-        geom: UsdGeom.Gprim = define_mesh(stage, path, piece)
+        geom: UsdGeom.Gprim = define_mesh(stage, path, vertex_limited(piece, HULL_VERTEX_LIMIT))
         prim = geom.GetPrim()
         UsdPhysics.MeshCollisionAPI.Apply(prim).CreateApproximationAttr(
             UsdPhysics.Tokens.convexHull)
