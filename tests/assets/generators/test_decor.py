@@ -186,3 +186,15 @@ def test_decor_tray_is_low_and_wide_with_a_well():
     assert a.extents[0] == pytest.approx(p["tray_length"], abs=TOL)
     (well,) = a.surfaces_of(Subpart.Interior)
     assert surface_gap(a, well) < TOL and well.origin[2] == pytest.approx(p["base_thickness"])
+
+
+@pytest.mark.parametrize("shape", ["bulb", "cylinder", "bottle", "cone", "amphora"])
+def test_a_tall_narrow_vase_stands_on_a_foot_wide_enough_to_keep_it_up(shape):
+    from indoorgen.assets.generators.decor.vases import STABLE_FOOT
+    # the tallest, narrowest vase on the narrowest foot the ranges allow
+    _, p, a = make("vase", 0, shape=shape, height=0.5, max_radius=0.05, foot_frac=0.5)
+    base = a.mesh.vertices[a.mesh.vertices[:, 2] < 1e-6]
+    foot = np.hypot(base[:, 0], base[:, 1]).max()
+    assert foot >= STABLE_FOOT * p["height"] - 1e-3
+    # leaning this far (about 13 degrees), its centre of mass still stands over the foot
+    assert np.degrees(np.arctan2(foot, a.mesh.center_mass[2])) > 12.0

@@ -15,11 +15,17 @@ from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 
 VASE_SHAPES = ("bulb", "cylinder", "bottle", "cone", "amphora")
+#: the least foot radius per metre of height: a tall vase on a narrow foot stands at its
+#: balance's edge (a 0.34 m cylinder on a 2.6 cm foot tipped over in Newton within a second);
+#: at this ratio it leans some 13 degrees before its centre, about mid-height, passes the foot
+STABLE_FOOT = 0.12
 
 
 def vase_radius(p: dict[str, Any], t: float) -> float:
     """Outer radius of the vase at fraction t of its height (0 = base, 1 = rim)."""
-    R, foot, neck, belly = p["max_radius"], p["foot_frac"], p["neck_frac"], p["belly_frac"]
+    least = STABLE_FOOT * p["height"]          # the foot a vase this tall needs
+    R, neck, belly = max(p["max_radius"], least), p["neck_frac"], p["belly_frac"]
+    foot = max(p["foot_frac"], least / R)
     shape = p["shape"]
 
     def smooth(a: float, b: float, u: float) -> float:  # a to b along a half cosine, u in [0, 1]
@@ -53,9 +59,11 @@ class Vase(PartsFactory):
     solid_bottom = True
     params = {
         "height": Param(0.15, 0.5, doc="Z extent (m)"),
-        "max_radius": Param(0.05, 0.15, doc="widest outer radius (m)"),
+        "max_radius": Param(0.05, 0.15, doc="widest outer radius (m; at least STABLE_FOOT x "
+                                             "height)"),
         "shape": Param(kind="choice", choices=VASE_SHAPES, doc="profile family"),
-        "foot_frac": Param(0.5, 0.9, doc="base radius / max radius"),
+        "foot_frac": Param(0.5, 0.9, doc="base radius / max radius (at least STABLE_FOOT x "
+                                         "height, so that a tall vase stands)"),
         "neck_frac": Param(0.3, 0.9, doc="neck radius / max radius"),
         "belly_frac": Param(0.25, 0.6, doc="height of the widest point / height"),
         "wall_thickness": Param(0.003, 0.008, doc="wall thickness (m)"),
