@@ -5,8 +5,9 @@
 For each number of storeys, generates homes for seeds 0..N-1 and prints the median and 90th
 percentile seconds (wall and CPU) of the floorplan stage (graph -> annealing -> openings) and of
 solidification, the median for one-storey homes of 6-9 rooms, how many homes break a rule of
-`floorplan.check` (should be 0), and the objective and each of its twelve terms (weighted)
-before and after annealing, averaged over the seeds.
+`floorplan.check` (should be 0), how many fell back to minimum room widths, per room type the
+rooms' areas and doors, and the objective and each of its twelve terms (weighted) before and
+after annealing, averaged over the seeds.
 """
 from __future__ import annotations
 
@@ -22,6 +23,7 @@ from indoorgen.architecture.solidify import solidify
 from indoorgen.floorplan.check import floorplan_problems
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.floorplan.solve import FloorplanAnnealConfig
+from indoorgen.model.floorplan import Floorplan
 from indoorgen.programs.floorplan import floorplan as default_program
 
 
@@ -40,10 +42,36 @@ def one(job: tuple[int, int, int | None]) -> dict:
     w2, c2 = time.perf_counter(), time.process_time()
     stats = fp.info["stats"]
     return {"seed": seed, "rooms": [len(s.rooms) for s in fp.storeys],
+            "fallback": not fp.info.get("planned_widths", True), "room_doors": room_doors(fp),
             "wall": w1 - w0, "cpu": c1 - c0, "solid_wall": w2 - w1, "solid_cpu": c2 - c1,
             "problems": floorplan_problems(fp, fp.info["contours"]),
             "start": stats.start.scores, "end": stats.end.scores,
             "loss": (stats.start.loss, stats.end.loss), "timings": fp.info["timings_s"]}
+
+
+def room_doors(fp: Floorplan) -> list[tuple[str, float, int]]:
+    """(type, area m^2, doors and open connections, the front door counted) of every room."""
+    out = []
+    for s in fp.storeys:
+        for r in s.rooms:
+            doors = sum(r.name in d.rooms for d in s.doors + s.openings)
+            doors += int(fp.entrance is not None and fp.entrance.room == r.name)
+            out.append((r.type, r.shape().area, doors))
+    return out
+
+
+def print_rooms(ok: list[dict]) -> None:
+    """Per room type: how many, their median and smallest area, and how many have 3+ doors."""
+    by_type: dict[str, list[tuple[float, int]]] = {}
+    for r in ok:
+        for t, area, doors in r["room_doors"]:
+            by_type.setdefault(t, []).append((area, doors))
+    print(f"  {'room type':16s} {'rooms':>5s} {'median m^2':>10s} {'min m^2':>8s} "
+          f"{'3+ doors':>8s} {'median doors':>12s}")
+    for t, rows in sorted(by_type.items()):
+        areas, doors = [a for a, _ in rows], [d for _, d in rows]
+        print(f"  {t:16s} {len(rows):5d} {statistics.median(areas):10.1f} {min(areas):8.1f} "
+              f"{sum(d >= 3 for d in doors):8d} {statistics.median(doors):12.1f}")
 
 
 def main() -> None:
@@ -86,7 +114,9 @@ def main() -> None:
                       f"{statistics.median([r['wall'] for r in mid]):.3f} s wall, "
                       f"{statistics.median([r['cpu'] for r in mid]):.3f} s CPU")
         print(f"  rooms per storey: mean {np.mean([np.mean(r['rooms']) for r in ok]):.1f}")
-        print(f"  homes breaking a rule: {len(bad)}   generation errors: {len(errors)}")
+        print(f"  homes breaking a rule: {len(bad)}   generation errors: {len(errors)}   "
+              f"on minimum widths: {sum(r['fallback'] for r in ok)}")
+        print_rooms(ok)
         for r in bad[:5]:
             print(f"    seed {r['seed']}: {r['problems'][:3]}")
         for r in errors[:5]:

@@ -32,6 +32,13 @@ def test_the_apartment_is_sound():
     (lambda d: d["storeys"][0]["doors"].pop(2), "bedroom_1 cannot be reached"),
     (lambda d: d.update(entrance=None), "no entrance"),
     (lambda d: d["storeys"][0]["rooms"][3].update(type="closet"), "the home has no bathroom"),
+    # a third door into the 2.5 x 3 m bedroom: three doors need 10 m^2 (least_area)
+    (lambda d: d["storeys"][0]["doors"].extend([
+        {"name": "d3", "rooms": ["bathroom_0", "bedroom_1"], "center": [7.5, 6.5], "width": 0.8,
+         "height": 2.05},
+        {"name": "d4", "rooms": ["kitchen_0", "bedroom_1"], "center": [9.2, 5.0], "width": 0.9,
+         "height": 2.05}]),
+     "bedroom_1 (7.5 m^2) is smaller than 10.0 m^2 for 3 doors"),
 ])
 def test_broken_plans_are_reported(mutate, needle):
     assert any(needle in p for p in floorplan_problems(_plan(mutate))), needle

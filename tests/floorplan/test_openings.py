@@ -3,9 +3,16 @@ follow the room-type table."""
 from __future__ import annotations
 
 import numpy as np
+import shapely.geometry as sg
 
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
-from indoorgen.floorplan.openings import DOOR_HEIGHT, END_DOOR_TYPES, END_MARGIN, door_width
+from indoorgen.floorplan.openings import (
+    DOOR_HEIGHT,
+    END_DOOR_TYPES,
+    END_MARGIN,
+    MAX_OPENING,
+    door_width,
+)
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.solve import FloorplanAnnealConfig
 from indoorgen.model.room_types import ROOM_TYPES
@@ -55,3 +62,25 @@ def test_kitchen_and_bathroom_doors_stand_near_a_corner():
                     by_own += gaps[0] <= END_MARGIN + 0.25
                     assert min(gaps) <= END_MARGIN + 0.25, (seed, d.name, gaps)
     assert doors >= 8 and by_own >= 0.8 * doors, (by_own, doors)
+
+
+def test_an_open_connection_leaves_wall_either_side_when_its_wall_is_long():
+    """An opening between a living and a dining room (or dining room and kitchen) is at most
+    MAX_OPENING wide and centred in the wall the two rooms share: a long wall keeps a stretch
+    either side for furniture."""
+    walls = 0
+    for seed in range(12):
+        fp = generate_floorplan(seed, FloorplanConfig(anneal=FloorplanAnnealConfig(
+            steps_per_storey=20)))
+        for s in fp.storeys:
+            for o in s.openings:
+                a, b = (s.room(r).shape() for r in o.rooms)
+                shared = a.boundary.intersection(b.boundary)
+                assert o.width <= MAX_OPENING + 1e-9
+                assert shared.distance(sg.Point(o.center)) < 1e-6
+                if shared.length > MAX_OPENING + 1.0:
+                    walls += 1
+                    ends = [sg.Point(o.center).distance(sg.Point(e))
+                            for g in getattr(shared, "geoms", [shared]) for e in g.coords]
+                    assert min(ends) >= o.width / 2 + 0.5 - 1e-6, (seed, o.name)
+    assert walls >= 1

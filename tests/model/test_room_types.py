@@ -105,3 +105,12 @@ def test_unknown_types_raise_naming_the_valid_ones():
         room_type("office", floorplan=True)
     assert str(e.value) == ("unknown room type 'office'; valid: " + ", ".join(OLD_FLOORPLAN_TYPES))
     assert room_type("Bath", floorplan=True).name == "bathroom"
+
+
+def test_a_furnished_room_needs_more_floor_for_each_door_past_its_second():
+    from indoorgen.model.room_types import BASE_DOORS, DOOR_AREA, ROOM_TYPES, least_area
+    bedroom = ROOM_TYPES["bedroom"].min_area
+    assert least_area("bedroom", 1) == least_area("bedroom", BASE_DOORS) == bedroom
+    assert least_area("bedroom", BASE_DOORS + 2) == bedroom + 2 * DOOR_AREA
+    # a closet or hallway is passed through, not furnished: its minimum stands
+    assert least_area("hallway", 5) == ROOM_TYPES["hallway"].min_area

@@ -29,6 +29,7 @@ from indoorgen.model.room_types import (
     KITCHEN,
     LIVING_ROOM,
     STAIRCASE_ROOM,
+    least_area,
 )
 
 MIN_DOOR_WIDTH = 0.8
@@ -101,6 +102,13 @@ def floorplan_problems(fp: Floorplan, contours: list[sg.Polygon] | None = None,
             if gap > 1e-4:
                 out.append(f"rooms on storey {s.level} differ from its outline by {gap:.4f} m^2")
         for r, p in zip(s.rooms, shapes, strict=False):
+            doors = sum(r.name in d.rooms for d in s.doors + s.openings) + int(
+                fp.entrance is not None and fp.entrance.room == r.name)
+            # a plan of a home's last tries, on minimum widths, keeps only its types' minimum
+            least = least_area(r.type, doors if fp.info.get("planned_widths", True) else 0)
+            if p.area < least - 1e-9:
+                out.append(f"{r.name} ({p.area:.1f} m^2) is smaller than {least} m^2 for "
+                           f"{doors} doors")
             width = min_width(r.type)
             if narrow_area(p, width) > 0.01:
                 out.append(f"{r.name} is narrower than {width} m somewhere "

@@ -41,6 +41,10 @@ END_MARGIN = 0.15
 END_DOOR_TYPES = frozenset({KITCHEN, BATHROOM})
 #: Pairs of types joined by an open connection (no wall) rather than a door, when chosen.
 OPEN_PAIRS = frozenset({frozenset({LIVING_ROOM, DINING_ROOM}), frozenset({DINING_ROOM, KITCHEN})})
+#: The widest open connection (m), centred in its shared wall: the wall either side of it stays
+#: for furniture (a 3.4 x 5.9 m living room opened along its whole west wall had no wall left
+#: for a bookcase)
+MAX_OPENING = 3.0
 #: A garage's vehicle door (m): a single-car up-and-over or sectional door.
 VEHICLE_DOOR_WIDTH = 2.4
 VEHICLE_DOOR_HEIGHT = 2.1
@@ -106,7 +110,7 @@ def place_doors(plan: GridPlan, rng: np.random.Generator, wall: float, open_prob
                         for e in (p, q)]
                 mid = p + (ends[0] + (length - ends[1])) / 2 * u
                 ok.append(DoorSpec(f"opening_{a}_{b}", (a, b), _pt(mid),
-                                   round(length - sum(ends), 3), height))
+                                   round(min(length - sum(ends), MAX_OPENING), 3), height))
                 continue
             w = door_width(inner)
             lo = wall / 2 + END_MARGIN + w / 2

@@ -24,17 +24,17 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
     """The rules room `o` breaks (empty if none): a simple polygon, a door-wide wall with each
     graph neighbour, an outside wall where its type (or the front door) needs one, at least
     `planned_width` wide (`min_width` in a plan of a home's last tries) with no narrower neck
-    between its parts, at least its type's
-    minimum area, a balcony on the storey's edge, and the staircase room holding the whole
-    staircase placeholder with a door-wide wall clear of its flights and stairwells for each
-    graph neighbour."""
+    between its parts, at least its least area (`GridPlan.min_area`: more for more doors), a
+    balcony on the storey's edge, and the staircase room holding the whole staircase
+    placeholder with a door-wide wall clear of its flights and stairwells for each graph
+    neighbour."""
     t = room_type_of(o)
     if plan.outline_points(o) is None:
         return [f"{o} is not a simple polygon"]
     spec = ROOM_TYPES[t]
     out = []
-    if plan.area(o) < spec.min_area - 1e-9:
-        out.append(f"{o} is smaller than {spec.min_area} m^2")
+    if plan.area(o) < plan.min_area(o) - 1e-9:
+        out.append(f"{o} is smaller than {plan.min_area(o)} m^2")
     if t == STAIRCASE_ROOM and plan.stair_coverage(o) < 0.999:
         out.append(f"{o} does not hold the stairs")
     if t == STAIRCASE_ROOM and plan.stair_missing_doors(o):

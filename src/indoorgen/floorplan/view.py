@@ -21,7 +21,7 @@ from indoorgen.floorplan.grid import OUTSIDE, Grid, opening, room_polygon, squar
 from indoorgen.floorplan.rooms import room_type_of
 from indoorgen.floorplan.stairs import flight_mask, flights
 from indoorgen.model.polygons import polygon_pieces
-from indoorgen.model.room_types import ROOM_TYPES
+from indoorgen.model.room_types import ROOM_TYPES, least_area
 
 _TURN = math.radians(20.0)
 
@@ -173,8 +173,12 @@ class GridPlan(RoomView):
         return ROOM_TYPES[room_type_of(o)].typical_area
 
     def min_area(self, o: str) -> float:
-        """Smallest area o's type may have (m^2, from the room-type table)."""
-        return ROOM_TYPES[room_type_of(o)].min_area
+        """Smallest area o may have (m^2): `least_area` for its type and doors, or in a plan of
+        a home's last tries (on minimum widths) its type's minimum."""
+        if not self.planned_widths:
+            return ROOM_TYPES[room_type_of(o)].min_area
+        doors = len(self.neighbours(o)) + int(o == self.graph.entrance)
+        return least_area(room_type_of(o), doors)
 
     def ideal_area(self, o: str) -> float:
         """o's share of its storey's area (m^2, `ideal_areas`)."""

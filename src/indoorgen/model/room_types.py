@@ -129,6 +129,18 @@ ROOM_TYPES: dict[str, RoomTypeSpec] = {s.name: s for s in _SPECS}
 #: The types floorplans place, in table order.
 FLOORPLAN_TYPES: tuple[str, ...] = tuple(s.name for s in _SPECS if s.in_floorplans)
 _ALIASES: dict[str, str] = {a: s.name for s in _SPECS for a in s.aliases}
+#: the floor (m^2) a furnished room needs for each door past BASE_DOORS: the door's swing and
+#: the way to it, which furniture keeps clear (a 3 x 3 m bedroom with three doors and a window
+#: held no bed); a type's `min_area` allows for BASE_DOORS doors
+DOOR_AREA, BASE_DOORS = 3.0, 2
+
+
+def least_area(type_name: str, doors: int) -> float:
+    """The smallest area (m^2) a room of `type_name` with `doors` doors and open connections
+    (the front door counts) may have: its type's `min_area`, and in a room one furnishes
+    DOOR_AREA more for each door past BASE_DOORS."""
+    spec = ROOM_TYPES[type_name]
+    return spec.min_area + (DOOR_AREA * max(0, doors - BASE_DOORS) if spec.functional else 0.0)
 
 
 def room_type(name: str, *, floorplan: bool = False) -> RoomTypeSpec:
