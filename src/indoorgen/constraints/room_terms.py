@@ -51,14 +51,16 @@ MIN_BALCONY_EXTERIOR_SHARE = 0.3
 MIN_BALCONY_FRONT = 2.0
 #: Narrowest a garage may be (m): a car and room to open its door (issue 11 saw a 14 x 2 m one).
 MIN_GARAGE_WIDTH = 3.0
-#: Narrowest a generated plan makes a room of these types (m, by type name): a bedroom fits a
-#: bed with a walkway beside it, a living room a sofa facing a TV across a coffee table, a dining
-#: room a table with chairs pulled out, a kitchen a counter with room to work at it, a bathroom
-#: a bath across its end (issue 11 saw a 1.5 x 14 m bedroom). Whole 0.5 m planning cells.
 #: rooms one passes through or keeps things in: a storey with area to spare gives it to the
 #: rooms one lives in, not to these (`ideal_areas`; a 24 m^2 bathroom beside a 14 m^2 bedroom,
 #: an 11 m^2 closet and a 47.5 m^2 staircase room were what plain typical-area shares made)
 SERVICE_ROOMS = frozenset({"bathroom", "closet", "utility", "staircase_room"})
+#: Narrowest a generated plan makes a room of these types (m, by type name, on wall centre
+#: lines): a bedroom fits a bed with a walkway beside it, a living room a sofa facing a TV across
+#: a coffee table, a dining room a table with chairs pulled out, a kitchen a counter with room
+#: to work at it, a bathroom a bath across its end (issue 11 saw a 1.5 x 14 m bedroom). Whole
+#: 0.5 m planning cells. Living rooms 3.5 m wide made 2- and 3-storey plans squeeze kitchens
+#: and bedrooms instead (2 of the first 3 2-storey homes failed on them).
 PLANNED_WIDTHS = {"bedroom": 2.5, "living_room": 3.0, "dining_room": 3.0, "kitchen": 2.0,
                   "bathroom": 1.5}
 #: Turns sharper than this (degrees) count as corners (a round bevel's chords do not).
