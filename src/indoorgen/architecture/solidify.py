@@ -253,10 +253,12 @@ def stair_circulation(st: StairSpec) -> sg.Polygon:
                                                              (a0, b1))])
 
 
-def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarray]]:
+def rail_sides(st: StairSpec, fp: Floorplan, walls: WallThickness | None = None
+               ) -> list[tuple[np.ndarray, np.ndarray]]:
     """The sides of a flight's stairwell on its upper storey that need a guard rail: all but
     the head (where one steps off) and those lying on the staircase room's outline, where its
-    wall already guards the drop; a side running up to a wall ends at the wall's face."""
+    wall already guards the drop; a side running up to a wall ends at the wall's face (the
+    thicker, outside one of `walls`)."""
     p = np.asarray(st.polygon, float)  # bl, br, tr, tl
     sides = [(p[0], p[1]), (p[1], p[2]), (p[3], p[0])]
     upper = next((s for s in fp.storeys if s.level == st.to_level), None)
@@ -264,8 +266,7 @@ def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarra
     if upper is None or b is None:
         return sides
     shape = upper.room(b).shape()
-    # a rail that runs up to the outline stops at the wall's face (the thicker, outside one)
-    inner = shape.buffer(-WallThickness().exterior / 2, join_style="mitre")
+    inner = shape.buffer(-(walls or WallThickness()).exterior / 2, join_style="mitre")
     out = []
     for a, c in sides:
         if shape.exterior.distance(sg.Point((a + c) / 2)) <= 1e-3:
@@ -277,10 +278,10 @@ def rail_sides(st: StairSpec, fp: Floorplan) -> list[tuple[np.ndarray, np.ndarra
     return out
 
 
-def _rail_element(st: StairSpec, fp: Floorplan) -> Element | None:
+def _rail_element(st: StairSpec, fp: Floorplan, walls: WallThickness) -> Element | None:
     """Guard rails round the floor opening of a flight on the upper storey (`rail_sides`)."""
     upper = next((s for s in fp.storeys if s.level == st.to_level), None)
-    sides = rail_sides(st, fp)
+    sides = rail_sides(st, fp, walls)
     if upper is None or not sides:
         return None
     e = upper.elevation
@@ -344,15 +345,16 @@ def solidify(fp: Floorplan, walls: WallThickness | None = None, pitch: float | N
     rooms: dict[str, HomeRoomGeometry] = {}
     elements: list[Element] = []
     for st in fp.stairs:
-        elements += _stair_elements(st, fp, pitch, seed)
+        elements += _stair_elements(st, fp, pitch, seed, t)
     for storey in fp.storeys:
         rooms.update(_solidify_storey(fp, storey, t, depth, elements, seed, doors))
     return Architecture(fp, rooms, elements, t)
 
 
-def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
-                    ) -> list[Element]:
-    """The flight (catalogue staircase or a simple solid) and the rails round its opening."""
+def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None,
+                    walls: WallThickness) -> list[Element]:
+    """The flight (catalogue staircase or a simple solid) and the rails round its opening,
+    ending at the faces of `walls`."""
     lower = next(s for s in fp.storeys if s.level == st.from_level)
     upper = next((s for s in fp.storeys if s.level == st.to_level), None)
     a, b = fp.stair_rooms(st)
@@ -362,7 +364,7 @@ def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
            if fx is not None else _stair_element(st, fp, pitch)]
     if upper is None:
         return out
-    sides = rail_sides(st, fp)
+    sides = rail_sides(st, fp, walls)
     rails = [] if seed is None else [
         fixtures.railing(seed, f"rail_{st.from_level}_{st.to_level}_{i}", u, v,
                          upper.elevation) for i, (u, v) in enumerate(sides)]
@@ -371,7 +373,7 @@ def _stair_elements(st: StairSpec, fp: Floorplan, pitch: float, seed: int | None
                            st.to_level, ["railing", "architecture"])
                 for i, r in enumerate(rails)]
     else:
-        rail = _rail_element(st, fp)
+        rail = _rail_element(st, fp, walls)
         if rail is not None:
             out.append(rail)
     return out

@@ -33,8 +33,9 @@ def room_problems(plan: GridPlan, o: str) -> list[str]:
         return [f"{o} is not a simple polygon"]
     spec = ROOM_TYPES[t]
     out = []
-    if plan.area(o) < plan.min_area(o) - 1e-9:
-        out.append(f"{o} is smaller than {plan.min_area(o)} m^2")
+    least = plan.min_area(o)
+    if plan.area(o) < least - 1e-9:
+        out.append(f"{o} is smaller than {least} m^2")
     if t == STAIRCASE_ROOM and plan.stair_coverage(o) < 0.999:
         out.append(f"{o} does not hold the stairs")
     if t == STAIRCASE_ROOM and plan.stair_missing_doors(o):
