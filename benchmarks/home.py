@@ -6,7 +6,8 @@
 Generates 1-storey homes for seeds seed0..seed0+homes1-1 and 2-storey homes for
 seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: the failure rate
 (homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
-commonest reasons are listed below the table, then each failed room's type, area and size),
+commonest reasons are listed below the table, then each failed room's type, area and size), the
+homes furnished on a later floorplan after their first failed (and why each plan was given up),
 seconds per home (median, p90), rooms and objects
 per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
 (reachable share of walkable floor, and of all free floor: median and minimum, per storey too;
@@ -42,6 +43,7 @@ def one(seed: int, floors: int, preset: str, workers: int = 1) -> dict:
     return {"seed": seed, "seconds": t1 - t0, "rooms": len(gen.scene.rooms),
             "objects": len(gen.scene.objects), "report": rep, "navigability": nav,
             "reasons": gen.report["status"]["reasons"],
+            "replanned": gen.report.get("replanned", []),
             "failed_rooms": _failed_rooms(gen.report["status"]["reasons"], gen.scene.rooms),
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
 
@@ -77,6 +79,7 @@ def _progress(floors: int, r: dict) -> str:
             f"reachable {rep['reachable_share']:.3f} ({rep['reachable_share_of_free']:.3f} of "
             f"free floor), {len(rep['unreachable_rooms'])} rooms and "
             f"{len(rep['unreachable_doors'])} doors cut off, "
+            f"{len(r['replanned'])} plans given up, "
             f"{'failed: ' + '; '.join(r['failed_rooms'] or r['reasons']) if r['reasons'] else 'ok'}")
 
 
@@ -121,6 +124,8 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
     of_free = [r["report"]["reachable_share_of_free"] for r in ok]
     nav_s = [r["nav_s_per_storey"] for r in ok]
     rows += [
+        ("homes on a later plan (plans given up)",
+         f"{sum(1 for r in ok if r['replanned'])} ({sum(len(r['replanned']) for r in ok)})"),
         ("seconds per home: median / p90", f"{statistics.median(secs):.1f} / {_p90(secs):.1f}"),
         ("rooms per home: median", f"{statistics.median(r['rooms'] for r in ok):g}"),
         ("objects per home: median", f"{statistics.median(r['objects'] for r in ok):g}"),
@@ -172,6 +177,10 @@ def main() -> None:
                     print(f"  {floors}-storey seed {r['seed']} failed: "
                           + "; ".join(r["reasons"][:4])
                           + (f" (+{len(r['reasons']) - 4})" if len(r["reasons"]) > 4 else ""))
+            for r in runs:
+                for given_up in r.get("replanned", []):
+                    print(f"  {floors}-storey seed {r['seed']}: plan {given_up['plan']} given up: "
+                          + "; ".join(given_up["reasons"][:3]))
             for kind, count in failure_kinds(runs).most_common():
                 print(f"  {floors}-storey homes failed by {kind}: {count}")
             for r in runs:

@@ -8,7 +8,7 @@ prints: per rule, its instances and pass rate (and, for hard rules, how many sce
 per room type (homes' rooms included), the median objects per room and the median share of a
 room's most common generator, and how many rooms end with a violated hard constraint of their
 program (circulation included); the community measures (median and p90 over scenes); and the
-report's time per scene.
+report's time per scene. `--misses` also prints every failed instance as its scene finishes.
 """
 from __future__ import annotations
 
@@ -30,9 +30,9 @@ def scenes(seeds: int, homes: int, types: tuple[str, ...] = ROOM_TYPES):
     """(label, Generated) for every room and home benchmarked."""
     for rt in types:
         for seed in range(seeds):
-            yield rt, generate(seed, GenerateConfig(room_type=rt))
+            yield f"{rt} seed {seed}", generate(seed, GenerateConfig(room_type=rt))
     for seed in range(homes):
-        yield "home", generate_home(seed, HomeConfig())
+        yield f"home seed {seed}", generate_home(seed, HomeConfig())
 
 
 def room_stats(g: Generated, per_type: dict[str, list[tuple[int, float, bool]]]) -> None:
@@ -47,6 +47,14 @@ def room_stats(g: Generated, per_type: dict[str, list[tuple[int, float, bool]]])
             per_type[room.room_type].append((len(objs), top / len(objs), violated))
 
 
+def misses(label: str, rep: dict) -> list[str]:
+    """One line per failed instance of a scene's quality report (`rules`' instances list
+    failed ones first): the scene, the rule, its room and objects and what it measured."""
+    return [f"  {label}: {name} in {c['room']}: {', '.join(c['objects'])}: value {c['value']}, "
+            f"limit {c['limit']}{', ' + str(c['detail']) if 'detail' in c else ''}"
+            for name, r in sorted(rep["rules"].items()) for c in r["instances"] if not c["ok"]]
+
+
 def main() -> None:
     """Run the benchmark and print its tables."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -54,6 +62,8 @@ def main() -> None:
     ap.add_argument("--homes", type=int, default=5, help="one-storey homes")
     ap.add_argument("--types", default=",".join(ROOM_TYPES),
                     help="comma-separated room types to generate single rooms of")
+    ap.add_argument("--misses", action="store_true",
+                    help="print every failed instance as its scene finishes")
     a = ap.parse_args()
     types = tuple(t for t in a.types.split(",") if t)
     checked: Counter[str] = Counter()
@@ -63,10 +73,13 @@ def main() -> None:
     measures: dict[str, list[float]] = defaultdict(list)
     per_type: dict[str, list[tuple[int, float, bool]]] = defaultdict(list)
     times, n, n_passed = [], 0, 0
-    for _, g in scenes(a.seeds, a.homes, types):
+    for label, g in scenes(a.seeds, a.homes, types):
         t0 = time.perf_counter()
         rep = quality_report(g.scene, g.rooms, g.cache, g.architecture)
         times.append(time.perf_counter() - t0)
+        if a.misses:
+            for line in misses(label, rep):
+                print(line, flush=True)
         n += 1
         n_passed += rep["passed"]
         for name, r in rep["rules"].items():

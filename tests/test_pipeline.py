@@ -1,14 +1,22 @@
 """`pipeline`'s presets: each names its annealing steps and fullness range, a bad name is a
-one-line error naming the valid ones, and every scene draws its fullness from its own seed."""
+one-line error naming the valid ones, and every scene draws its fullness from its own seed;
+a generated home whose plan fails is furnished on the seed's next plan."""
 from __future__ import annotations
+
+from types import SimpleNamespace
 
 import pytest
 
-from indoorgen import GenerateConfig, generate
+from indoorgen import GenerateConfig, generate, pipeline
 from indoorgen.constraints import Problem, scene
 from indoorgen.errors import ConfigError, UnknownPresetError
+from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.pipeline import PRESETS, HomeConfig, generate_home, get_preset, scene_fullness
 from indoorgen.programs.relations import on_floor
+
+#: a small home (its plan is quick to draw)
+SMALL_HOME = "bedroom=1,bathroom=1,kitchen=1"
 
 
 def test_presets_trade_time_for_density():
@@ -69,3 +77,58 @@ def test_a_custom_programs_fault_while_solving_is_named_with_it():
     with pytest.raises(ConfigError, match="program 'my_room' failed while solving: parameter "
                                           "width=-3.0 is invalid"):
         generate(0, GenerateConfig(program=my_room, steps={"large": 5, "medium": 0, "small": 0}))
+
+
+def _fake_furnishing(monkeypatch, fails):
+    """Replace the furnishing of a home by a record of the plans it was given: a plan `fails`
+    (called with its redraw number) says is failed is reported failed."""
+    furnished = []
+
+    def furnished_home(seed, cfg, plan, preset, style, progress):
+        redraw = plan.info.get("redraws", -1)  # -1: a predefined plan
+        furnished.append(redraw)
+        reasons = [f"room kitchen_0: hard constraint a fridge violated (1) on plan "
+                   f"{redraw}"] if fails(redraw) else []
+        return SimpleNamespace(report={"status": {"failed": bool(reasons), "reasons": reasons},
+                                       "timings_s": {}})
+    monkeypatch.setattr(pipeline, "_furnished_home", furnished_home)
+    return furnished
+
+
+def test_a_home_whose_first_plan_fails_is_furnished_on_the_seeds_next_plan(monkeypatch):
+    furnished = _fake_furnishing(monkeypatch, lambda redraw: redraw == 0)
+    gen = generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
+    assert furnished[0] == 0 and furnished[1] >= 1 and len(furnished) == 2
+    assert not gen.report["status"]["failed"]
+    assert gen.report["replanned"] == [{"plan": 0, "reasons": [
+        "room kitchen_0: hard constraint a fridge violated (1) on plan 0"]}]
+    # the same seed gives way to the same next plan
+    again = _fake_furnishing(monkeypatch, lambda redraw: redraw == 0)
+    generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
+    assert again == furnished
+
+
+def test_a_home_failing_on_every_plan_is_reported_failed_after_home_plans(monkeypatch):
+    furnished = _fake_furnishing(monkeypatch, lambda redraw: True)
+    gen = generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
+    assert len(furnished) == pipeline.HOME_PLANS == len(set(furnished))
+    assert gen.report["status"]["failed"]
+    assert [r["plan"] for r in gen.report["replanned"]] == furnished[:-1]
+
+
+def test_a_predefined_floorplan_is_never_replaced(monkeypatch, tmp_path):
+    plan = generate_floorplan(3, FloorplanConfig(rooms=SMALL_HOME, area=60.0))
+    furnished = _fake_furnishing(monkeypatch, lambda redraw: True)
+    gen = generate_home(3, HomeConfig(floorplan=floorplan_json(plan)))
+    assert len(furnished) == 1 and gen.report["status"]["failed"]
+    assert gen.report["replanned"] == []
+
+
+def test_a_seeds_later_plans_differ_from_its_first():
+    cfg = FloorplanConfig(rooms=SMALL_HOME, area=60.0)
+    first = generate_floorplan(3, cfg)
+    later = generate_floorplan(3, cfg, first_redraw=first.info["redraws"] + 1)
+    assert later.info["redraws"] > first.info["redraws"]
+    assert floorplan_json(later) != floorplan_json(first)
+    assert floorplan_json(generate_floorplan(3, cfg, first_redraw=later.info["redraws"])) \
+        == floorplan_json(later)

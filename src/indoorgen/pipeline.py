@@ -29,6 +29,7 @@ from indoorgen.errors import ConfigError, IndoorGenError, InvalidGeometryError, 
 from indoorgen.export import write_formats
 from indoorgen.export.bundle import bundle_from_generated
 from indoorgen.floorplan.generate import WALL_RANGE, FloorplanConfig, generate_floorplan
+from indoorgen.model.floorplan import Floorplan
 from indoorgen.model.floorplan_io import check_predefined, from_json
 from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.model.polygons import validate_polygon
@@ -52,6 +53,11 @@ from indoorgen.solver.state import State
 from indoorgen.solver.workers import solve_rooms
 
 log = logging.getLogger(__name__)
+
+#: the most generated floorplans a home tries: a plan whose furnished home fails a hard
+#: requirement gives way to the seed's next plan (a 1.3 m-wide bathroom with no room for a
+#: shower, a kitchen whose doors leave no wall for the fridge's run), as rejection sampling does
+HOME_PLANS = 3
 
 
 @dataclass(frozen=True)
@@ -260,7 +266,10 @@ class HomeConfig:
 def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: bool = False
                   ) -> Generated:
     """Generate a furnished home from `seed`: floorplan, solid architecture, then each room
-    furnished by its program. Same seed + config + version => same scene."""
+    furnished by its program. A generated floorplan whose furnished home fails a hard
+    requirement is replaced by the seed's next plan, up to HOME_PLANS plans; the home is
+    reported failed only if every one fails (report.json's `replanned` lists the plans given up
+    and why). Same seed + config + version => same scene."""
     cfg = config or HomeConfig()
     check_door_mode(cfg.doors)
     style = home_style(seed, cfg.style)
@@ -268,12 +277,37 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
         raise ConfigError(f"workers must be a positive integer, got {cfg.workers!r}")
     preset = get_preset(cfg.preset)
     t0 = time.perf_counter()
-    if cfg.floorplan is not None:
+    replanned: list[dict] = []
+    if cfg.floorplan is not None:  # the user's own plan: furnished as it is
         plan = from_json(cfg.floorplan)
         check_predefined(plan)
+        gen = _furnished_home(seed, cfg, plan, preset, style, progress)
     else:
-        plan = generate_floorplan(seed, FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms,
-                                                        area=cfg.area, contour=cfg.contour))
+        plan_cfg = FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms, area=cfg.area,
+                                   contour=cfg.contour)
+        plan = generate_floorplan(seed, plan_cfg)
+        for attempt in range(HOME_PLANS):
+            gen = _furnished_home(seed, cfg, plan, preset, style, progress)
+            if not gen.report["status"]["failed"] or attempt == HOME_PLANS - 1:
+                break
+            try:
+                nxt = generate_floorplan(seed, plan_cfg, first_redraw=plan.info["redraws"] + 1)
+            except InvalidGeometryError:
+                break  # the seed has no further plan: the failed home is reported as it is
+            log.info("home %d: plan %d failed (%s); furnishing plan %d", seed,
+                     plan.info["redraws"], gen.report["status"]["reasons"][0],
+                     nxt.info["redraws"])
+            replanned.append({"plan": plan.info["redraws"],
+                              "reasons": gen.report["status"]["reasons"]})
+            plan = nxt
+    gen.report["replanned"] = replanned
+    gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
+    return gen
+
+
+def _furnished_home(seed: int, cfg: HomeConfig, plan: Floorplan, preset: Preset, style: str,
+                    progress: bool) -> Generated:
+    """`plan` built, every room furnished by its program, and the home assessed."""
     t1 = time.perf_counter()
     # seeded: doors, windows and stairs from the catalogue, door leaves as cfg.doors says
     arch = solidify(plan, seed=seed, doors=cfg.doors)
@@ -281,7 +315,8 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     fullness = scene_fullness(seed, preset)
     problems = {name: _home_problem(g.room.room_type, fullness, name)
                 for name, g in geometry.items() if g.room.room_type in ROOM_PROGRAMS}
-    timings = {"floorplan": t1 - t0, "architecture": time.perf_counter() - t1}
+    timings = {"floorplan": plan.info.get("timings_s", {}).get("total", 0.0),
+               "architecture": time.perf_counter() - t1}
     gen = _furnish(seed, geometry, problems, {**cfg.to_json(), "style": style}, timings,
                    steps=stage_steps(preset, cfg.steps), check=cfg.check,
                    progress=progress, workers=cfg.workers,
@@ -292,7 +327,6 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     gen.scene.doors = arch.door_states
     gen.architecture = arch
     _assess(gen)
-    gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
     gen.report["floorplan"] = {k: v for k, v in plan.info.items() if k in ("anneal", "timings_s")}
     return gen
 

@@ -145,7 +145,7 @@ def run_generate(args: argparse.Namespace) -> int:
               f"constraints violated, {rep['timings_s']['total']:.2f} s")
         print(f"{out}: layout quality {_quality_line(rep['quality'])}")
         print(f"{out}: navigation {_navigation_line(rep['navigation'])}")
-        print(f"{out}: status {_status_line(rep['status'])}")
+        print(f"{out}: status {_status_line(rep['status'], rep.get('replanned', []))}")
     return 0
 
 
@@ -195,13 +195,16 @@ def _navigation_line(nav: dict[str, Any]) -> str:
     return line
 
 
-def _status_line(status: dict[str, Any]) -> str:
-    """One line for the scene's status: ok, or failed with its first reason and a count."""
+def _status_line(status: dict[str, Any], replanned: list[dict[str, Any]]) -> str:
+    """One line for the scene's status: ok, or failed with its first reason and a count; and
+    how many of the seed's floorplans were given up first."""
     reasons = status["reasons"]
+    given_up = (f" (on the seed's floorplan {len(replanned) + 1}: {len(replanned)} before it "
+                f"failed; see report.json's replanned)" if replanned else "")
     if not status["failed"]:
-        return "ok: every hard requirement met"
+        return f"ok: every hard requirement met{given_up}"
     more = f" (+{len(reasons) - 1} more; see report.json)" if len(reasons) > 1 else ""
-    return f"FAILED: {reasons[0]}{more}"
+    return f"FAILED: {reasons[0]}{more}{given_up}"
 
 
 def _room_config(args: argparse.Namespace) -> GenerateConfig:
