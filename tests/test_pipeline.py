@@ -14,6 +14,7 @@ from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.pipeline import PRESETS, HomeConfig, generate_home, get_preset, scene_fullness
 from indoorgen.programs.relations import on_floor
+from indoorgen.solver.stages import RoomSolution, RoomUnmet
 
 #: a small home (its plan is quick to draw)
 SMALL_HOME = "bedroom=1,bathroom=1,kitchen=1"
@@ -79,14 +80,17 @@ def test_a_custom_programs_fault_while_solving_is_named_with_it():
         generate(0, GenerateConfig(program=my_room, steps={"large": 5, "medium": 0, "small": 0}))
 
 
-def _fake_furnishing(monkeypatch, fails):
-    """Replace the furnishing of a home by a record of the plans it was given: a plan `fails`
-    (called with its redraw number) says is failed is reported failed."""
+def _fake_furnishing(monkeypatch, fails, *, mid_solve=False):
+    """Replace the furnishing of a home by a record of the plans it was given (and whether it
+    could give up): a plan `fails` (called with its redraw number) says is failed is reported
+    failed, or with `mid_solve` given up (RoomUnmet) where the furnishing may give up."""
     furnished = []
 
-    def furnished_home(seed, cfg, plan, preset, style, progress):
+    def furnished_home(seed, cfg, plan, preset, style, progress, give_up=False):
         redraw = plan.info.get("redraws", -1)  # -1: a predefined plan
-        furnished.append(redraw)
+        furnished.append((redraw, give_up))
+        if fails(redraw) and mid_solve and give_up:
+            raise RoomUnmet(RoomSolution("kitchen_0", [], [], {}, {"a fridge": 1.0}))
         reasons = [f"room kitchen_0: hard constraint a fridge violated (1) on plan "
                    f"{redraw}"] if fails(redraw) else []
         return SimpleNamespace(report={"status": {"failed": bool(reasons), "reasons": reasons},
@@ -98,7 +102,8 @@ def _fake_furnishing(monkeypatch, fails):
 def test_a_home_whose_first_plan_fails_is_furnished_on_the_seeds_next_plan(monkeypatch):
     furnished = _fake_furnishing(monkeypatch, lambda redraw: redraw == 0)
     gen = generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
-    assert furnished[0] == 0 and furnished[1] >= 1 and len(furnished) == 2
+    assert [f[0] for f in furnished][:1] == [0] and furnished[1][0] >= 1 and len(furnished) == 2
+    assert all(give_up for _, give_up in furnished)  # neither is the last plan
     assert not gen.report["status"]["failed"]
     assert gen.report["replanned"] == [{"plan": 0, "reasons": [
         "room kitchen_0: hard constraint a fridge violated (1) on plan 0"]}]
@@ -109,18 +114,23 @@ def test_a_home_whose_first_plan_fails_is_furnished_on_the_seeds_next_plan(monke
 
 
 def test_a_home_failing_on_every_plan_is_reported_failed_after_home_plans(monkeypatch):
-    furnished = _fake_furnishing(monkeypatch, lambda redraw: True)
+    furnished = _fake_furnishing(monkeypatch, lambda redraw: True, mid_solve=True)
     gen = generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
-    assert len(furnished) == pipeline.HOME_PLANS == len(set(furnished))
+    plans = [redraw for redraw, _ in furnished]
+    assert len(plans) == pipeline.HOME_PLANS == len(set(plans))
+    # the plans before the last were given up mid-solve; the last is furnished whole, failed
+    assert [give_up for _, give_up in furnished] == [True] * (pipeline.HOME_PLANS - 1) + [False]
     assert gen.report["status"]["failed"]
-    assert [r["plan"] for r in gen.report["replanned"]] == furnished[:-1]
+    assert gen.report["replanned"] == [
+        {"plan": p, "reasons": ["room kitchen_0: hard constraint a fridge violated (1)"]}
+        for p in plans[:-1]]
 
 
 def test_a_predefined_floorplan_is_never_replaced(monkeypatch, tmp_path):
     plan = generate_floorplan(3, FloorplanConfig(rooms=SMALL_HOME, area=60.0))
     furnished = _fake_furnishing(monkeypatch, lambda redraw: True)
     gen = generate_home(3, HomeConfig(floorplan=floorplan_json(plan)))
-    assert len(furnished) == 1 and gen.report["status"]["failed"]
+    assert furnished == [(-1, False)] and gen.report["status"]["failed"]
     assert gen.report["replanned"] == []
 
 

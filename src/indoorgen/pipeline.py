@@ -48,7 +48,14 @@ from indoorgen.solver.anneal import AnnealConfig
 from indoorgen.solver.circulation import circulation_report
 from indoorgen.solver.full_mesh import full_mesh_check
 from indoorgen.solver.placement import planar
-from indoorgen.solver.stages import STAGES, evaluators_for, merge, solve
+from indoorgen.solver.stages import (
+    STAGES,
+    RoomUnmet,
+    evaluators_for,
+    first_unmet,
+    merge,
+    solve,
+)
 from indoorgen.solver.state import State
 from indoorgen.solver.workers import solve_rooms
 
@@ -278,6 +285,7 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
     preset = get_preset(cfg.preset)
     t0 = time.perf_counter()
     replanned: list[dict] = []
+    gen: Generated | None = None
     if cfg.floorplan is not None:  # the user's own plan: furnished as it is
         plan = from_json(cfg.floorplan)
         check_predefined(plan)
@@ -286,28 +294,37 @@ def generate_home(seed: int = 0, config: HomeConfig | None = None, *, progress: 
         plan_cfg = FloorplanConfig(floors=cfg.floors, rooms=cfg.rooms, area=cfg.area,
                                    contour=cfg.contour)
         plan = generate_floorplan(seed, plan_cfg)
-        for attempt in range(HOME_PLANS):
-            gen = _furnished_home(seed, cfg, plan, preset, style, progress)
-            if not gen.report["status"]["failed"] or attempt == HOME_PLANS - 1:
-                break
+        for attempt in range(1, HOME_PLANS + 1):
+            # a room left unmet dooms the plan: the rooms after it are not solved, unless this
+            # is the last plan, whose failed home is reported whole
+            try:
+                gen = _furnished_home(seed, cfg, plan, preset, style, progress,
+                                      give_up=attempt < HOME_PLANS)
+                if not gen.report["status"]["failed"] or attempt == HOME_PLANS:
+                    break
+                reasons = gen.report["status"]["reasons"]
+            except RoomUnmet as e:
+                gen, reasons = None, e.reasons()
             try:
                 nxt = generate_floorplan(seed, plan_cfg, first_redraw=plan.info["redraws"] + 1)
-            except InvalidGeometryError:
-                break  # the seed has no further plan: the failed home is reported as it is
+            except InvalidGeometryError:  # the seed has no further plan: report this one whole
+                if gen is None:
+                    gen = _furnished_home(seed, cfg, plan, preset, style, progress)
+                break
             log.info("home %d: plan %d failed (%s); furnishing plan %d", seed,
-                     plan.info["redraws"], gen.report["status"]["reasons"][0],
-                     nxt.info["redraws"])
-            replanned.append({"plan": plan.info["redraws"],
-                              "reasons": gen.report["status"]["reasons"]})
+                     plan.info["redraws"], reasons[0], nxt.info["redraws"])
+            replanned.append({"plan": plan.info["redraws"], "reasons": reasons})
             plan = nxt
+    assert gen is not None
     gen.report["replanned"] = replanned
     gen.report["timings_s"]["total"] = round(time.perf_counter() - t0, 4)
     return gen
 
 
 def _furnished_home(seed: int, cfg: HomeConfig, plan: Floorplan, preset: Preset, style: str,
-                    progress: bool) -> Generated:
-    """`plan` built, every room furnished by its program, and the home assessed."""
+                    progress: bool, *, give_up: bool = False) -> Generated:
+    """`plan` built, every room furnished by its program, and the home assessed; with
+    `give_up`, RoomUnmet as soon as a room is left with a hard constraint unmet."""
     t1 = time.perf_counter()
     # seeded: doors, windows and stairs from the catalogue, door leaves as cfg.doors says
     arch = solidify(plan, seed=seed, doors=cfg.doors)
@@ -321,7 +338,7 @@ def _furnished_home(seed: int, cfg: HomeConfig, plan: Floorplan, preset: Preset,
                    steps=stage_steps(preset, cfg.steps), check=cfg.check,
                    progress=progress, workers=cfg.workers,
                    make_problem=functools.partial(_room_problem, _room_types(geometry),
-                                                  fullness))
+                                                  fullness), give_up=give_up)
     gen.report["fullness"] = fullness
     gen.scene.floorplan = floorplan_json(plan)
     gen.scene.doors = arch.door_states
@@ -368,10 +385,12 @@ def _problem(program: Callable[..., Problem], room: str) -> Problem:
 
 def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, Problem],
              config: dict, timings: dict[str, float], *, steps, check: bool, progress: bool,
-             workers: int = 1, make_problem: Callable[[str], Problem] | None = None
-             ) -> Generated:
+             workers: int = 1, make_problem: Callable[[str], Problem] | None = None,
+             give_up: bool = False) -> Generated:
     """Solve every room's problem (in `workers` processes if `make_problem` rebuilds each
-    room's problem there), re-check with full meshes and package the Scene."""
+    room's problem there), re-check with full meshes and package the Scene. With `give_up`,
+    RoomUnmet for the first room (in name order) left with a hard constraint unmet, however
+    many workers solve them."""
     cache = AssetCache()
     state = State(geometry, cache)
     t1 = time.perf_counter()
@@ -380,13 +399,16 @@ def _furnish(seed: int, geometry: dict[str, RoomGeometry], problems: dict[str, P
         solutions, full = solve_rooms(geometry, make_problem, sorted(problems), seed,
                                       workers=min(workers, len(problems)), config=anneal,
                                       steps=steps, progress=progress)
+        unmet = first_unmet(solutions)
+        if give_up and unmet is not None:
+            raise RoomUnmet(unmet)
         for generator, params, asset in full:
             cache.adopt_full(generator, params, asset)
         stats = merge(state, solutions)
         evaluators = evaluators_for(state, problems, check=check)
     else:
         stats, evaluators = solve(state, problems, seed, config=anneal, steps=steps,
-                                  progress=progress)
+                                  progress=progress, give_up=give_up)
     timings["solve"] = time.perf_counter() - t1
 
     t2 = time.perf_counter()

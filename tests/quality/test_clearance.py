@@ -2,6 +2,8 @@
 and a toilet's side and front clearances."""
 from __future__ import annotations
 
+import numpy as np
+
 from indoorgen.model.scene import RelationInstance
 from indoorgen.quality.clearance import front_clearance, joint_sweep, toilet_clearance
 from support.qualityscene import FACE_DOWN, FACE_UP, context, new_scene, put, size
@@ -70,3 +72,31 @@ def test_a_chair_pulled_up_to_the_furniture_is_pushed_back_not_in_its_way():
     pulled_up = RelationInstance("Touching(front,front,0)", "dresser_0", "front", "front")
     sc.objects[chair].relations.append(pulled_up)
     assert all(c.ok for c in joint_sweep(context(sc)))
+
+
+def test_an_objects_footprint_in_a_height_band_is_only_what_rises_into_it():
+    # a bed: only its headboard (at its back, local -X) rises past a 0.9 m window sill
+    sc = new_scene("bedroom")
+    put(sc, "bed", 2.0, 2.0, FACE_UP)
+    bed = context(sc).placed["bed_0"]
+    whole, high = bed.footprint_between(bed.bottom, bed.top), bed.footprint_between(0.9, 2.0)
+    assert abs(whole.area - bed.footprint.area) < 0.02 * bed.footprint.area
+    assert 0 < high.area < 0.25 * whole.area
+    local = [bed.local_point(np.array(p)) for p in high.exterior.coords]
+    assert max(q[0] for q in local) < bed.lo[0] + 0.25  # at the head end
+    assert bed.footprint_between(bed.top + 0.1, bed.top + 1.0).is_empty
+
+
+def test_a_stool_pulled_up_to_an_island_does_not_block_its_front_but_a_stray_one_does():
+    sc = new_scene("kitchen", 6.0, 6.0)
+    put(sc, "kitchen_island", 3.0, 3.0, FACE_UP)
+    ctx = context(sc)
+    island = ctx.placed["kitchen_island_0"]
+    front = island.world_point((island.hi[0] + 0.2, 0.0))
+    stool = put(sc, "stool", float(front[0]), float(front[1]), FACE_UP)
+    (stray,) = [c for c in front_clearance(context(sc)) if c.objects == ("kitchen_island_0",)]
+    assert not stray.ok and stray.value < 0.2
+    sc.objects[stool].relations.append(
+        RelationInstance("SupportedBy(front,side,-0.04)", "kitchen_island_0", "front", "side"))
+    (pulled,) = [c for c in front_clearance(context(sc)) if c.objects == ("kitchen_island_0",)]
+    assert pulled.ok

@@ -2,6 +2,8 @@
 room; objects are named per generator in creation order; a seed gives the same scene."""
 from __future__ import annotations
 
+import pytest
+
 from indoorgen.architecture.room import build_room, rectangle
 from indoorgen.assets.cache import AssetCache
 from indoorgen.constraints import Problem, scene
@@ -123,3 +125,23 @@ def test_a_stage_left_unmet_starts_the_room_again_and_the_last_solve_runs_every_
     assert solved == [("large", k) for k in range(last)] + [(s, last) for s in STAGES]
     assert [s.stage for s in stats] == list(STAGES)
     assert stats[0].violation > 0
+
+
+def test_giving_up_stops_at_the_first_room_left_unmet_naming_its_constraints():
+    # two dining tables in a 1.6 x 1.6 m room can never stand; the other room is fine
+    rooms = {"a_room": build_room(Room("a_room", "living_room", rectangle(1.6, 1.6))),
+             "b_room": build_room(Room("b_room", "living_room", rectangle(4.0, 3.0)))}
+    r = scene()[S.Room].named("a_room")
+    impossible = Problem(constraints={
+        "two tables": scene().related_to(r, on_floor)[S.DiningTable].count() == 2})
+    problems = {"a_room": impossible, "b_room": _program("b_room")}
+    tiny = {"large": 20, "medium": 5, "small": 5}
+    with pytest.raises(stages.RoomUnmet) as caught:
+        solve(State(rooms, AssetCache()), problems, seed=3, steps=tiny, give_up=True)
+    assert caught.value.solution.room == "a_room"
+    assert [line.split(" violated")[0] for line in caught.value.reasons()] == [
+        "room a_room: hard constraint two tables"]
+    # without giving up every room is solved, and the unmet one recorded as unmet
+    stats, evaluators = solve(State(rooms, AssetCache()), problems, seed=3, steps=tiny)
+    assert {s.room for s in stats} == {"a_room", "b_room"}
+    assert evaluators["a_room"].evaluate().violations["two tables"] > 0

@@ -46,14 +46,15 @@ SWEEP_TOL = 0.005
 @rule("front_clearance")
 def front_clearance(ctx: Context) -> list[Check]:
     """Floor-standing storage and appliances keep 0.6 m free before their fronts (0.9 m for a
-    fridge, range or dishwasher), over their width, to the first wall or object; value: the free
+    fridge, range or dishwasher), over their width, to the first wall or object (a seat pulled
+    up to it aside: one moves it to open the doors, as the solver allows); value: the free
     depth."""
     out = []
     for p in ctx.with_tags(S.Storage, S.Appliance):
         if not on_floor(p.obj) or p.has(S.Box):
             continue
         need = FRONT_CLEAR_WIDE if p.has(*WIDE_FRONTS) else FRONT_CLEAR
-        d = free_depth(ctx, p)
+        d = free_depth(ctx, p, exclude=ctx.pulled_up(p.name))
         out.append(Check(p.obj.room, (p.name,), d, need, d >= need - 1e-6))
     return out
 
@@ -165,8 +166,10 @@ def joint_sweep(ctx: Context) -> list[Check]:
 def windows_keep_out(ctx: Context) -> list[Check]:
     """No floor object taller than 1.0 m and nothing hung on the wall (window dressings aside:
     curtains hang there on purpose, `WINDOW_DRESSINGS`), and no screen wherever it stands
-    (`WINDOW_SCREENS`: glare), is before a window opening, at its height; value: the longest
-    overlap along the window (m). Only for a home (windows come from its architecture)."""
+    (`WINDOW_SCREENS`: glare), is before a window opening, at its height: the solid of such an
+    object between the opening's bottom and top, not its whole footprint (a sink's basin below
+    the sill is not before the window, its tap beside it neither); value: the longest overlap
+    along the window (m). Only for a home (windows come from its architecture)."""
     if ctx.architecture is None:
         return []
     out = []
@@ -182,7 +185,7 @@ def windows_keep_out(ctx: Context) -> list[Check]:
             hung = is_wall_hung(q.obj) and not q.has(*WINDOW_DRESSINGS)
             if not (tall or hung or q.has(*WINDOW_SCREENS)) or q.top <= z0 or q.bottom >= z1:
                 continue
-            inter = q.footprint.intersection(zone)
+            inter = q.footprint_between(z0, z1).intersection(zone)
             if not inter.is_empty and inter.area > 1e-4:
                 b = inter.bounds
                 hits.append((q.name, b[2 + axis] - b[axis]))

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import shapely
 import shapely.affinity as sa
 import shapely.geometry as sg
 
@@ -119,6 +120,20 @@ class Placed:
         u, v = local
         return self.xy + np.array([c * u - s * v, s * u + c * v])
 
+    def footprint_between(self, z0: float, z1: float) -> sg.base.BaseGeometry:
+        """The plan-view (world) extent of the object's solid between world heights `z0` and
+        `z1`: each convex collision piece of its placeholder cut to that band, as the solver's
+        keep-out checks see it (a bed whose headboard alone rises past a sill reaches a window
+        with its headboard only)."""
+        base = float(self.obj.pose.position[2])
+        hulls = []
+        for _, piece in self.asset.collision:
+            part = band_points(np.asarray(piece.vertices, float), np.asarray(piece.faces),
+                               z0 - base, z1 - base)
+            if len(part) >= 3:
+                hulls.append(sg.MultiPoint([tuple(self.world_point(q)) for q in part]).convex_hull)
+        return shapely.union_all(hulls) if hulls else sg.Polygon()
+
     def surface_height(self, subpart: Subpart, name: str | None = None) -> float | None:
         """Highest world z of the asset's horizontal surfaces with role `subpart` (or named
         `name`); None if there is none."""
@@ -164,6 +179,14 @@ class Context:
                 todo.extend(self.children.get(n, ()))
         return out
 
+    def pulled_up(self, name: str) -> set[str]:
+        """Every object of `name`'s room with a relation to `name` besides resting on it: a
+        chair at a desk, a stool at an island (one moves it to open what is behind it, so the
+        solver lets it stand in `name`'s clear space)."""
+        room = self.placed[name].obj.room
+        return {q.name for q in self.in_room(room)
+                if q.name != name and any(r.parent == name for r in q.obj.relations)}
+
     def walls_outside(self, room: str) -> sg.Polygon:
         """The plan region just outside `room`'s outline (a 10 m frame): where its walls stand."""
         poly = self.outlines[room]
@@ -182,6 +205,22 @@ def is_wall_hung(obj: SceneObject) -> bool:
     """Whether `obj` hangs from a wall of its room (its first relation's parent surface)."""
     return bool(obj.relations) and obj.relations[0].parent == obj.room \
         and obj.relations[0].parent_surface.startswith("wall_")
+
+
+def band_points(vertices: np.ndarray, faces: np.ndarray, z0: float, z1: float) -> np.ndarray:
+    """The plan points (k, 2) of a convex solid's part between heights z0 and z1: its vertices
+    inside the band and where its edges cross the band's two planes (their hull is the part's
+    plan extent)."""
+    edges = np.unique(np.sort(np.vstack([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]),
+                              axis=1), axis=0)
+    a, b = vertices[edges[:, 0]], vertices[edges[:, 1]]
+    pts = [vertices[(vertices[:, 2] >= z0) & (vertices[:, 2] <= z1)][:, :2]]
+    for z in (z0, z1):
+        da, db = a[:, 2] - z, b[:, 2] - z
+        cross = (da * db < 0)
+        t = da[cross] / (da[cross] - db[cross])
+        pts.append(a[cross][:, :2] + t[:, None] * (b[cross][:, :2] - a[cross][:, :2]))
+    return np.vstack(pts)
 
 
 def on_floor(obj: SceneObject) -> bool:

@@ -124,9 +124,10 @@ def _box(lo: tuple[float, float, float], hi: tuple[float, float, float]) -> np.n
 def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.ndarray]:
     """The clear space an object needs to be used (asset frame, as the corners of a box; from
     its bounding box `bounds` (2, 3)): a toilet's, `TOILET_SIDE` either side of its centreline
-    over its depth and `TOILET_FRONT` before it; before floor-standing (`size_class` "large")
-    storage and appliances `FRONT_CLEAR`, or `FRONT_CLEAR_WIDE` for a fridge, range or
-    dishwasher (boxes, wall-mounted and small things aside)."""
+    over its depth and `TOILET_FRONT` before it; before floor-standing storage and appliances
+    (`size_class` "large", and furniture of "medium" size: a nightstand, not a microwave on a
+    counter) `FRONT_CLEAR`, or `FRONT_CLEAR_WIDE` for a fridge, range or dishwasher (boxes,
+    wall-mounted and small things aside)."""
     lo, hi = np.asarray(bounds, float)
     if Semantics.Toilet in tags:
         cy, side = (lo[1] + hi[1]) / 2, TOILET_SIDE + CLEAR_MARGIN
@@ -134,7 +135,8 @@ def use_zones(tags: frozenset, bounds: np.ndarray, size_class: str) -> list[np.n
                      (hi[0] + TOILET_FRONT + CLEAR_MARGIN, cy + side,  # behind is not beside it
                       lo[2] + OBSTACLE_BAND[1]))]
     fronted = Semantics.Storage in tags or Semantics.Appliance in tags
-    if not fronted or size_class != "large" or any(t in tags for t in UNFRONTED):
+    standing = size_class == "large" or (size_class == "medium" and Semantics.Furniture in tags)
+    if not fronted or not standing or any(t in tags for t in UNFRONTED):
         return []
     wide = any(t in tags for t in WIDE_FRONTS)
     depth = (FRONT_CLEAR_WIDE if wide else FRONT_CLEAR) + CLEAR_MARGIN

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from tqdm import tqdm
 
@@ -58,13 +58,33 @@ def make_namer(counts: dict[str, int] | None = None) -> Callable[[str], str]:
 @dataclass
 class RoomSolution:
     """One room solved on its own: its stages' stats, its objects (names from the room's own
-    namer, no collision pieces: they can cross a process boundary) and how many names its namer
-    gave per generator (deleted objects' names included)."""
+    namer, no collision pieces: they can cross a process boundary), how many names its namer
+    gave per generator (deleted objects' names included) and the hard constraints its solve
+    left unmet (by name: how far)."""
 
     room: str
     stats: list[StageStats]
     objects: list[ObjState]
     named: dict[str, int]
+    unmet: dict[str, float] = field(default_factory=dict)
+
+
+class RoomUnmet(Exception):
+    """A room's solve left hard constraints unmet (`solve(..., give_up=True)` stops there)."""
+
+    def __init__(self, solution: RoomSolution) -> None:
+        super().__init__(f"room {solution.room}: {len(solution.unmet)} hard constraints unmet")
+        self.solution = solution
+
+    def reasons(self) -> list[str]:
+        """One line per unmet constraint, worded as report.json's `status` words them."""
+        return [f"room {self.solution.room}: hard constraint {name} violated ({value:.3g})"
+                for name, value in sorted(self.solution.unmet.items())]
+
+
+def first_unmet(solutions: Iterable[RoomSolution]) -> RoomSolution | None:
+    """The first room (in name order) whose solve left a hard constraint unmet, if any."""
+    return next((s for s in sorted(solutions, key=lambda s: s.room) if s.unmet), None)
 
 
 def solve_room(state: State, room: str, problem: Problem, seed: int, *,
@@ -77,7 +97,7 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
     steps = {**DEFAULT_STEPS, **(steps or {})}
     named: dict[str, int] = {}
     namer = make_namer(named)
-    best: tuple[list[StageStats], list[ObjState]] | None = None
+    best: tuple[list[StageStats], list[ObjState], dict[str, float]] | None = None
     full = 0
     for attempt in range(ROOM_ATTEMPTS):
         last = attempt == ROOM_ATTEMPTS - 1
@@ -101,6 +121,8 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
                                  *((attempt,) if attempt else ())), namer)
         mine = [n for n, ob in state.objects.items() if ob.room == room]
         objects = [_detached(state.objects[n]) for n in mine] if complete else []
+        unmet = {k: v for k, v in ev.evaluate().violations.items() if v > 1e-9} \
+            if complete else {}
         for n in reversed(mine):
             state.remove(n)
         if not complete:
@@ -109,14 +131,14 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
             continue
         if best is None or (stats[-1].violation, stats[-1].loss) < \
                 (best[0][-1].violation, best[0][-1].loss):
-            best = stats, objects
+            best = stats, objects, unmet
         full += 1
         if best[0][-1].violation <= 1e-9 or full == FULL_SOLVES:
             break
         log.info("%s: solved again (attempt %d), violation %.3g", room, attempt + 1,
                  stats[-1].violation)
     assert best is not None
-    return RoomSolution(room, best[0], best[1], named)
+    return RoomSolution(room, best[0], best[1], named, best[2])
 
 
 def _detached(ob: ObjState) -> ObjState:
@@ -159,15 +181,19 @@ def evaluators_for(state: State, problems: dict[str, Problem], *, check: bool = 
 
 def solve(state: State, problems: dict[str, Problem], seed: int, *,
           config: AnnealConfig | None = None, steps: dict[str, int] | None = None,
-          progress: bool = False) -> tuple[list[StageStats], dict[str, Evaluator]]:
+          progress: bool = False, give_up: bool = False
+          ) -> tuple[list[StageStats], dict[str, Evaluator]]:
     """Solve every room's problem, with its circulation constraint added, one room after the
-    other in this process, and put the results into `state`. The evaluators returned evaluate
-    those extended problems."""
+    other in this process (name order), and put the results into `state`. The evaluators
+    returned evaluate those extended problems. With `give_up`, the first room left with a hard
+    constraint unmet raises RoomUnmet (the caller has a better use for the time)."""
     config = config or AnnealConfig()
     solutions = []
     for room in tqdm(sorted(problems), desc="solving", unit="room", disable=not progress,
                      leave=False):
         solutions.append(solve_room(state, room, problems[room], seed, config=config,
                                     steps=steps))
+        if give_up and solutions[-1].unmet:
+            raise RoomUnmet(solutions[-1])
     stats = merge(state, solutions)
     return stats, evaluators_for(state, problems, check=config.check)
