@@ -8,6 +8,7 @@ seed0..seed0+homes2-1 (`pipeline.generate_home`) and prints, per storey count: t
 (homes whose report.json `status` is failed, any hard requirement unmet, or that raised; the
 commonest reasons are listed below the table, then each failed room's type, area and size), the
 homes furnished on a later floorplan after their first failed (and why each plan was given up),
+the layout rules' instances held (each rule held under 100% listed with its failed instances),
 seconds per home (median, p90), rooms and objects
 per home, the navigation figures of `quality.navigation` for a 0.25 m agent from the entrance
 (reachable share of walkable floor, and of all free floor: median and minimum, per storey too;
@@ -43,6 +44,8 @@ def one(seed: int, floors: int, preset: str, workers: int = 1) -> dict:
     return {"seed": seed, "seconds": t1 - t0, "rooms": len(gen.scene.rooms),
             "objects": len(gen.scene.objects), "report": rep, "navigability": nav,
             "reasons": gen.report["status"]["reasons"],
+            "rules": {name: (r["checked"], r["passed"], [c for c in r["instances"] if not c["ok"]])
+                      for name, r in gen.report["quality"]["rules"].items()},
             "replanned": gen.report.get("replanned", []),
             "failed_rooms": _failed_rooms(gen.report["status"]["reasons"], gen.scene.rooms),
             "nav_s_per_storey": (t2 - t1) / len(rep["storeys"])}
@@ -83,6 +86,13 @@ def _progress(floors: int, r: dict) -> str:
             f"{'failed: ' + '; '.join(r['failed_rooms'] or r['reasons']) if r['reasons'] else 'ok'}")
 
 
+def _held(ok: list[dict]) -> str:
+    """The layout rules' instances held over the homes, of all checked."""
+    checked = sum(c for r in ok for c, _, _ in r["rules"].values())
+    held = sum(h for r in ok for _, h, _ in r["rules"].values())
+    return f"{held} / {checked} ({held / max(checked, 1):.2%})"
+
+
 def _p90(xs: list[float]) -> float:
     return float(np.percentile(xs, 90))
 
@@ -111,6 +121,23 @@ def failure_kinds(runs: list[dict]) -> Counter[str]:
     return kinds
 
 
+def rule_misses(floors: int, runs: list[dict]) -> list[str]:
+    """The layout rules' instances held over the homes, per rule held under 100%, with each
+    failed instance (home, room, objects, value)."""
+    ok = [r for r in runs if "error" not in r]
+    out = []
+    for name in sorted({n for r in ok for n in r["rules"]}):
+        checked = sum(r["rules"].get(name, (0, 0, []))[0] for r in ok)
+        held = sum(r["rules"].get(name, (0, 0, []))[1] for r in ok)
+        if held < checked:
+            out.append(f"  {floors}-storey rule {name}: {held} of {checked} held "
+                       f"({held / checked:.1%})")
+            out += [f"    seed {r['seed']}: {c['room']}: {', '.join(c['objects'])}: value "
+                    f"{c['value']}, limit {c['limit']}" for r in ok
+                    for c in r["rules"].get(name, (0, 0, []))[2]]
+    return out
+
+
 def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
     """The table's rows for the homes of one storey count."""
     ok = [r for r in runs if "error" not in r]
@@ -126,6 +153,7 @@ def summary(floors: int, runs: list[dict]) -> list[tuple[str, str]]:
     rows += [
         ("homes on a later plan (plans given up)",
          f"{sum(1 for r in ok if r['replanned'])} ({sum(len(r['replanned']) for r in ok)})"),
+        ("layout rule instances held", _held(ok)),
         ("seconds per home: median / p90", f"{statistics.median(secs):.1f} / {_p90(secs):.1f}"),
         ("rooms per home: median", f"{statistics.median(r['rooms'] for r in ok):g}"),
         ("objects per home: median", f"{statistics.median(r['objects'] for r in ok):g}"),
@@ -181,6 +209,8 @@ def main() -> None:
                 for given_up in r.get("replanned", []):
                     print(f"  {floors}-storey seed {r['seed']}: plan {given_up['plan']} given up: "
                           + "; ".join(given_up["reasons"][:3]))
+            for line in rule_misses(floors, runs):
+                print(line)
             for kind, count in failure_kinds(runs).most_common():
                 print(f"  {floors}-storey homes failed by {kind}: {count}")
             for r in runs:
