@@ -46,15 +46,16 @@ SWEEP_TOL = 0.005
 @rule("front_clearance")
 def front_clearance(ctx: Context) -> list[Check]:
     """Floor-standing storage and appliances keep 0.6 m free before their fronts (0.9 m for a
-    fridge, range or dishwasher), over their width, to the first wall or object (a seat pulled
-    up to it aside: one moves it to open the doors, as the solver allows); value: the free
-    depth."""
+    fridge, range or dishwasher), over their width, to the first wall or object (as the solver
+    keeps them: a seat pulled up to it aside, one moves it to open the doors, and a towel rail or
+    hook on the wall beside it, `ACCESSORIES`); value: the free depth."""
     out = []
     for p in ctx.with_tags(S.Storage, S.Appliance):
         if not on_floor(p.obj) or p.has(S.Box):
             continue
         need = FRONT_CLEAR_WIDE if p.has(*WIDE_FRONTS) else FRONT_CLEAR
-        d = free_depth(ctx, p, exclude=ctx.pulled_up(p.name))
+        beside = {q.name for q in ctx.in_room(p.obj.room, *ACCESSORIES)}
+        d = free_depth(ctx, p, exclude=ctx.pulled_up(p.name) | beside)
         out.append(Check(p.obj.room, (p.name,), d, need, d >= need - 1e-6))
     return out
 
