@@ -122,11 +122,12 @@ def test_the_everyday_kit_stands_on_the_run_one_of_each():
         assert b.can_add and any("unit_0" in names for _, names in b.parents), kind
 
 
-@pytest.mark.parametrize("room_y,required", [(3.0, True), (2.4, False), (6.0, False)])
+@pytest.mark.parametrize("room_y,required", [(3.0, True), (2.4, False), (6.0, True),
+                                             (9.5, False)])
 def test_the_triangle_is_required_where_the_floor_allows_it(room_y, required):
-    """A work triangle whose legs fall short violates the program in a compact kitchen (2.8-4.8
-    m each way, where an L always fits it), by less than a missing appliance (so none is
-    dropped to spare a leg); in a narrower or a long one it stays a score."""
+    """A work triangle whose legs fall short violates the program in a kitchen 2.8-9 m each
+    way (where an L or two facing runs fit it), by less than a missing appliance (so none is
+    dropped to spare a leg); in a narrower (a galley) or a longer one it stays a score."""
     view = FakeView()
     view.add_room("r", [(0, 0), (4, 0), (4, room_y), (0, room_y)])
     for name, tag, y in (("sink", S.KitchenSink, 0.5), ("range", S.Range, 1.3)):
