@@ -9,7 +9,7 @@ import pytest
 
 from indoorgen import GenerateConfig, generate, pipeline
 from indoorgen.constraints import Problem, scene
-from indoorgen.errors import ConfigError, UnknownPresetError
+from indoorgen.errors import ConfigError, InvalidGeometryError, UnknownPresetError
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.model.floorplan_io import to_json as floorplan_json
 from indoorgen.pipeline import PRESETS, HomeConfig, generate_home, get_preset, scene_fullness
@@ -142,3 +142,18 @@ def test_a_seeds_later_plans_differ_from_its_first():
     assert floorplan_json(later) != floorplan_json(first)
     assert floorplan_json(generate_floorplan(3, cfg, first_redraw=later.info["redraws"])) \
         == floorplan_json(later)
+
+
+def test_a_seed_with_no_further_plan_reports_its_failed_home_whole(monkeypatch):
+    furnished = _fake_furnishing(monkeypatch, lambda redraw: True, mid_solve=True)
+    real = pipeline.generate_floorplan
+
+    def only_the_first(seed, cfg, *, first_redraw=0):
+        if first_redraw:
+            raise InvalidGeometryError("cannot lay out this seed's home after 4 plans")
+        return real(seed, cfg)
+    monkeypatch.setattr(pipeline, "generate_floorplan", only_the_first)
+    gen = generate_home(3, HomeConfig(rooms=SMALL_HOME, area=60.0))
+    # given up mid-solve, then furnished whole (nothing given up: it is the seed's only plan)
+    assert furnished == [(0, True), (0, False)]
+    assert gen.report["status"]["failed"] and gen.report["replanned"] == []
