@@ -186,6 +186,8 @@ def windows_keep_out(ctx: Context) -> list[Check]:
             hung = is_wall_hung(q.obj) and not q.has(*WINDOW_DRESSINGS)
             if not (tall or hung or q.has(*WINDOW_SCREENS)) or q.top <= z0 or q.bottom >= z1:
                 continue
+            if not q.footprint.intersects(zone):
+                continue
             inter = q.footprint_between(z0, z1).intersection(zone)
             if not inter.is_empty and inter.area > 1e-4:
                 b = inter.bounds

@@ -128,10 +128,12 @@ class Placed:
         base = float(self.obj.pose.position[2])
         hulls = []
         for _, piece in self.asset.collision:
-            part = band_points(np.asarray(piece.vertices, float), np.asarray(piece.faces),
-                               z0 - base, z1 - base)
-            if len(part) >= 3:
-                hulls.append(sg.MultiPoint([tuple(self.world_point(q)) for q in part]).convex_hull)
+            part = piece.slice_plane((0.0, 0.0, z0 - base), (0.0, 0.0, 1.0))
+            if len(part.vertices):
+                part = part.slice_plane((0.0, 0.0, z1 - base), (0.0, 0.0, -1.0))
+            if len(part.vertices) >= 3:
+                hulls.append(sg.MultiPoint([tuple(self.world_point(q))
+                                            for q in part.vertices[:, :2]]).convex_hull)
         return shapely.union_all(hulls) if hulls else sg.Polygon()
 
     def surface_height(self, subpart: Subpart, name: str | None = None) -> float | None:
@@ -205,22 +207,6 @@ def is_wall_hung(obj: SceneObject) -> bool:
     """Whether `obj` hangs from a wall of its room (its first relation's parent surface)."""
     return bool(obj.relations) and obj.relations[0].parent == obj.room \
         and obj.relations[0].parent_surface.startswith("wall_")
-
-
-def band_points(vertices: np.ndarray, faces: np.ndarray, z0: float, z1: float) -> np.ndarray:
-    """The plan points (k, 2) of a convex solid's part between heights z0 and z1: its vertices
-    inside the band and where its edges cross the band's two planes (their hull is the part's
-    plan extent)."""
-    edges = np.unique(np.sort(np.vstack([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]),
-                              axis=1), axis=0)
-    a, b = vertices[edges[:, 0]], vertices[edges[:, 1]]
-    pts = [vertices[(vertices[:, 2] >= z0) & (vertices[:, 2] <= z1)][:, :2]]
-    for z in (z0, z1):
-        da, db = a[:, 2] - z, b[:, 2] - z
-        cross = (da * db < 0)
-        t = da[cross] / (da[cross] - db[cross])
-        pts.append(a[cross][:, :2] + t[:, None] * (b[cross][:, :2] - a[cross][:, :2]))
-    return np.vstack(pts)
 
 
 def on_floor(obj: SceneObject) -> bool:
