@@ -1,13 +1,15 @@
 """Home rooms benchmark: solve only the rooms of one type in a home, to study why they fail.
 
     python benchmarks/home_rooms.py SEED ROOM_TYPE [--floors 1] [--preset default] [--layout]
+                                   [--rules]
 
 Builds the home of `SEED` as `indoorgen generate --seed SEED --floors N` builds it (floorplan,
 architecture, the room's program with the home's fullness), then solves just the rooms of
 `ROOM_TYPE`, each exactly as in the whole home (every room draws its own random streams, so
 the others do not change it). Prints the seconds taken and, per room, its size, the hard
 constraints left unmet and its walkway record; with `--layout`, its polygon, doors and the
-poses and sizes of its large objects. A failed room of `benchmarks/home.py` reproduces here in
+poses and sizes of its large objects; with `--rules`, the layout rules' failed instances (the
+quality report's, over these rooms alone). A failed room of `benchmarks/home.py` reproduces here in
 seconds instead of a whole home's minutes.
 """
 from __future__ import annotations
@@ -19,6 +21,7 @@ import numpy as np
 
 from indoorgen import pipeline
 from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
+from indoorgen.quality.layout import quality_report
 
 
 def main() -> None:
@@ -29,6 +32,7 @@ def main() -> None:
     ap.add_argument("--floors", type=int, default=1)
     ap.add_argument("--preset", default="default", help="fast, default or dense")
     ap.add_argument("--layout", action="store_true", help="print doors and large objects")
+    ap.add_argument("--rules", action="store_true", help="print the layout rules' failed instances")
     args = ap.parse_args()
     plan = generate_floorplan(args.seed, FloorplanConfig(floors=args.floors))
     arch = pipeline.solidify(plan, seed=args.seed, doors="open")
@@ -54,6 +58,13 @@ def main() -> None:
         print(f"{name}: {size[0]:.1f} x {size[1]:.1f} m, {len(poly)} corners, "
               f"{len(room.doors)} doors; unmet: {unmet or 'none'}; "
               f"walkway: {record['circulation']}")
+        if args.rules:
+            rooms = {n: geometry[n] for n in problems}
+            rules = quality_report(gen.scene, rooms, gen.cache, gen.architecture)["rules"]
+            for rule, rec in sorted(rules.items()):
+                for inst in rec["instances"]:
+                    if not inst["ok"] and inst["room"] == name:
+                        print(f"  {rule} failed: {inst}")
         if not args.layout:
             continue
         print("  polygon", np.round(poly, 2).tolist())

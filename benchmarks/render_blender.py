@@ -1,6 +1,6 @@
 """Render a generated scene's USD with Blender, headless on the CPU (a development aid).
 
-    python benchmarks/render_blender.py SCENE_DIR [--out views/] [--size 640] [--samples 24]
+    python benchmarks/render_blender.py SCENE_DIR [--out views/] [--size 640] [--samples 24] [--threads 0]
 
 Run it with a Python that has Blender's `bpy` module from the package registry
 (`pip install bpy`, which needs the Python version its release is built for); indoorgen itself
@@ -69,9 +69,10 @@ def _room_boxes(bpy) -> dict[str, tuple[list[float], list[float]]]:
 
 
 def _hide_ceilings(bpy) -> None:
-    """Hide ceiling pieces from the camera (the views look in from above)."""
+    """Hide the rooms' ceiling slabs from the camera (the views look in from above); ceiling
+    lights stay in view."""
     for ob in bpy.data.objects:
-        if "ceiling" in ob.name.lower() or "ceiling" in str(ob.get("indoorgen:name", "")).lower():
+        if ob.name.lower().endswith("_ceiling") or ob.name.lower() == "ceiling":
             ob.hide_render = True
             ob.hide_set(True)  # out of the sight-line rays too
 
@@ -120,16 +121,33 @@ def _open_length(bpy, eye, target) -> float:
     return (where - Vector(target)).length / span.length if hit else 1.0
 
 
+def _floor_view(bpy, eye, lo, hi) -> float:
+    """The mean open share of the lines from `eye` to nine points low over the room's floor."""
+    # low when the camera stands over a fridge or beside a pendant lamp
+    from mathutils import Vector
+
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    shares = []
+    for fx in (0.2, 0.5, 0.8):
+        for fy in (0.2, 0.5, 0.8):
+            span = Vector((lo[0] + fx * (hi[0] - lo[0]), lo[1] + fy * (hi[1] - lo[1]),
+                           lo[2] + 0.3)) - Vector(eye)
+            hit, where, *_ = bpy.context.scene.ray_cast(depsgraph, Vector(eye), span.normalized(),
+                                                        distance=span.length)
+            shares.append((where - Vector(eye)).length / span.length if hit else 1.0)
+    return sum(shares) / len(shares)
+
+
 def _clear_corner(bpy, lo, hi, target) -> tuple[float, float, float]:
     """The high corner of a room's box from which the camera sees its centre: of the four
-    corners, the one whose sight line is open (not inside a wardrobe or behind a wall), the
-    farthest along it where none is."""
+    corners, the one whose sight line is open (not inside a wardrobe or behind a wall), and
+    among those the one with the most open view of the floor, the farthest along it where none is."""
     height = lo[2] + min(2.3, max(1.2, hi[2] - lo[2] - 0.2))
     corners = [(lo[0] + fx * (hi[0] - lo[0]), lo[1] + fy * (hi[1] - lo[1]), height)
                for fx in (0.15, 0.85) for fy in (0.15, 0.85)]
     # the sight line is probed from above the furniture: the look target may be inside a bed
     probe = (target[0], target[1], lo[2] + 1.3)
-    eye = max(corners, key=lambda e: _open_length(bpy, e, probe))
+    eye = max(corners, key=lambda e: (_open_length(bpy, e, probe), _floor_view(bpy, e, lo, hi)))
     share = _open_length(bpy, eye, probe)
     if share < 1.0:  # every corner's line meets something: stand short of it, on the open part
         eye = tuple(t + (e - t) * max(0.3, 0.85 * share) for e, t in zip(eye, probe, strict=True))
@@ -150,6 +168,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--size", type=int, default=640, help="image width in pixels (height 3/4 of it)")
     ap.add_argument("--samples", type=int, default=24, help="Cycles samples per pixel")
     ap.add_argument("--rooms", default="", help="comma-separated rooms to render (default all)")
+    ap.add_argument("--threads", type=int, default=0,
+                    help="CPU threads Blender renders with (default 0: Blender's automatic count)")
     args = ap.parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     usd = next((args.scene_dir / n for n in ("scene.usdc", "scene.usda", "scene.usd")
@@ -165,6 +185,9 @@ def main(argv: list[str] | None = None) -> int:
     sc = bpy.context.scene
     sc.render.resolution_x, sc.render.resolution_y = args.size, args.size * 3 // 4
     sc.cycles.samples = args.samples
+    if args.threads > 0:
+        sc.render.threads_mode = "FIXED"
+        sc.render.threads = args.threads
     boxes = _room_boxes(bpy)
     wanted = [r for r in args.rooms.split(",") if r] or sorted(boxes)
     done = {}

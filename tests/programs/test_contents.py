@@ -53,7 +53,7 @@ def test_caps_grow_with_fullness_and_keep_room_minimums():
 def test_every_room_program_carries_the_contents(room_type):
     room = scene()[S.Room].named(f"{room_type}_0")
     problem = get_program(room_type, 0.8)(room)
-    extra = contents(room, 0.8)
+    extra = contents(room, 0.8, room_type)
     assert set(extra.constraints) <= set(problem.constraints)
     assert set(extra.score_terms) <= set(problem.score_terms)
     assert get_program(room_type).__name__ == ROOM_PROGRAMS[room_type].__name__
@@ -115,3 +115,33 @@ def test_a_nightstand_of_drawers_only_holds_nothing_inside():
     ev = Evaluator(contents(room, 1.0), view)
     bounds = {b.name: b for b in find_bounds(contents(room, 1.0), ev)}
     assert not any(b.can_add for name, b in bounds.items() if name.startswith("bedside"))
+
+
+def test_a_closet_s_shelves_hold_clothes_and_towels_not_books():
+    """The same bookcase holds books and decor in a living room, and clothes, towels, shoes,
+    boxes and baskets in a closet."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (2, 0), (2, 2), (0, 2)])
+    view.add("bookcase_0", {S.Object, S.Furniture, S.Storage, S.Bookcase},
+             center=(0.2, 1, 0.9), extents=(0.35, 0.8, 1.8), relations=[(on_floor, "r")])
+    room = scene()[S.Room].named("r")
+    for room_type, held, not_held in (("closet", "towels", "books"), ("living_room", "books", "towels")):
+        problem = contents(room, 1.0, room_type)
+        names = {b.name for b in find_bounds(problem, Evaluator(problem, view))}
+        assert f"shelving hold {held}" in names and f"shelving hold {not_held}" not in names
+
+
+def test_a_nightstand_top_holds_a_lamp_and_a_few_things_at_most():
+    """A 0.4 m nightstand top holds at most five things at the usual fullness (it had held
+    nine as a chest: a lamp, four decor, three books and a basket)."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
+    view.add("nightstand_0", {S.Object, S.Furniture, S.Storage, S.Nightstand},
+             center=(1, 1, 0.3), extents=(0.4, 0.5, 0.6), relations=[(on_floor, "r")],
+             generator="nightstand", params={"layout": "two_drawers"})
+    room = scene()[S.Room].named("r")
+    problem = contents(room, 1.0)
+    on_it = [b for b in find_bounds(problem, Evaluator(problem, view))
+             if b.can_add and any(rel == on_top for rel, _ in b.parents)]
+    assert on_it and all(b.name.startswith("nightstand tops") for b in on_it)
+    assert sum(b.hi for b in on_it) <= 5

@@ -1,12 +1,16 @@
-"""Presence and height rules on hand-built rooms: lights, the kitchen sink, counter runs,
+"""Presence and height rules on hand-built rooms: lights and their headroom, the kitchen sink, counter runs,
 accessory heights, wall cabinets and reach."""
 from __future__ import annotations
 
+import numpy as np
+
+from indoorgen.assets import get_factory
 from indoorgen.quality.rules import (
     accessory_heights,
     counter_runs,
     hood_over_range,
     kitchen_has_sink,
+    light_headroom,
     reach,
     room_has_light,
     wall_cabinet_height,
@@ -23,6 +27,22 @@ def test_room_without_light_fails_and_with_one_passes():
 
 def test_balcony_needs_no_light():
     assert room_has_light(context(new_scene("balcony"))) == []
+
+
+def test_a_pendant_leaves_headroom_over_the_floor_and_may_hang_lower_over_a_table():
+    """A pendant whose bottom is 1.3 m up over open floor fails (a person walks into it); the
+    same pendant over a dining table's middle, 0.7 m or more over its top, passes."""
+    params = {**get_factory("pendant_light").sample_params(np.random.default_rng(0)),
+              "drop": 1.0, "shade_height": 0.2}
+    for over_table, bottom, ok in ((False, 1.3, False), (False, 2.05, True), (True, 1.6, True),
+                                   (True, 1.3, False)):
+        sc = new_scene("dining_room")
+        if over_table:
+            put(sc, "dining_table_rect", 3.0, 2.5)
+        put(sc, "pendant_light", 3.0, 2.5, z=bottom, params=params)
+        (c,) = light_headroom(context(sc))
+        assert c.ok == ok and abs(c.value - bottom) < 1e-6, (over_table, bottom)
+        assert c.limit == (min(2.0, size("dining_table_rect")[2] + 0.7) if over_table else 2.0)
 
 
 def test_kitchen_without_sink_fails_the_scene_with_a_named_reason():

@@ -1,7 +1,7 @@
 """Built-in constraint programs: one per room type (`rooms/`), what furniture holds in any room
 (`contents`), the relations they name (`relations`) and the floorplan objective (`floorplan`).
 `get_program(room_type)` gives a room type's program with the contents (and what every room
-asks of its rugs) added."""
+asks of its rugs and its ceiling lights) added."""
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -9,7 +9,7 @@ from collections.abc import Callable
 from indoorgen.constraints import ObjSet, Problem
 from indoorgen.errors import UnknownRoomTypeError
 from indoorgen.programs.contents import DEFAULT_FULLNESS, contents
-from indoorgen.programs.relations import rugs_centred
+from indoorgen.programs.relations import LIGHT_HEADROOM, OVER_TABLE_BOTTOM, lights_clear, rugs_centred
 from indoorgen.programs.rooms.balcony import balcony
 from indoorgen.programs.rooms.bathroom import bathroom
 from indoorgen.programs.rooms.bedroom import bedroom
@@ -23,6 +23,10 @@ from indoorgen.programs.rooms.office import office
 from indoorgen.programs.rooms.staircase_room import staircase_room
 from indoorgen.programs.rooms.utility import utility
 from indoorgen.programs.rooms.warehouse import warehouse
+
+#: where a room's ceiling light may hang lower than LIGHT_HEADROOM: over the dining table (the
+#: dining program hangs it there)
+LIGHT_BOTTOM = {"dining_room": OVER_TABLE_BOTTOM}
 
 #: A room program: the room (a set holding it) -> its constraint program.
 RoomProgram = Callable[[ObjSet], Problem]
@@ -54,7 +58,8 @@ def get_program(room_type: str, fullness: float = DEFAULT_FULLNESS) -> RoomProgr
                                    + ", ".join(sorted(ROOM_PROGRAMS))) from None
 
     def program(room: ObjSet) -> Problem:
-        return furnish(room) + contents(room, fullness) + rugs_centred(room)
+        return (furnish(room) + contents(room, fullness, room_type) + rugs_centred(room)
+                + lights_clear(room, LIGHT_BOTTOM.get(room_type, LIGHT_HEADROOM)))
     program.__name__ = furnish.__name__
     program.__doc__ = furnish.__doc__
     return program

@@ -1,9 +1,11 @@
 """What furniture holds, in every room: books and decor on shelves, dishes in kitchen cabinets,
 food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes (hung from the
 rail and folded) and shoes in wardrobes, folded clothes in dressers' drawers, shoes on shoe
-racks, books in nightstands, lamps and decor on dressers, tableware on dining tables.
-`contents(room, fullness)` is one `Problem` that `programs.get_program` adds to every room
-program, so the room programs only say which furniture stands where.
+racks, books in nightstands and a lamp, a book or two and a little decor on them, lamps and
+decor on dressers, tableware on dining tables; in a closet, clothes, towels, shoes, boxes and
+baskets (`HOLDS_BY_ROOM`). `contents(room, fullness, room_type)` is one `Problem` that
+`programs.get_program` adds to every room program, so the room programs only say which
+furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -130,6 +132,11 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("books", (S.Book,), on_top, 3),
         Load("baskets", (S.Basket,), on_top, 1),
     ),
+    "nightstand tops": (  # a 0.4 m top: the lamp, a book or two and a little decor, not nine things
+        Load("a lamp", (S.TableLamp,), on_top, 1),
+        decor(2),
+        Load("books", (S.Book,), on_top, 2),
+    ),
     "chests of drawers": (
         Load("folded clothes", (S.FoldedClothes,), inside, 6),
     ),
@@ -163,12 +170,40 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("a laptop", (S.Laptop,), on_top, 1),
         Load("a remote", (S.Remote,), on_top, 1),
     ),
-    "beds": (
+    "beds": (  # a laptop on every bed was the one prop repeated across bedrooms: desks hold them
         Load("folded clothes", (S.FoldedClothes,), on_top, 2),
         Load("a book", (S.Book,), on_top, 1),
-        Load("a laptop", (S.Laptop,), on_top, 1),
     ),
 }
+
+
+#: what a closet's furniture holds instead: clothes, towels, shoes, boxes and baskets, where
+#: the same shelves and cupboards in a living room hold books, decor and tableware
+CLOSET_HOLDS: dict[str, tuple[Load, ...]] = {
+    **HOLDS,
+    "shelving": (
+        Load("folded clothes", (S.FoldedClothes,), on_top, 5),
+        Load("towels", (S.Towel,), on_top, 3),
+        Load("shoes", (S.Shoes,), on_top, 2),
+        Load("boxes", (S.Box,), on_top, 3),
+        Load("baskets", (S.Basket,), on_top, 2),
+    ),
+    "cupboards": (
+        Load("folded clothes", (S.FoldedClothes,), inside, 5),
+        Load("shoes", (S.Shoes,), inside, 3),
+        Load("boxes", (S.Box,), inside, 2),
+    ),
+    "chests": (
+        Load("folded clothes", (S.FoldedClothes,), on_top, 2),
+        Load("boxes", (S.Box,), on_top, 2),
+        Load("baskets", (S.Basket,), on_top, 1),
+    ),
+    "shoe racks": (
+        Load("shoes", (S.Shoes,), on_top, 6),
+    ),
+}
+#: room types whose furniture holds other things than `HOLDS` says
+HOLDS_BY_ROOM: dict[str, dict[str, tuple[Load, ...]]] = {"closet": CLOSET_HOLDS}
 
 
 def holders(room: ObjSet) -> dict[str, ObjSet]:
@@ -186,8 +221,9 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "microwaves": scene()[S.Microwave].related_to(floor, on_top),
         "wardrobes": floor[S.Wardrobe],
         "cupboards": floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
-        "chests": floor[S.Dresser] | floor[S.Nightstand] | floor[S.TVStand] | floor[S.ConsoleTable]
+        "chests": floor[S.Dresser] | floor[S.TVStand] | floor[S.ConsoleTable]
         | floor[S.Cabinet].excluding(S.KitchenCabinet, S.BathroomFixture, S.WallMounted),
+        "nightstand tops": floor[S.Nightstand],
         "chests of drawers": floor[S.Dresser],
         "shoe racks": floor[S.ShoeRack],
         "bedside cupboards": bedside_cupboards(floor),
@@ -216,13 +252,14 @@ def cap(load: Load, fullness: float) -> int:
     return 1 if load.most == 1 else max(load.least, round(load.most * fullness))
 
 
-def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
-    """What the room's furniture holds, `fullness` times the usual amount at most; everyday
-    things within reach."""
+def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS, room_type: str = "") -> Problem:
+    """What the room's furniture holds (as `room_type`'s furniture does), `fullness` times the
+    usual amount at most; everyday things within reach."""
     constraints, put_away, shown = {}, [], []
     kinds: dict[tuple[tuple[Tag, ...], tuple[Tag, ...]], ObjSet] = {}  # one set per kind of thing
+    holds = HOLDS_BY_ROOM.get(room_type, HOLDS)
     for kind, furniture in holders(room).items():
-        for load in HOLDS[kind]:
+        for load in holds[kind]:
             things = kinds.setdefault((load.tags, load.excluded), load.things())
             most = cap(load, fullness)
             constraints[f"{kind} hold {load.name}"] = furniture.all(
@@ -232,9 +269,10 @@ def contents(room: ObjSet, fullness: float = DEFAULT_FULLNESS) -> Problem:
                 shown.append(put_away[-1])
     constraints["everyday things within reach"] = everyday(room).all(
         lambda o: height_of(o) * OUT_OF_REACH <= REACH_HEIGHT * OUT_OF_REACH)
-    return Problem(constraints, {
-        "things put away": union(put_away).count().maximize(FILL_WEIGHT),
-        "decor on display up high": union(shown).mean(height_of).maximize(DISPLAY_WEIGHT)})
+    scores = {"things put away": union(put_away).count().maximize(FILL_WEIGHT)}
+    if shown:
+        scores["decor on display up high"] = union(shown).mean(height_of).maximize(DISPLAY_WEIGHT)
+    return Problem(constraints, scores)
 
 
 def at_most(things: ObjSet, relation: Relation, most: int) -> Callable[[ObjSet], Constraint]:

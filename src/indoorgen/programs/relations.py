@@ -1,5 +1,6 @@
 """Relations every room program uses, named for what they mean in a room, the ceiling lights
-every room counts, and the reach and clearance requirements rooms share."""
+every room counts and the headroom they leave, and the reach and clearance requirements rooms
+share."""
 from indoorgen.constraints import (
     Constraint,
     ObjSet,
@@ -17,6 +18,13 @@ REACH = 1.6
 #: free depth before storage fronts (m): quality's FRONT_CLEAR (0.6 m to open a door or drawer
 #: and stand before it)
 FRONT_FREE = 0.6
+#: the least height (m) of a hanging light's bottom over open floor: clear of a tall person's
+#: head (a 95th-percentile man is 1.87 m tall; doors are 2.03 m high). The quality report's
+#: `light_headroom` measures the same
+LIGHT_HEADROOM = 2.0
+#: the least height (m) of a light's bottom over a dining table: lighting guidance hangs it
+#: 30-36 in (0.76-0.91 m) over the table's top, which stands 0.72-0.78 m high
+OVER_TABLE_BOTTOM = 1.5
 
 #: standing on the room's floor
 on_floor = StableAgainst(Subpart.Bottom, Subpart.Floor)
@@ -65,6 +73,13 @@ in_line_with = SupportedBy(Subpart.Side, Subpart.Side, margin=0.6)
 def ceiling_lights(room: ObjSet) -> ObjSet:
     """The lights hanging from `room`'s ceiling (every room program counts them)."""
     return scene()[Semantics.CeilingMounted, Semantics.Lighting].related_to(room, on_ceiling)
+
+
+def lights_clear(room: ObjSet, least: float = LIGHT_HEADROOM) -> Problem:
+    """What every room asks of its ceiling lights: their bottoms `least` metres or more above the
+    floor (a centimetre short weighs as much as a missing object)."""
+    return Problem(constraints={"lights clear of heads": ceiling_lights(room).all(
+        lambda li: (height(li) - li.volume((2,)) * 0.5) * 100 >= least * 100)})
 
 
 def across_from(distance: float) -> StableAgainst:

@@ -1,6 +1,6 @@
-"""Layout rules about what a room holds and at what height: lights, the kitchen sink, the work
-triangle, continuous counter runs, wall cabinets and hoods, bathroom accessories, and everyday
-objects within reach.
+"""Layout rules about what a room holds and at what height: lights and their headroom, the
+kitchen sink, the work triangle, continuous counter runs, wall cabinets and hoods, bathroom
+accessories, and everyday objects within reach.
 
 Each rule is a function `Context -> list[Check]` registered with `context.rule`; its constants
 name their source.
@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+import shapely.geometry as sg
 
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
@@ -37,6 +38,13 @@ TOWEL_BAR_HEIGHT = (1.0, 1.2)
 LIGHTS = (S.Lighting, S.CeilingLight, S.PendantLight, S.FloorLamp, S.TableLamp, S.DeskLamp,
           S.WallSconce)
 SINKS = (S.KitchenSink, S.BathroomSink)
+#: a hanging light's bottom over open floor (m): above a tall person's head (the programs'
+#: `relations.LIGHT_HEADROOM`); over a table, this far over its top (lighting guidance hangs a
+#: pendant 30-36 in over a dining table; 0.7 m allows 28 in)
+LIGHT_HEADROOM = 2.0
+OVER_TABLE = 0.7
+#: what a light may hang low over
+TABLES = (S.Table, S.KitchenIsland, S.Desk)
 COOKING = (S.Range, S.Cooktop)
 
 
@@ -50,6 +58,25 @@ def room_has_light(ctx: Context) -> list[Check]:
         lights = ctx.in_room(rn, *LIGHTS)
         out.append(Check(rn, tuple(p.name for p in lights[:3]), float(len(lights)), ">= 1",
                          bool(lights)))
+    return out
+
+
+@rule("light_headroom")
+def light_headroom(ctx: Context) -> list[Check]:
+    """A light hanging from the ceiling leaves headroom: its bottom LIGHT_HEADROOM above the
+    floor, or, over a table (its plan centre within the table's footprint), OVER_TABLE above the
+    tabletop; value: its bottom's height above the floor."""
+    out = []
+    for p in ctx.with_tags(S.CeilingMounted):
+        if not p.has(S.Lighting):
+            continue
+        centre = sg.Point(p.xy)
+        under = [t for t in ctx.in_room(p.obj.room, *TABLES) if t.footprint.contains(centre)]
+        least = max([t.top - t.floor + OVER_TABLE for t in under], default=LIGHT_HEADROOM)
+        least = min(least, LIGHT_HEADROOM)
+        bottom = p.bottom - p.floor
+        out.append(Check(p.obj.room, (p.name, *(t.name for t in under)), bottom, least,
+                         bottom >= least - 1e-6))
     return out
 
 

@@ -28,6 +28,9 @@ from indoorgen.programs.relations import (
 #: free floor around a dining table to pull a chair out and pass behind it (m; ergonomic
 #: guidance: 0.9 m from the table's edge to a wall)
 TABLE_CLEAR = 0.9
+#: the most (m, in plan) the light's centre stands off the table's: over its middle, where a
+#: pendant hung low (`relations.OVER_TABLE_BOTTOM`) lights the table and no one walks into it
+LIGHT_OFF_CENTRE = 0.3
 #: a sideboard's height (m): a low cabinet whose top serves the table (and as wide as the
 #: cabinet generator makes one)
 SIDEBOARD_HEIGHT = 0.9
@@ -62,7 +65,7 @@ def dining_room(room: ObjSet) -> Problem:
                     scene()[S.FruitBowl].related_to(tables, on_top),
                     scene()[S.Candle].related_to(tables, on_top))
     on_sideboard = scene()[S.SmallObject].excluding(
-        S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile
+        S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile, S.Shoes
     ).related_to(sideboards, on_top)
     lights = ceiling_lights(room)
     table_rugs = sized_rugs(floor, RUG_DIAMETER, 2.0, shape="round")
@@ -89,6 +92,9 @@ def dining_room(room: ObjSet) -> Problem:
             "plants": plants.count().in_range(0, 2),
             "pictures": art.count().in_range(1, 2),
             "a light": lights.count().in_range(1, 1),
+            # over the table, not the floor beside it (the table's light, hung low over it)
+            "the light over the table": lights.all(
+                lambda li: li.center_distance(tables) * 10 <= LIGHT_OFF_CENTRE * 10),
             "a rug at most": table_rugs.count().in_range(0, 1),
             "sideboard front free": fronts_free(sideboards, blockers, room, margin=DOOR_SWING),
             "shelf front free": fronts_free(shelves, blockers, room),

@@ -149,11 +149,11 @@ def kitchen(room: ObjSet) -> Problem:
                 work_triangle(sinks, cookers, fridges, TRIANGLE_REQUIRED)
                 .clip(0.0, TRIANGLE_HARD_CAP)
                 * room_for_triangle(room) <= 0),
-            "kitchenware out": kitchenware.count().in_range(1, 8),
+            "kitchenware out": kitchenware.count().in_range(1, 6),
             **{f"a {tag.value.replace('_', ' ')} at most": things.count().in_range(0, 1)
                for tag, things in kit.items()},
-            "crockery out": tableware.count().in_range(0, 8),
-            "food out": food.count().in_range(0, 6),
+            "crockery out": tableware.count().in_range(0, 5),
+            "food out": food.count().in_range(0, 4),
         },
         score_terms={
             # continuous runs: every unit and appliance slid up to a neighbour along its wall

@@ -98,9 +98,7 @@ class TowelBar(_WallHardware):
         "double": Param(kind="bool", doc="a second bar behind the first"),
         "towel": Param(kind="bool", doc="a towel folded over the front bar"),
         "towel_width": Param(0.3, 0.6, doc="towel width (at most the bar's free length) (m)"),
-        "towel_drop": Param(0.2, 0.42, doc="how far the towel hangs below the bar (m: at most "
-                            "0.42, so a bar and its towel hung at the bathroom's rail height "
-                            "centre within NKBA's 1.0-1.2 m)"),
+        "towel_drop": Param(0.2, 0.42, doc="how far the towel hangs below the bar (m)"),
     }
 
     def _bars(self, p) -> list[float]:
