@@ -102,16 +102,18 @@ class PartsFactory(AssetFactory):
         return Asset(mesh=mesh, surfaces=self._surfaces(p, offset, ext), face_slots=face_slots,
                      slots=slots, closed=self.closed)
 
-    def placeholder(self, params: dict[str, Any]) -> Asset:
+    def placeholder(self, params: dict[str, Any], hollow: bool = True) -> Asset:
         """The cheap asset: its parts concatenated, each part's convex hull as a solid
         collision piece (the solver collides these, so an object inside another is caught) named
-        by its link, and the joints (so the solver can keep each moving part's sweep free)."""
+        by its link, and the joints (so the solver can keep each moving part's sweep free).
+        With `hollow` False, the body is left solid where things are put away (`has_stowage`):
+        the same mesh, surfaces and joints, built without the detailed parts."""
         p = self.resolve(params)
         cheap, offset, ext = self._layout(p)
         mesh, fs, slots = concat(cheap, self.slots)
         asset = self._asset(p, mesh, fs, slots, offset, ext)
         # hollow the cheap body where things are put away (a cupboard's shelves)
-        rooms = self._stowage(p, float(ext[2] - offset[2]))
+        rooms = self._stowage(p, float(ext[2] - offset[2])) if hollow else []
         pieces = self.colliding(hollowed(cheap, rooms) if rooms else cheap)
         asset.joints = [j.translated(offset) for j in self.joints(p)]
         asset.collision = [(link, manifold_to_trimesh(h.translate(tuple(offset))))
@@ -135,13 +137,18 @@ class PartsFactory(AssetFactory):
                 [np.minimum(old[0], box[0]), np.maximum(old[1], box[1])])
         return out
 
+    def has_stowage(self) -> bool:
+        """Whether any of this generator's placeholders may be hollowed where things are put
+        away (the costly part of building one: `_stowage` evaluates the detailed parts)."""
+        return self.size_class != "small" and bool(self.tags & STOWING)
+
     def _stowage(self, p: dict[str, Any], top: float) -> list[list[float]]:
         """The open box (x0, y0, z0, x1, y1, z1, design frame) over each covered upward
         `Interior` surface (a shelf behind a door, a fridge shelf), up to the board above it:
         what the solver may fill, clear of every part of every link (a drawer's bin, a door's
         racks), so placeholders and simulators leave it free. Only `STOWING` objects have any
         (nothing is put in a shower; a bowl's inside is open above)."""
-        if self.size_class == "small" or not self.tags & STOWING:
+        if not self.has_stowage():
             return []
         inner = [s for s in self.extra_surfaces(p)
                  if s.subpart == Subpart.Interior and s.normal[2] > 0.9]

@@ -420,13 +420,13 @@ def add_to(ctx: MoveContext, b: Bound, tries: int | None = None) -> MoveOutcome 
             fac = get_factory(gen)
             seed = child_seed(ctx.rng)
             params = {**fac.sample_params(np.random.default_rng(seed)), **dict(b.context.params)}
-        asset = ctx.state.cache.placeholder(gen, params)
+        asset, rough = ctx.state.cache.trial_placeholder(gen, params)
         placements = _draw_placements(ctx, asset, b.parents)
         if placements is None:
             return None
         ob = ObjState(ctx.namer(gen), gen, params, seed, frozenset(fac.tags), ctx.room,
                       ctx.stage, asset, placements, np.zeros(3), 0.0,
-                      context=b.context, env=dict(b.env))
+                      context=b.context, env=dict(b.env), rough=rough)
         ctx.state.add(ob)
         moved = _place_on(ctx, ob, tries)
         if moved:

@@ -121,13 +121,12 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
                                  *((attempt,) if attempt else ())), namer)
         mine = [n for n, ob in state.objects.items() if ob.room == room]
         objects = [_detached(state.objects[n]) for n in mine] if complete else []
-        unmet = {k: v for k, v in ev.evaluate().violations.items() if v > 1e-9} \
-            if complete else {}
+        unmet = {k: v for k, v in ev.evaluate().violations.items() if v > 1e-9}
         for n in reversed(mine):
             state.remove(n)
         if not complete:
-            log.info("%s: %s stage unmet, solved again (attempt %d)", room, stats[-1].stage,
-                     attempt + 1)
+            log.info("%s: %s stage unmet, solved again (attempt %d): %s", room, stats[-1].stage,
+                     attempt + 1, ", ".join(sorted(unmet)))
             continue
         if best is None or (stats[-1].violation, stats[-1].loss) < \
                 (best[0][-1].violation, best[0][-1].loss):
@@ -135,8 +134,8 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
         full += 1
         if best[0][-1].violation <= 1e-9 or full == FULL_SOLVES:
             break
-        log.info("%s: solved again (attempt %d), violation %.3g", room, attempt + 1,
-                 stats[-1].violation)
+        log.info("%s: solved again (attempt %d), violation %.3g (%s)", room, attempt + 1,
+                 stats[-1].violation, ", ".join(sorted(unmet)))
     assert best is not None
     return RoomSolution(room, best[0], best[1], named, best[2])
 
@@ -144,6 +143,7 @@ def solve_room(state: State, room: str, problem: Problem, seed: int, *,
 def _detached(ob: ObjState) -> ObjState:
     """A copy of `ob` without what belongs to one process's solve (collision pieces, the counted
     context it was added to): what `merge` needs, picklable."""
+    assert not ob.rough  # a pose found clear gave it its placeholder (`State.collides`)
     return replace(ob, cobjs=[], boxes=None, n_solid=0, free_pending=False, context=None,
                    env={}, placements=[replace(p) for p in ob.placements])
 

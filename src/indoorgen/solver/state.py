@@ -103,6 +103,10 @@ class ObjState:
     n_solid: int = 0
     #: are its keep-free pieces still to be built (`State.collides` builds them)?
     free_pending: bool = False
+    #: is `asset` still the rough placeholder (`AssetCache.trial_placeholder`: its body not
+    #: yet hollowed where things are put away), to be swapped for the placeholder by
+    #: `State.collides` once its pieces are found clear?
+    rough: bool = False
 
 
 class State:
@@ -327,13 +331,13 @@ class State:
         pieces if built (else `collides` builds them once the solid pieces are found clear:
         most poses an add tries collide anyway)."""
         tf = self._transform(ob)
-        solid = self.cache.placeholder_convex(ob.generator, ob.params)
+        solid = self.cache.placeholder_convex(ob.generator, ob.params, ob.rough)
         got = self._keep_free(ob, build)
         ob.free_pending = got is None
         free, free_boxes, free_kinds = got if got is not None else \
             ([], np.zeros((0, 2, 3)), np.zeros(0, int))
         ob.cobjs = [fcl.CollisionObject(shape, tf) for shape in [*solid, *free]]
-        solid_boxes = self.cache.placeholder_boxes(ob.generator, ob.params)
+        solid_boxes = self.cache.placeholder_boxes(ob.generator, ob.params, ob.rough)
         ob.boxes, ob.n_solid = np.concatenate([solid_boxes, free_boxes]), len(solid_boxes)
         kinds = np.concatenate([np.full(len(solid), PIECE_SOLID), free_kinds])
         self.broadphase[ob.room].add(ob.name, ob.cobjs, self._boxes(ob), kinds, yields(ob.tags))
@@ -408,11 +412,11 @@ class State:
 
     def set_asset(self, name: str, params: dict[str, Any]) -> None:
         """Swap an object's params (and so its placeholder and collision pieces), keeping its
-        pose."""
+        pose (the rough placeholder until `collides` finds it clear, as for an object added)."""
         ob = self.objects[name]
         self._unregister(ob)
         ob.params = params
-        ob.asset = self.cache.placeholder(ob.generator, params)
+        ob.asset, ob.rough = self.cache.trial_placeholder(ob.generator, params)
         self._geo.pop(name, None)
         self._register(ob)
 
@@ -424,10 +428,13 @@ class State:
         ob = self.objects[name]
         bp, windows = self.broadphase[ob.room], self._window_bound(ob)
         screens = bool(SCREEN_STANDS & ob.tags)
-        if ob.free_pending:
+        if ob.free_pending or ob.rough:
             if bp.collides(name, windows=windows, screens=screens, carries=self._carries):
                 return True
             self._unregister(ob)
+            if ob.rough:  # clear: the pose is worth the placeholder's hollows
+                ob.asset, ob.rough = self.cache.placeholder(ob.generator, ob.params), False
+                self._geo.pop(name, None)
             self._register(ob, build=True)
         return bp.collides(name, windows=windows, screens=screens, carries=self._carries)
 
