@@ -145,3 +145,20 @@ def test_a_nightstand_top_holds_a_lamp_and_a_few_things_at_most():
              if b.can_add and any(rel == on_top for rel, _ in b.parents)]
     assert on_it and all(b.name.startswith("nightstand tops") for b in on_it)
     assert sum(b.hi for b in on_it) <= 5
+
+
+def test_a_garage_s_shelves_hold_stored_things_and_a_shoe_rack_is_no_garage_shelving():
+    """Garage and utility shelving holds boxes, baskets and shoes, not books and ornaments;
+    the garage's shelving, which must hold a box, is never a shoe rack (whose tiers hold none)."""
+    view = FakeView()
+    view.add_room("r", [(0, 0), (3, 0), (3, 5), (0, 5)])
+    view.add("cell_shelf_0", {S.Object, S.Furniture, S.Storage, S.Shelf, S.CellShelf},
+             center=(0.2, 1, 0.6), extents=(0.35, 1.0, 1.2), relations=[(on_floor, "r")])
+    room = scene()[S.Room].named("r")
+    for room_type in ("garage", "utility"):
+        problem = contents(room, 1.0, room_type)
+        names = {b.name for b in find_bounds(problem, Evaluator(problem, view))}
+        assert "shelving hold boxes" in names and "shelving hold books" not in names
+    garage = get_program("garage")(room)
+    shelving = [b for b in find_bounds(garage, Evaluator(garage, view)) if b.name == "shelving"]
+    assert shelving and all(S.ShoeRack in b.context.excluded for b in shelving)

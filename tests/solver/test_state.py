@@ -7,9 +7,11 @@ import numpy as np
 import pytest
 import shapely.geometry as sg
 
+from indoorgen.assets import get_factory
 from indoorgen.model.scene import Door, Pose, RelationInstance, Scene, SceneObject
 from indoorgen.model.tags import Semantics as S
-from indoorgen.solver.state import keep_out_prisms, state_from_scene
+from indoorgen.solver.placement import solve_pose
+from indoorgen.solver.state import ObjState, keep_out_prisms, state_from_scene
 from support.solverscene import (
     ROOM,
     assert_consistent,
@@ -167,3 +169,49 @@ def test_state_from_scene_rebuilds_poses_and_relations():
     assert snapshot(again) == snapshot(st)
     assert_consistent(again)
     assert not any(again.collides(n) for n in again.objects)
+
+
+def _rough_object(st, generator: str, at: tuple[float, float], name: str, seed: int = 3) -> str:
+    """Add a `generator` object as an add move does: with its trial placeholder, posed near
+    `at` on the floor, not yet checked."""
+    fac = get_factory(generator)
+    params = fac.sample_params(np.random.default_rng(seed))
+    asset, rough = st.cache.trial_placeholder(generator, params)
+    st.add(ObjState(name, generator, params, seed, frozenset(fac.tags), ROOM, "large", asset,
+                    floor(), np.zeros(3), 0.0, rough=rough))
+    res = solve_pose(st, asset, floor(), np.array([*at, 0.0]), 0.0)
+    assert res is not None
+    st.set_pose(name, res[0], res[1])
+    return name
+
+
+def test_an_add_tries_poses_rough_and_a_clear_pose_gets_the_hollowed_placeholder():
+    """A cupboard is tried with its body left solid (the same mesh, surfaces and joints, no
+    detailed parts evaluated); once its pieces are clear it takes the placeholder, hollowed
+    where things are put away, and is registered with the placeholder's pieces. One that
+    collides stays rough (and an add then removes it)."""
+    st = make_state(5.0, 4.0)
+    name = _rough_object(st, "wardrobe", (2.5, 2.0), "wardrobe_0")
+    ob = st.objects[name]
+    full = st.cache.placeholder(ob.generator, ob.params)
+    assert ob.rough and ob.asset is not full
+    assert np.array_equal(ob.asset.mesh.vertices, full.mesh.vertices)
+    assert [s.name for s in ob.asset.surfaces] == [s.name for s in full.surfaces]
+    assert len(ob.asset.joints) == len(full.joints)
+    # the rough body holds all of the hollowed one (it only lacks the hollows)
+    rough_volume = sum(m.volume for _, m in ob.asset.collision)
+    assert rough_volume > sum(m.volume for _, m in full.collision)
+    assert not st.collides(name)
+    assert not ob.rough and ob.asset is full
+    assert len(ob.cobjs) >= len(st.cache.placeholder_convex(ob.generator, ob.params))
+    assert_consistent(st)
+    # a second wardrobe in the same spot collides and keeps its rough pieces
+    other = _rough_object(st, "wardrobe", (2.5, 2.0), "wardrobe_1", seed=4)
+    assert st.collides(other) and st.objects[other].rough
+
+
+def test_a_generator_with_nothing_put_away_is_tried_with_its_placeholder():
+    st = make_state()
+    params = get_factory("dining_table_rect").sample_params(np.random.default_rng(0))
+    asset, rough = st.cache.trial_placeholder("dining_table_rect", params)
+    assert not rough and asset is st.cache.placeholder("dining_table_rect", params)

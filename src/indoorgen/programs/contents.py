@@ -3,9 +3,10 @@ food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes (
 rail and folded) and shoes in wardrobes, folded clothes in dressers' drawers, shoes on shoe
 racks, books in nightstands and a lamp, a book or two and a little decor on them, lamps and
 decor on dressers, tableware on dining tables; in a closet, clothes, towels, shoes, boxes and
-baskets (`HOLDS_BY_ROOM`). `contents(room, fullness, room_type)` is one `Problem` that
-`programs.get_program` adds to every room program, so the room programs only say which
-furniture stands where.
+baskets, and on a garage's or utility room's shelves, boxes, baskets and shoes
+(`HOLDS_BY_ROOM`). `contents(room, fullness, room_type)` is one `Problem` that
+`programs.get_program` adds to every room program, so the room programs only say which furniture
+stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -202,8 +203,18 @@ CLOSET_HOLDS: dict[str, tuple[Load, ...]] = {
         Load("shoes", (S.Shoes,), on_top, 6),
     ),
 }
+#: what shelving holds in a garage or a utility room: things stored, not books and ornaments
+STORE_HOLDS: dict[str, tuple[Load, ...]] = {
+    **HOLDS,
+    "shelving": (
+        Load("boxes", (S.Box,), on_top, 4),
+        Load("baskets", (S.Basket,), on_top, 2),
+        Load("shoes", (S.Shoes,), on_top, 2),
+    ),
+}
 #: room types whose furniture holds other things than `HOLDS` says
-HOLDS_BY_ROOM: dict[str, dict[str, tuple[Load, ...]]] = {"closet": CLOSET_HOLDS}
+HOLDS_BY_ROOM: dict[str, dict[str, tuple[Load, ...]]] = {
+    "closet": CLOSET_HOLDS, "garage": STORE_HOLDS, "utility": STORE_HOLDS}
 
 
 def holders(room: ObjSet) -> dict[str, ObjSet]:

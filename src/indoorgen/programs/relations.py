@@ -18,6 +18,9 @@ REACH = 1.6
 #: free depth before storage fronts (m): quality's FRONT_CLEAR (0.6 m to open a door or drawer
 #: and stand before it)
 FRONT_FREE = 0.6
+#: free depth before a desk (m): its chair pulled up and pushed back (ergonomic guidance
+#: 0.8-1.1 m); the chair itself stands in it
+DESK_CHAIR_ROOM = 0.8
 #: the least height (m) of a hanging light's bottom over open floor: clear of a tall person's
 #: head (a 95th-percentile man is 1.87 m tall; doors are 2.03 m high). The quality report's
 #: `light_headroom` measures the same

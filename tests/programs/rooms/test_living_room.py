@@ -8,7 +8,15 @@ from indoorgen.constraints import scene
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-from indoorgen.programs.relations import across_from, against_wall, hung_above, on_floor, on_top, on_wall
+from indoorgen.programs.relations import (
+    across_from,
+    against_wall,
+    at_table,
+    hung_above,
+    on_floor,
+    on_top,
+    on_wall,
+)
 from indoorgen.programs.rooms.living_room import FRONT_GAPS, SCONCE_GAP, living_room
 from support.fakeview import FakeView
 
@@ -81,3 +89,21 @@ def test_the_second_zone_waits_for_the_seating_group():
     view.add("console", FURNITURE | {S.Table, S.ConsoleTable}, center=(1.15, 0.2, 0.4),
              yaw=math.pi / 2, extents=(0.35, 1.2, 0.8), relations=[(on_floor, "r"), (against_wall, "r")])
     assert violations(view)["a console at most"] > 0
+
+
+def test_the_desk_keeps_room_for_its_own_chair_and_nothing_else():
+    """The chair pulled up to the desk stands in the desk's 0.8 m front (it had blocked its own
+    desk, and the room was solved again for want of the chair); a bookcase there does not."""
+    for blocker, ok in ((None, True), ("chair", True), ("bookcase", False)):
+        view = FakeView()
+        view.add_room("r", [(0, 0), (5.0, 0), (5.0, 4.0), (0, 4.0)])
+        view.add("desk_0", FURNITURE | {S.Desk, S.Table}, center=(4.7, 3.2, 0.37), yaw=math.pi,
+                 extents=(0.6, 1.2, 0.75), relations=[(on_floor, "r"), (against_wall, "r")])
+        if blocker == "chair":
+            view.add("chair_0", FURNITURE | {S.Seating, S.Chair, S.OfficeChair},
+                     center=(4.1, 3.2, 0.45), extents=(0.55, 0.55, 0.9),
+                     relations=[(on_floor, "r"), (at_table, "desk_0")])
+        elif blocker == "bookcase":
+            view.add("bookcase_0", FURNITURE | {S.Storage, S.Bookcase}, center=(4.0, 3.2, 0.9),
+                     extents=(0.35, 0.8, 1.8), relations=[(on_floor, "r")])
+        assert (violations(view)["room for the desk's chair"] == 0) == ok, blocker

@@ -19,6 +19,7 @@ from indoorgen.constraints import (
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 from indoorgen.programs.relations import (
+    DESK_CHAIR_ROOM,
     DOOR_SWING,
     against_wall,
     at_bedside,
@@ -58,9 +59,6 @@ RUG_REWARD = 2.5
 #: a bedroom whose plan box is larger than this (m^2) is asked for a desk corner (a desk 1.0-1.4
 #: x 0.5-0.7 m and its chair's 0.8 m pull-out: 2 m^2 past a 12-15 m^2 room's bed and storage)
 DESK_AREA = 13.5
-#: free depth before a desk (m): its chair pulled up and pushed back (ergonomic guidance
-#: 0.8-1.1 m); the chair itself stands in it
-DESK_CHAIR_ROOM = 0.8
 #: a bedroom whose plan box is larger than this (m^2) is asked for a dresser beside the wardrobe
 #: (1.0-1.5 x 0.4-0.5 m and 0.6 m before its drawers: about 1.3 m^2 past the wardrobe's room)
 DRESSER_AREA = 12.5
