@@ -78,6 +78,8 @@ SCONCE_GAP = 0.35
 #: a desk's least plan distance from the sofa (m): room for its chair (0.5 m) pushed back
 #: (0.7 m) without touching the sofa (a desk right behind the sofa reads as no second zone)
 DESK_APART = 1.2
+#: the reward of a floor lamp or side table at the seating (any, once): worth two objects
+READING_LIGHT_WEIGHT = 2.0
 #: the band a wall shelf's centre hangs in (m): above a desk or console (0.75 m) and within
 #: reach, its top board no higher than eye level (the reach rule's 1.6 m)
 SHELF_BAND = (1.0, 1.45)
@@ -207,6 +209,11 @@ def living_room(room: ObjSet) -> Problem:
             "a side table at each arm": seating.mean(lambda s: reflectional_asymmetry(
                 side_tables.related_to(s, beside), s)).minimize(2),
             "armchairs and side tables": (armchairs.count() + side_tables.count()).maximize(0.5),
+            # a floor lamp or a side table for a lamp, placed with the seating: asked for with
+            # the small things alone (`a lamp at the seating`), a room whose seating had neither
+            # was solved again for want of a lamp
+            "a place for a reading light": (lamps.count() + side_tables.count()).clip(0.0, 1.0)
+            .maximize(READING_LIGHT_WEIGHT),
             "the sofa's back to a wall": sofas.mean(
                 lambda s: s.distance(room).hinge(0.0, 0.1)).minimize(0.5),
             "a rug under the group": group_rugs.count().maximize(3),
