@@ -6,6 +6,9 @@ import math
 
 import numpy as np
 import pytest
+import shapely
+import shapely.affinity
+import shapely.geometry as sg
 
 from indoorgen.assets import Surface
 from indoorgen.constraints.relations import CONTACT_GAP
@@ -168,3 +171,34 @@ def test_a_garment_hung_from_a_rail_turns_across_it_and_slides_along_it_only():
     assert not dof.rotates and yaw == pytest.approx(ob.yaw)
     # free to move in the rail's plane; the rail's narrow strip keeps it on the rail
     np.testing.assert_allclose(dof.projection @ rail_w.normal, 0.0, atol=1e-12)
+
+
+def test_a_rectangle_s_free_region_is_the_general_erosion_and_grown_outlines_are_cut_out():
+    """The free region of a rectangular surface, worked out directly, is the intersection of the
+    surface moved back by each corner of the thing's box; outlines already standing there, grown
+    by the box, are cut out of it (100 random cases, and a notched surface the general way)."""
+    rng = np.random.default_rng(3)
+    for _ in range(100):
+        w, d = rng.uniform(0.2, 2.0, 2)
+        rect = sg.box(-w / 2, -d / 2, w / 2, d / 2)
+        foot = rng.uniform(-0.3, 0.3, (6, 2))
+        taken = [rng.uniform(-w / 2, w / 2, 2) + rng.uniform(-0.1, 0.1, (5, 2))
+                 for _ in range(int(rng.integers(0, 4)))]
+        x0, y0 = foot.min(axis=0) - SURFACE_GAP
+        x1, y1 = foot.max(axis=0) + SURFACE_GAP
+        expected = rect
+        for cx, cy in ((x0, y0), (x1, y0), (x1, y1), (x0, y1)):
+            expected = expected.intersection(shapely.affinity.translate(rect, -cx, -cy))
+        for o in taken:
+            corners = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+            expected = expected.difference(sg.MultiPoint(
+                (o[:, None, :] - corners[None]).reshape(-1, 2)).convex_hull)
+        surface = Surface("top", Subpart.SupportSurface, np.zeros(3), np.array([0, 0, 1.0]),
+                          np.array([1.0, 0, 0]), rect)
+        got = free_region(surface, foot, taken)
+        assert got.symmetric_difference(expected).area < 1e-12
+    notched = sg.Polygon([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)])
+    surface = Surface("top", Subpart.SupportSurface, np.zeros(3), np.array([0, 0, 1.0]),
+                      np.array([1.0, 0, 0]), notched)
+    region = free_region(surface, np.array([[-0.2, -0.2], [0.2, 0.2]]), [])
+    assert region.contains(sg.Point(1.6, 0.5)) and not region.contains(sg.Point(1.6, 1.5))

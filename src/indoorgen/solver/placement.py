@@ -196,15 +196,37 @@ def free_region(surface: Surface, footprint: np.ndarray, taken: list[np.ndarray]
     x0, y0 = footprint.min(axis=0) - gap
     x1, y1 = footprint.max(axis=0) + gap
     box = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
-    region = surface.polygon
-    for cx, cy in box:
-        region = region.intersection(shapely.affinity.translate(surface.polygon, -cx, -cy))
-        if region.is_empty:
-            return region
+    region = _eroded(surface.polygon, box)
+    if region.is_empty:
+        return region
     if taken:
-        grown = [shapely.MultiPoint((outline[:, None, :] - box[None, :, :]).reshape(-1, 2)).convex_hull
-                 for outline in taken]
+        # each outline grown by the box: the hull of its points less each corner, all at once
+        points = np.concatenate([(o[:, None, :] - box[None, :, :]).reshape(-1, 2) for o in taken])
+        owner = np.repeat(np.arange(len(taken)), [4 * len(o) for o in taken])
+        grown = shapely.convex_hull(shapely.multipoints(points, indices=owner))
         region = region.difference(shapely.union_all(grown))
+    return region
+
+
+def _eroded(polygon: sg.Polygon, box: np.ndarray) -> sg.Polygon:
+    """Where a point may go so that it and `box` (4 corner offsets from it) lie on `polygon`:
+    the intersection of the polygon and the polygon moved back by each corner; worked out
+    directly for an axis-aligned rectangle (most surfaces), where it is one."""
+    minx, miny, maxx, maxy = polygon.bounds
+    (x0, y0), (x1, y1) = box[0], box[2]
+    if len(polygon.interiors) == 0 and len(polygon.exterior.coords) == 5 and \
+            abs(polygon.area - (maxx - minx) * (maxy - miny)) <= 1e-12:
+        # (the point itself on the surface too, where the box does not hold it)
+        lo_x, lo_y = minx - min(x0, 0.0), miny - min(y0, 0.0)
+        hi_x, hi_y = maxx - max(x1, 0.0), maxy - max(y1, 0.0)
+        if lo_x >= hi_x or lo_y >= hi_y:
+            return sg.Polygon()
+        return sg.box(lo_x, lo_y, hi_x, hi_y)
+    region = polygon
+    for cx, cy in box:
+        region = region.intersection(shapely.affinity.translate(polygon, -cx, -cy))
+        if region.is_empty:
+            break
     return region
 
 
