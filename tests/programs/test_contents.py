@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from indoorgen import GenerateConfig, generate
-from indoorgen.constraints import scene
+from indoorgen.constraints import ObjSet, scene
 from indoorgen.constraints.bounds import find_bounds
 from indoorgen.constraints.evaluator import Evaluator
 from indoorgen.model.frames import yaw_matrix
@@ -105,13 +105,19 @@ def test_shoes_dishes_and_books_are_put_away_where_they_belong(tags, name, bound
     assert b.can_add and b.lo <= 0 and b.parents == ((relation, (name,)),)
 
 
-def test_a_nightstand_of_drawers_only_holds_nothing_inside():
+def _room_with_a_nightstand() -> tuple[FakeView, ObjSet]:
+    """A 4 x 4 m room holding one nightstand of two drawers (nothing behind a door)."""
     view = FakeView()
     view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
     view.add("nightstand_0", {S.Object, S.Furniture, S.Storage, S.Nightstand},
              center=(1, 1, 0.3), extents=(0.4, 0.5, 0.6), relations=[(on_floor, "r")],
              generator="nightstand", params={"layout": "two_drawers"})
     room = scene()[S.Room].named("r")
+    return view, room
+
+
+def test_a_nightstand_of_drawers_only_holds_nothing_inside():
+    view, room = _room_with_a_nightstand()
     ev = Evaluator(contents(room, 1.0), view)
     bounds = {b.name: b for b in find_bounds(contents(room, 1.0), ev)}
     assert not any(b.can_add for name, b in bounds.items() if name.startswith("bedside"))
@@ -134,12 +140,7 @@ def test_a_closet_s_shelves_hold_clothes_and_towels_not_books():
 def test_a_nightstand_top_holds_a_lamp_and_a_few_things_at_most():
     """A 0.4 m nightstand top holds at most five things at the usual fullness (it had held
     nine as a chest: a lamp, four decor, three books and a basket)."""
-    view = FakeView()
-    view.add_room("r", [(0, 0), (4, 0), (4, 4), (0, 4)])
-    view.add("nightstand_0", {S.Object, S.Furniture, S.Storage, S.Nightstand},
-             center=(1, 1, 0.3), extents=(0.4, 0.5, 0.6), relations=[(on_floor, "r")],
-             generator="nightstand", params={"layout": "two_drawers"})
-    room = scene()[S.Room].named("r")
+    view, room = _room_with_a_nightstand()
     problem = contents(room, 1.0)
     on_it = [b for b in find_bounds(problem, Evaluator(problem, view))
              if b.can_add and any(rel == on_top for rel, _ in b.parents)]
