@@ -15,6 +15,7 @@ import shapely.geometry as sg
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 from indoorgen.programs.contents import EVERYDAY, REACH_HEIGHT
+from indoorgen.programs.relations import LIGHT_HEADROOM
 from indoorgen.programs.rooms.kitchen import IN_RUN, TRIANGLE_LEG
 from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, on_floor, rule
 
@@ -38,10 +39,9 @@ TOWEL_BAR_HEIGHT = (1.0, 1.2)
 LIGHTS = (S.Lighting, S.CeilingLight, S.PendantLight, S.FloorLamp, S.TableLamp, S.DeskLamp,
           S.WallSconce)
 SINKS = (S.KitchenSink, S.BathroomSink)
-#: a hanging light's bottom over open floor (m): above a tall person's head (the programs'
-#: `relations.LIGHT_HEADROOM`); over a table, this far over its top (lighting guidance hangs a
-#: pendant 30-36 in over a dining table; 0.7 m allows 28 in)
-LIGHT_HEADROOM = 2.0
+#: a hanging light's bottom over a table: this far over its top at least (lighting guidance
+#: hangs a pendant 30-36 in over a dining table; 0.7 m allows 28 in); over open floor, the
+#: programs' `relations.LIGHT_HEADROOM`
 OVER_TABLE = 0.7
 #: what a light may hang low over
 TABLES = (S.Table, S.KitchenIsland, S.Desk)
