@@ -56,6 +56,22 @@ def test_sum_of_counts_bounds_each_term_by_what_the_others_leave():
     assert [(b.lo, b.hi) for b in cap] == [(0, 2), (-1, 1)]
 
 
+def test_a_set_capped_by_one_constraint_is_not_grown_for_another():
+    """"a bath or a shower" with showers barred by a second constraint (a compact shower in a
+    large bathroom): only a bath may be added for it, though both are below their share."""
+    def prog(room):
+        floor = scene().related_to(room, on_floor)
+        baths, showers = floor[S.Bathtub], floor[S.Shower]
+        return Problem(constraints={"wet": (baths.count() + showers.count()).in_range(1, 2),
+                                    "no shower": showers.count() <= 0})
+    ev = Evaluator(prog(room()), base_view())
+    ev.evaluate()
+    wet = [b for b in find_bounds(ev.problem, ev) if b.name == "wet"]
+    assert [(sorted(t.value for t in b.context.tags), b.below, b.can_add) for b in wet] == [
+        (["bathtub"], True, True), (["shower"], True, False)]
+    assert len({b.key for b in find_bounds(ev.problem, ev)}) == 2  # one key per counted set
+
+
 def test_contexts_and_stages_of_set_chains():
     r = room()
     floor = scene().related_to(r, on_floor)

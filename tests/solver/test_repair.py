@@ -5,7 +5,13 @@ from __future__ import annotations
 from indoorgen.constraints import Problem, scene
 from indoorgen.model.tags import Semantics as S
 from indoorgen.programs.relations import on_floor
-from indoorgen.solver.repair import REPAIR_ATTEMPTS, construct, own_violation
+from indoorgen.solver.repair import (
+    CONSTRUCT_PASSES,
+    REPAIR_ATTEMPTS,
+    build_required,
+    construct,
+    own_violation,
+)
 from indoorgen.solver.stages import solve
 from support.solverscene import ROOM, assert_consistent, make_state, move_context, table_program
 
@@ -41,3 +47,49 @@ def test_construct_places_each_required_object_and_tells_the_evaluator():
     added = construct(ctx)
     assert len(added) == 1 and S.DiningTable in st.objects[added[0]].tags
     assert own_violation(ctx.ev.evaluate(), ctx.problem, "large") == 0.0
+
+
+def test_build_required_builds_again_until_a_pass_meets_the_stage(monkeypatch):
+    """A pass that leaves a requirement unmet is taken out and built again; the first that
+    meets them all is kept, its objects the stage's only ones."""
+    import indoorgen.solver.repair as repair
+    st = make_state(5.0, 4.0)
+    ctx = move_context(st, "large")
+    passes = []
+
+    def flaky(c):  # the first two passes place nothing, as if every pose were blocked
+        passes.append(len(passes))
+        return [] if len(passes) <= 2 else construct(c)
+    monkeypatch.setattr(repair, "construct", flaky)
+    build_required(ctx)
+    assert len(passes) == 3
+    assert own_violation(ctx.ev.evaluate(), ctx.problem, "large") == 0.0
+    assert len(ctx.mine()) == 1
+    assert_consistent(st)
+
+
+def test_build_required_keeps_the_nearest_pass_when_none_meets_the_stage():
+    room = scene()[S.Room].named(ROOM)
+    beds = scene().related_to(room, on_floor)[S.Bed]
+    problem = Problem(constraints={"five beds": beds.count() == 5})
+    st = make_state(2.0, 2.2)
+    ctx = move_context(st, "large", problem=problem)
+    build_required(ctx)
+    assert 1 <= len(ctx.mine()) < 5  # the room holds one or two: kept, not emptied
+    assert own_violation(ctx.ev.evaluate(), problem, "large") > 0
+    assert CONSTRUCT_PASSES > 1
+    assert_consistent(st)
+
+
+def test_construct_keeps_no_object_that_breaks_more_than_it_meets():
+    """A required table whose every pose breaks a weightier constraint (here: any table at
+    all, counted twice) is not kept: construct leaves the stage as it found it."""
+    room = scene()[S.Room].named(ROOM)
+    tables = scene().related_to(room, on_floor)[S.DiningTable]
+    problem = Problem(constraints={"a table": tables.count() == 1,
+                                   "no table, weighed twice": tables.count() * 2 <= 0})
+    st = make_state(5.0, 4.0)
+    ctx = move_context(st, "large", problem=problem)
+    assert construct(ctx) == [] and ctx.mine() == []
+    assert ctx.ev.evaluate().violation == 1.0
+    assert_consistent(st)

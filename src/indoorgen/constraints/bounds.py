@@ -56,6 +56,12 @@ class Bound:
     members: frozenset[str] = field(default_factory=frozenset)
 
     @property
+    def key(self) -> tuple:
+        """What names the bound's counted set across `find_bounds` calls: its node and loop
+        bindings (two constraints counting one set give two bounds with one key)."""
+        return id(self.set_node), tuple(sorted(self.env.items()))
+
+    @property
     def can_add(self) -> bool:
         """Whether one more member fits the bound and every relation has a parent to take it."""
         return self.count + 1 <= self.hi + 1e-9 and all(p for _, p in self.parents)
@@ -262,4 +268,16 @@ def find_bounds(problem: Problem, ev: Evaluator, names: Collection[str] | None =
             parents = _merge_parents([(rel, ev.value(pnode, env)) for rel, pnode in ctx.relations])
             members = ev.value(set_node, env)
             out.append(Bound(name, ctx, set_node, env, parents, lo, hi, len(members), members))
-    return out
+    return _capped(out)
+
+
+def _capped(bounds: list[Bound]) -> list[Bound]:
+    """`bounds` with each one's maximum lowered to the least any bound on the same set allows:
+    a set one constraint caps is not grown for another's sake (a compact shower barred from a
+    large bathroom is not added as its "bath or shower")."""
+    least: dict[tuple, float] = {}
+    for b in bounds:
+        least[b.key] = min(least.get(b.key, math.inf), b.hi)
+    for b in bounds:
+        b.hi = least[b.key]
+    return bounds
