@@ -24,6 +24,8 @@ from indoorgen.model.tags import Semantics, Subpart
 
 #: (set node, lo, hi, loop bindings): one count bound found in a constraint.
 CountBound = tuple[Node[frozenset[str]], float, float, Env]
+#: What names a bound's counted set across `find_bounds` calls: its node's id and loop bindings.
+BoundKey = tuple[int, tuple[tuple[Any, Any], ...]]
 #: Per relation of a context, the parent objects a new member may attach to.
 Parents = tuple[tuple[Relation, tuple[str, ...]], ...]
 
@@ -56,7 +58,7 @@ class Bound:
     members: frozenset[str] = field(default_factory=frozenset)
 
     @property
-    def key(self) -> tuple:
+    def key(self) -> BoundKey:
         """What names the bound's counted set across `find_bounds` calls: its node and loop
         bindings (two constraints counting one set give two bounds with one key)."""
         return id(self.set_node), tuple(sorted(self.env.items()))
@@ -275,7 +277,7 @@ def _capped(bounds: list[Bound]) -> list[Bound]:
     """`bounds` with each one's maximum lowered to the least any bound on the same set allows:
     a set one constraint caps is not grown for another's sake (a compact shower barred from a
     large bathroom is not added as its "bath or shower")."""
-    least: dict[tuple, float] = {}
+    least: dict[BoundKey, float] = {}
     for b in bounds:
         least[b.key] = min(least.get(b.key, math.inf), b.hi)
     for b in bounds:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from indoorgen.constraints.bounds import STAGE_ORDER, term_stage
+from indoorgen.constraints.bounds import STAGE_ORDER, BoundKey, term_stage
 from indoorgen.constraints.evaluator import Evaluator, Result
 from indoorgen.constraints.problem import Problem
 from indoorgen.rng import stream
@@ -47,7 +47,7 @@ def construct(ctx: MoveContext) -> list[str]:
     where it lowers the stage's violation. Returns the objects added; the evaluator is told of
     each."""
     added: list[str] = []
-    failed: set[tuple] = set()
+    failed: set[BoundKey] = set()
     for _ in range(4 * len(ctx.bounds()) + 1):
         below = [b for b in ctx.bounds() if b.can_add and b.below and b.key not in failed]
         if not below:
