@@ -23,6 +23,7 @@ from indoorgen.floorplan.generate import FloorplanConfig, generate_floorplan
 from indoorgen.model.scene import Scene
 from support.cli import run
 from support.doors import RAY_HEIGHTS, blocked_heights, door_openings
+from support.plans import apartment
 
 
 def _check_joints(gen, d: Path) -> None:
@@ -137,8 +138,18 @@ def test_open_doors_leave_every_opening_clear(generated_homes, exported_homes, h
 
 @pytest.mark.slow
 def test_closed_doors_from_the_cli_block_openings_and_the_robot(tmp_path):
+    # the hand-drawn apartment's living room, bedroom and bathroom: two doors off the room
+    # the front door opens into (a whole generated home, kitchen and all, took 40-140 s)
+    plan = apartment()
+    storey = plan["storeys"][0]
+    keep = {"living_room_0", "bedroom_0", "bathroom_0"}
+    storey["rooms"] = [r for r in storey["rooms"] if r["name"] in keep]
+    for kind in ("doors", "openings"):
+        storey[kind] = [d for d in storey[kind] if set(d["rooms"]) <= keep]
+    storey["windows"] = [w for w in storey["windows"] if w["room"] in keep]
+    (tmp_path / "plan.json").write_text(json.dumps(plan))
     out = tmp_path / "shut"
-    r = run("generate", "--seed", "11", "--rooms", "bedroom=1,bathroom=1", "--area", "60",
+    r = run("generate", "--seed", "11", "--floorplan", str(tmp_path / "plan.json"),
             "--doors", "closed", "--preset", "fast", "--formats", "mjcf", "-q", "--out", str(out))
     assert r.returncode == 0, r.stderr[-3000:]
     scene = json.loads((out / "scene.json").read_text())
