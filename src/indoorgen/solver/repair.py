@@ -11,6 +11,7 @@ loss) is kept; nothing is relaxed: a room whose requirement cannot be met stays 
 """
 from __future__ import annotations
 
+import logging
 from collections.abc import Callable
 
 from indoorgen.constraints.bounds import STAGE_ORDER, BoundKey, term_stage
@@ -20,6 +21,8 @@ from indoorgen.rng import stream
 from indoorgen.solver.anneal import AnnealConfig, Annealer, StageStats
 from indoorgen.solver.moves import MoveContext, add_to
 from indoorgen.solver.state import ObjState, State
+
+log = logging.getLogger(__name__)
 
 #: fresh solves of a stage tried after the first leaves one of its own hard constraints unmet
 REPAIR_ATTEMPTS = 2
@@ -129,13 +132,15 @@ def repair_stage(state: State, problem: Problem, ev: Evaluator, room: str, stage
         if own_violation(ev.evaluate(), problem, stage) <= 1e-9:
             break
         attempts = attempt
-        kept = _take_out(state, ev, room, stage)
         rng = stream(seed, "room", room, "repair", stage, attempt,
                      *((room_attempt,) if room_attempt else ()))
+        kept = _take_out(state, ev, room, stage)
         annealer = Annealer(state, problem, ev, room, stage, rng, config, namer)
         build_required(annealer.ctx)
         annealer.result = ev.evaluate()
         st = annealer.run(steps)
+        log.info("%s/%s: repair %d: violation %.3g, loss %.3g in %.2fs", room, stage, attempt,
+                 st.violation, st.loss, st.seconds)
         seconds += st.seconds
         if (st.violation, st.loss) < (best.violation, best.loss):
             best = st
