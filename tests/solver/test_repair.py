@@ -13,6 +13,7 @@ from indoorgen.solver.repair import (
     own_violation,
 )
 from indoorgen.solver.stages import solve
+from indoorgen.solver.state import State
 from support.solverscene import ROOM, assert_consistent, make_state, move_context, table_program
 
 
@@ -28,11 +29,15 @@ def test_a_stage_cut_short_is_repaired_by_placing_what_it_requires():
     assert_consistent(st)
 
 
-def test_a_requirement_no_layout_meets_stays_unmet():
+def five_beds() -> tuple[Problem, State]:
+    """A requirement no layout meets: five beds in a 2.0 x 2.2 m room (one fits)."""
     room = scene()[S.Room].named(ROOM)
     beds = scene().related_to(room, on_floor)[S.Bed]
-    problem = Problem(constraints={"five beds": beds.count() == 5})
-    st = make_state(2.0, 2.2)
+    return Problem(constraints={"five beds": beds.count() == 5}), make_state(2.0, 2.2)
+
+
+def test_a_requirement_no_layout_meets_stays_unmet():
+    problem, st = five_beds()
     stats, evaluators = solve(st, {ROOM: problem}, seed=1,
                               steps={"large": 30, "medium": 1, "small": 1})
     large = next(s for s in stats if s.stage == "large")
@@ -69,10 +74,7 @@ def test_build_required_builds_again_until_a_pass_meets_the_stage(monkeypatch):
 
 
 def test_build_required_keeps_the_nearest_pass_when_none_meets_the_stage():
-    room = scene()[S.Room].named(ROOM)
-    beds = scene().related_to(room, on_floor)[S.Bed]
-    problem = Problem(constraints={"five beds": beds.count() == 5})
-    st = make_state(2.0, 2.2)
+    problem, st = five_beds()
     ctx = move_context(st, "large", problem=problem)
     build_required(ctx)
     assert 1 <= len(ctx.mine()) < 5  # the room holds one or two: kept, not emptied
