@@ -277,9 +277,10 @@ def _capped(bounds: list[Bound]) -> list[Bound]:
     """`bounds` with each one's maximum lowered to the least any bound on the same set allows:
     a set one constraint caps is not grown for another's sake (a compact shower barred from a
     large bathroom is not added as its "bath or shower")."""
+    keys = [b.key for b in bounds]
     least: dict[BoundKey, float] = {}
-    for b in bounds:
-        least[b.key] = min(least.get(b.key, math.inf), b.hi)
-    for b in bounds:
-        b.hi = least[b.key]
+    for k, b in zip(keys, bounds, strict=True):
+        least[k] = min(least.get(k, math.inf), b.hi)
+    for k, b in zip(keys, bounds, strict=True):
+        b.hi = least[k]
     return bounds

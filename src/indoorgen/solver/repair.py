@@ -5,9 +5,11 @@ placed first can take every spot a required one needs (a toilet and a basin in t
 bath needs, a bookcase on the wall the sofa must stand against). When a stage ends with a
 violated hard constraint of its own, the stage is solved again from a clean slate: its objects
 are taken out, the objects its count bounds require are placed first, the most constrained
-first (a bath held by two walls before a toilet held by one) with many poses tried each, then
-the stage is annealed again around them. The attempt with fewer violations (then the lower
-loss) is kept; nothing is relaxed: a room whose requirement cannot be met stays failed.
+first (a bath held by two walls before a toilet held by one) with many poses tried each, a pose
+that blocks the walkway drawn again; a placing that leaves the requirements unmet is built
+again from scratch (it is cheap beside an anneal), then the stage is annealed around them. The
+attempt with fewer violations (then the lower loss) is kept; nothing is relaxed: a room whose
+requirement cannot be met stays failed.
 """
 from __future__ import annotations
 
@@ -132,9 +134,9 @@ def repair_stage(state: State, problem: Problem, ev: Evaluator, room: str, stage
         if own_violation(ev.evaluate(), problem, stage) <= 1e-9:
             break
         attempts = attempt
+        kept = _take_out(state, ev, room, stage)
         rng = stream(seed, "room", room, "repair", stage, attempt,
                      *((room_attempt,) if room_attempt else ()))
-        kept = _take_out(state, ev, room, stage)
         annealer = Annealer(state, problem, ev, room, stage, rng, config, namer)
         build_required(annealer.ctx)
         annealer.result = ev.evaluate()
