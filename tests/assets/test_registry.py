@@ -14,7 +14,7 @@ from indoorgen.model.tags import Semantics
 
 def test_every_generator_is_registered_once():
     names = factory_names()
-    assert len(names) == 130 and names == sorted(set(names))
+    assert len(names) == 135 and names == sorted(set(names))
     # family sub-packages are walked too
     assert {"side_chair", "cabinet", "desk", "clock", "pendant_light"} <= set(names)
     assert generators.__path__

@@ -18,6 +18,7 @@ from indoorgen.export.bundle import (
     params_json,
     texture_seed,
 )
+from indoorgen.model.room_types import ROOM_TYPES
 from indoorgen.model.scene import Pose, RelationInstance, Room, Scene, SceneObject
 
 
@@ -90,6 +91,20 @@ def test_a_rooms_elements_are_its_floor_ceiling_and_walls():
     assert [e.parts[0].material for e in again] == [e.parts[0].material for e in els]
     mats = {e.parts[0].material for e in els if e.kind == "wall"}
     assert len(mats) == 1  # every wall of a room in the same material
+
+
+@pytest.mark.parametrize("room_type", ["garage", "bathroom", "utility", "warehouse", "balcony"])
+def test_a_rooms_floor_is_one_its_type_is_laid_with(room_type):
+    """A garage's floor is concrete and a bathroom's tile or stone, whatever the seed; the
+    walls and ceilings draw as in any other room."""
+    floors = ROOM_TYPES[room_type].floors
+    seen = set()
+    for seed in range(12):
+        room = Room("r", room_type, rectangle(4.0, 3.0))
+        geo = build_room(room)
+        els = elements_from_rooms(Scene(seed=seed, rooms={"r": room}), {"r": geo})
+        seen.add(next(e for e in els if e.kind == "floor").parts[0].material.name)
+    assert seen <= set(floors) and (len(seen) > 1 or len(floors) == 1), seen
 
 
 @pytest.mark.xdist_group("export_homes")

@@ -40,6 +40,7 @@ from indoorgen.assets.protocol import Asset, Joint
 from indoorgen.constraints.relations import StableAgainst, parse_relation
 from indoorgen.export.convex import convex_parts, sound_pieces
 from indoorgen.export.physics import Inertial, link_inertials, object_inertials
+from indoorgen.model.room_types import ROOM_TYPES
 from indoorgen.model.scene import Scene, SceneObject
 from indoorgen.model.tags import Subpart
 
@@ -288,11 +289,15 @@ PART_SLOTS = {"floor": "floor", "wall": "wall", "walls": "wall", "ceiling": "cei
 
 def _room_materials(scene: Scene, room: str) -> dict[str, MatRef]:
     """Floor, wall, ceiling, door, frame, glass, wood and metal materials of one room, drawn
-    from the scene seed and the room name (the same room always looks the same), the doors' and
-    frames' woods and metals in the home's style."""
+    from the scene seed and the room name (the same room always looks the same), the floor one
+    its type is laid with (`RoomTypeSpec.floors`: a garage's concrete), the doors' and frames'
+    woods and metals in the home's style."""
     rng = np.random.default_rng([int(scene.seed), zlib.crc32(room.encode())])
     slots = ["floor", "wall", "ceiling", "door", "frame", "glass", "wood", "metal"]
-    names = choose_materials(slots, rng, style=scene.style)
+    known = scene.rooms.get(room)
+    floors = ROOM_TYPES[known.room_type].floors if known and known.room_type in ROOM_TYPES else ()
+    overrides = {"floor": dict.fromkeys(floors, 1.0)} if floors else None
+    names = choose_materials(slots, rng, overrides, style=scene.style)
     return {s: MatRef(m, texture_seed(m, int(rng.integers(TEXTURE_VARIANTS)))) for s, m in names.items()}
 
 

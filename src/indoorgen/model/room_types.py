@@ -37,6 +37,8 @@ DEFAULT_HEIGHT = 2.7
 DEFAULT_DOOR_WIDTH = 0.9
 #: Plan-drawing colour of a type without its own.
 DEFAULT_COLOUR = "#dddddd"
+#: Floors of the rooms that get wet (bathrooms, utility rooms): tile or stone, not wood or carpet.
+WET_FLOORS = ("square_tile", "hex_tile", "herringbone_tile", "slate", "terrazzo")
 
 
 @dataclass(frozen=True)
@@ -62,8 +64,8 @@ class RoomTypeSpec:
     share of exterior walls and corners rewarded (`view`), counts as functional area
     (`functional`), should be square (`square`), may be narrower than other rooms
     (`narrow_ok`), can be the ground floor's entrance room (`entrance`); its `windows` (None:
-    no windows), the `door_width` of a door leading into it, its `colour` in plan drawings and
-    the `aliases` users may type for it."""
+    no windows), the `door_width` of a door leading into it, its `colour` in plan drawings, the
+    `aliases` users may type for it and the `floors` it is laid with."""
 
     name: str
     width: tuple[float, float] = DEFAULT_WIDTH
@@ -82,6 +84,8 @@ class RoomTypeSpec:
     door_width: float = DEFAULT_DOOR_WIDTH
     colour: str = DEFAULT_COLOUR
     aliases: tuple[str, ...] = ()
+    #: the floor materials a room of the type is laid with (empty: any of the homes' floors)
+    floors: tuple[str, ...] = ()
 
 
 _SPECS = (
@@ -102,7 +106,7 @@ _SPECS = (
     RoomTypeSpec(BATHROOM, (2.2, 3.2), (2.0, 2.8), in_floorplans=True, typical_area=7.0,
                  min_area=3.0, functional=True, square=True,
                  windows=Windows(0.5, 0.8, 0.6, 1.5), door_width=0.8, colour="#9fe0d8",
-                 aliases=("bath",)),
+                 aliases=("bath",), floors=WET_FLOORS),
     RoomTypeSpec(CLOSET, (1.6, 2.4), (1.4, 2.2), in_floorplans=True, typical_area=3.0,
                  min_area=2.0, narrow_ok=True, door_width=0.8, colour="#c9b8e0"),
     RoomTypeSpec(HALLWAY, (1.4, 2.0), (3.0, 5.0), in_floorplans=True, typical_area=6.0,
@@ -110,18 +114,20 @@ _SPECS = (
                  colour="#e6e6e6", aliases=("hall", "corridor")),
     RoomTypeSpec(GARAGE, (3.2, 6.0), (5.5, 6.5), in_floorplans=True, typical_area=35.0,
                  min_area=15.0, exterior=True, square=True,
-                 windows=Windows(0.6, 1.2, 0.5, 1.7), door_width=0.9, colour="#b8b8b8"),
+                 windows=Windows(0.6, 1.2, 0.5, 1.7), door_width=0.9, colour="#b8b8b8",
+                 floors=("concrete",)),
     RoomTypeSpec(BALCONY, (2.0, 4.0), (1.4, 2.2), in_floorplans=True, typical_area=6.0,
-                 min_area=3.0, exterior=True, view=True, colour="#bfe3a8"),
+                 min_area=3.0, exterior=True, view=True, colour="#bfe3a8",
+                 floors=("square_tile", "slate", "concrete", "pine_planks")),
     RoomTypeSpec(UTILITY, (2.0, 3.0), (1.8, 2.6), in_floorplans=True, typical_area=3.0,
                  min_area=2.0, square=True, windows=Windows(0.5, 0.8, 0.6, 1.4),
-                 door_width=0.8, colour="#d8d0a8"),
+                 door_width=0.8, colour="#d8d0a8", floors=(*WET_FLOORS, "concrete")),
     RoomTypeSpec(STAIRCASE_ROOM, (2.4, 3.2), (3.0, 4.5), in_floorplans=True, typical_area=20.0,
                  min_area=10.0, windows=Windows(0.6, 1.0, 1.2, 1.0), colour="#e0c0d0",
                  aliases=("staircase", "stairs", "stair")),
     # single rooms only
     RoomTypeSpec(OFFICE, (3.0, 4.2), (2.8, 3.8)),
-    RoomTypeSpec(WAREHOUSE, (14.0, 22.0), (10.0, 16.0), height=6.5),
+    RoomTypeSpec(WAREHOUSE, (14.0, 22.0), (10.0, 16.0), height=6.5, floors=("concrete",)),
 )
 
 #: Every room type by name: the floorplan types first, in the order error messages list them.

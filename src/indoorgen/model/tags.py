@@ -46,6 +46,8 @@ class Semantics(str, Enum):
     WallMounted = "wall_mounted"
     CeilingMounted = "ceiling_mounted"
     Warehouse = "warehouse"
+    #: a garage's tools and paint: not decor for a living room's tables or a bedroom's shelves
+    Workshop = "workshop"
     # concrete kinds
     Chair = "chair"
     DiningChair = "dining_chair"
@@ -104,6 +106,7 @@ class Semantics(str, Enum):
     Desk = "desk"
     ConsoleTable = "console_table"
     SectionalSofa = "sectional_sofa"
+    Workbench = "workbench"
     # -- seating, beds, tables: more tags here
     # storage and lighting
     Wardrobe = "wardrobe"
@@ -119,6 +122,8 @@ class Semantics(str, Enum):
     PendantLight = "pendant_light"
     DeskLamp = "desk_lamp"
     WallSconce = "wall_sconce"
+    ToolChest = "tool_chest"
+    StorageRack = "storage_rack"
     # -- storage and lighting: more tags here
     TableLamp = "table_lamp"
     # decor
@@ -162,6 +167,8 @@ class Semantics(str, Enum):
     Remote = "remote"
     Basket = "basket"
     Box = "box"
+    Toolbox = "toolbox"
+    PaintCan = "paint_can"
     # -- small objects: more tags here
     # architecture
     InteriorDoor = "interior_door"

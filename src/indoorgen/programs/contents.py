@@ -3,10 +3,10 @@ food in the fridge, plates in the dishwasher, a bowl in the microwave, clothes (
 rail and folded) and shoes in wardrobes, folded clothes in dressers' drawers, shoes on shoe
 racks, books in nightstands and a lamp, a book or two and a little decor on them, lamps and
 decor on dressers, tableware on dining tables; in a closet, clothes, towels, shoes, boxes and
-baskets, and on a garage's or utility room's shelves, boxes, baskets and shoes
-(`HOLDS_BY_ROOM`). `contents(room, fullness, room_type)` is one `Problem` that
-`programs.get_program` adds to every room program, so the room programs only say which furniture
-stands where.
+baskets, and on a garage's or utility room's shelves, boxes, baskets, shoes, paint and
+toolboxes (`HOLDS_BY_ROOM`); tools, paint and jars of screws on a workbench and a tool chest.
+`contents(room, fullness, room_type)` is one `Problem` that `programs.get_program` adds to every
+room program, so the room programs only say which furniture stands where.
 
 Counts are per piece of furniture and scale with `fullness` (a per-scene factor: below 1 a
 sparse home, above 1 a cluttered one). No lower bounds: a score term rewards every object put
@@ -171,6 +171,16 @@ HOLDS: dict[str, tuple[Load, ...]] = {
         Load("a laptop", (S.Laptop,), on_top, 1),
         Load("a remote", (S.Remote,), on_top, 1),
     ),
+    "workbenches": (  # the tools at hand on the top, paint and boxes on the shelf under it
+        Load("a toolbox", (S.Toolbox,), on_top, 1),
+        Load("paint", (S.PaintCan,), on_top, 3),
+        Load("jars of screws", (S.Jar,), on_top, 3),
+        Load("boxes", (S.Box,), on_top, 2),
+    ),
+    "tool chests": (
+        Load("a toolbox", (S.Toolbox,), on_top, 1),
+        Load("paint", (S.PaintCan,), on_top, 2),
+    ),
     "beds": (  # a laptop on every bed was the one prop repeated across bedrooms: desks hold them
         Load("folded clothes", (S.FoldedClothes,), on_top, 2),
         Load("a book", (S.Book,), on_top, 1),
@@ -203,13 +213,16 @@ CLOSET_HOLDS: dict[str, tuple[Load, ...]] = {
         Load("shoes", (S.Shoes,), on_top, 6),
     ),
 }
-#: what shelving holds in a garage or a utility room: things stored, not books and ornaments
+#: what shelving holds in a garage or a utility room: things stored (paint and tools among
+#: them), not books and ornaments
 STORE_HOLDS: dict[str, tuple[Load, ...]] = {
     **HOLDS,
     "shelving": (
         Load("boxes", (S.Box,), on_top, 4),
         Load("baskets", (S.Basket,), on_top, 2),
         Load("shoes", (S.Shoes,), on_top, 2),
+        Load("paint", (S.PaintCan,), on_top, 3),
+        Load("a toolbox", (S.Toolbox,), on_top, 1),
     ),
 }
 #: room types whose furniture holds other things than `HOLDS` says
@@ -243,6 +256,8 @@ def holders(room: ObjSet) -> dict[str, ObjSet]:
         "desks": floor[S.Desk],
         "sofas": floor[S.Sofa],
         "beds": floor[S.Bed],
+        "workbenches": floor[S.Workbench],
+        "tool chests": floor[S.ToolChest],
     }
 
 

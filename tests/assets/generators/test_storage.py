@@ -10,7 +10,7 @@ import shapely.geometry as sg
 
 from indoorgen.assets.catalogue import get_factory
 from indoorgen.model.tags import Semantics, Subpart
-from support.assetcheck import TOL, as_manifold, build, distances, make, surface_gap
+from support.assetcheck import TOL, as_manifold, build, distances, make, point_inside, surface_gap
 
 STORAGE = ["cabinet", "wardrobe", "dresser", "nightstand", "cell_shelf", "wall_shelf",
            "corner_shelf", "shoe_rack"]
@@ -203,3 +203,42 @@ def test_case_backs_stand_against_the_wall(name, seed):
     back = a.surface("back")
     assert np.allclose(back.corners()[:, 0], -a.extents[0] / 2, atol=TOL)
     assert surface_gap(a, back) < TOL
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_tool_chest_drawers_graduated(seed):
+    """A tool chest's drawers all slide out, the shallow ones on top; it stands on casters."""
+    f, p, _, a = build("tool_chest", seed)
+    assert {Semantics.Storage, Semantics.ToolChest} <= f.tags
+    assert a.joints and all(j.kind == "prismatic" and np.allclose(j.axis, (1, 0, 0))
+                            for j in a.joints)
+    heights = {}
+    for j in a.joints:
+        lo, hi = a.link_mesh(j.child).bounds
+        heights[round(float(lo[2]), 4)] = float(hi[2] - lo[2])
+    by_z = [heights[z] for z in sorted(heights)]
+    assert (np.diff(by_z) <= 1e-6).all()  # deeper towards the floor
+    assert by_z[-1] >= 0.06
+    top = a.surface("top")
+    assert abs(top.origin[2] - a.extents[2]) < TOL and surface_gap(a, top) < TOL
+    # casters: the floor under the middle of the case is open
+    assert not point_inside(a, [(0.0, 0.0, 0.02)])[0]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_storage_rack_shelves(seed):
+    """A steel rack's shelves are evenly spaced, each a support surface on its board with room
+    for a storage box above it."""
+    f, p, _, a = build("storage_rack", seed)
+    assert {Semantics.Shelf, Semantics.StorageRack} <= f.tags
+    shelves = sorted((s for s in a.surfaces if s.subpart == Subpart.SupportSurface),
+                     key=lambda s: s.origin[2])
+    assert shelves[-1].name == "top" and len(shelves) >= 3
+    zs = np.array([s.origin[2] for s in shelves])
+    assert np.allclose(np.diff(zs), np.diff(zs)[0], atol=1e-6)
+    assert a.extents[2] - 0.01 <= zs[-1] <= a.extents[2]
+    for s in shelves:
+        assert surface_gap(a, s) < TOL
+    for s in shelves[:-1]:  # nothing in the way of a 0.25 m box above each lower shelf
+        hit = a.mesh.ray.intersects_location([s.origin + (0, 0, 0.001)], [[0.0, 0.0, 1.0]])[0]
+        assert hit[:, 2].min() - s.origin[2] >= 0.25

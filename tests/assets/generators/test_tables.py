@@ -90,3 +90,35 @@ def test_console_table(legs_style, n):
     assert abs(shelf.origin[2] - p["shelf_height"]) < TOL
     assert_on_mesh(a, shelf)
     assert a.extents[0] <= 0.45 + TOL  # a console is narrow
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_workbench_top_shelf_and_drawer(seed):
+    """A workbench's top is at standing work height, in front of any pegboard's hooks; its
+    shelf has room under the top; a drawer, if any, slides out under the top."""
+    f, p, _, a = build("workbench", seed)
+    assert {S.Table, S.Workbench} <= f.tags
+    top, shelf = a.surface("top"), a.surface("shelf")
+    assert 0.86 - TOL <= top.origin[2] <= 0.95 + TOL
+    assert_on_mesh(a, top)
+    assert_on_mesh(a, shelf)
+    hit = a.mesh.ray.intersects_location([shelf.origin + (0, 0, 0.001)], [[0.0, 0.0, 1.0]])[0]
+    assert hit[:, 2].min() - shelf.origin[2] >= 0.45  # a paint can or a box fits under the top
+    # nothing stands above the top's surface within 0.3 m (the hooks are behind it)
+    x0, y0, x1, y1 = top.polygon.bounds
+    probes = [top.to_world(np.array([[x, y]]))[0] + (0, 0, 0.01)
+              for x in (x0, x1) for y in (y0, 0.0, y1)]
+    for q in probes:
+        up = a.mesh.ray.intersects_location([q], [[0.0, 0.0, 1.0]])[0]
+        assert len(up) == 0 or up[:, 2].min() - q[2] > 0.3
+    assert len(a.joints) == (1 if p["drawer"] else 0)
+    for j in a.joints:
+        assert j.kind == "prismatic" and np.allclose(j.axis, (1, 0, 0)) and j.upper > 0.3
+        lo, hi = a.link_mesh(j.child).bounds
+        assert hi[2] <= p["height"] - p["top_thickness"] + TOL
+
+
+def test_workbench_pegboard_and_hooks():
+    f, p, a = make("workbench", 1, pegboard=True, pegboard_height=0.6, n_hooks=5)
+    assert abs(a.extents[2] - p["height"] - 0.6) < TOL
+    assert a.surface("top").polygon.bounds[0] + a.surface("top").origin[0] > -p["depth"] / 2 + 0.08

@@ -121,10 +121,10 @@ def bedroom(room: ObjSet) -> Problem:
         dressers | beds | reading_chairs | desk_chairs | benches, on_top)
     decor = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Textile, S.Balloon,
-        S.Electronics, S.Shoes).related_to(surfaces, on_top)
+        S.Electronics, S.Shoes, S.Workshop).related_to(surfaces, on_top)
     # what the wardrobe and the shelves hold (clothes, shoes, boxes, books, decor)
-    kept = scene()[S.SmallObject].related_to(wardrobes, inside) | scene()[S.SmallObject].related_to(
-        shelves | bookcases, on_top)
+    household = scene()[S.SmallObject].excluding(S.Workshop)
+    kept = household.related_to(wardrobes, inside) | household.related_to(shelves | bookcases, on_top)
 
     def side_clearance(bed: ObjSet, side: str) -> Scalar:
         return front_clearance(bed, blockers.excluding(S.Nightstand) | room, probe=SIDE_PROBE,

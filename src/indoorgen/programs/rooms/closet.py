@@ -7,11 +7,11 @@ from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor
 
 def closet(room: ObjSet) -> Problem:
     """As much storage as fits along the walls (wardrobes, shelving, dressers, cupboards, shoe
-    racks; no bedside or living-room pieces), doors free."""
+    racks; no bedside, living-room or garage pieces), doors free."""
     along_walls = scene().related_to(room, on_floor).related_to(room, against_wall)
     storage = along_walls[S.Storage, S.Furniture].excluding(
         S.Warehouse, S.KitchenCabinet, S.TVStand, S.Vanity, S.WallMounted, S.BathroomFixture,
-        S.Nightstand)
+        S.Nightstand, S.ToolChest, S.StorageRack)
     return Problem(
         constraints={
             "storage along the walls": storage.count().in_range(1, 3),

@@ -65,8 +65,8 @@ def dining_room(room: ObjSet) -> Problem:
                     scene()[S.FruitBowl].related_to(tables, on_top),
                     scene()[S.Candle].related_to(tables, on_top))
     on_sideboard = scene()[S.SmallObject].excluding(
-        S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile, S.Shoes
-    ).related_to(sideboards, on_top)
+        S.Food, S.Laptop, S.Cutlery, S.Kitchenware, S.Box, S.Bottle, S.Can, S.Textile, S.Shoes,
+        S.Workshop).related_to(sideboards, on_top)
     lights = ceiling_lights(room)
     table_rugs = sized_rugs(floor, RUG_DIAMETER, 2.0, shape="round")
     return Problem(

@@ -131,7 +131,7 @@ def living_room(room: ObjSet) -> Problem:
     vases, baskets = (scene()[t].related_to(bookcases, on_top) for t in (S.Vase, S.Basket))
     table_things = scene()[S.SmallObject].excluding(
         S.Food, S.Kitchenware, S.Tableware, S.Lighting, S.Book, S.Balloon, S.Laptop, S.Textile,
-        S.Box, S.Shoes).related_to(
+        S.Box, S.Shoes, S.Workshop).related_to(
         coffee_tables | side_tables | consoles, on_top)
     remotes = scene()[S.Remote].related_to(coffee_tables, on_top)
     everyday = books | table_things | remotes

@@ -24,6 +24,7 @@ from indoorgen.assets.shapes.moving_parts import (
     REVEAL,
     DoorJoint,
     drawer,
+    drawer_floor,
     hinged_door,
     make_joint,
 )
@@ -329,6 +330,13 @@ class CaseFactory(PartsFactory):
     def bottom_is_solid(self, params: dict[str, Any]) -> bool:
         """Whether the case stands on a plinth (its footprint rests on mesh)."""
         return self.resolve(params).get("base_style") == "plinth"
+
+    def drawer_floors(self, case: Case) -> list[Surface]:
+        """Each drawer's floor (`drawer_<i>_floor`), an Interior surface moving with its drawer."""
+        depth, r = self.drawer_depth(case), REVEAL
+        return [drawer_floor(f"drawer_{i}_floor", case.front_x, c.y0 + r, c.y1 - r, c.z0 + r,
+                             depth, f"drawer_{i}")
+                for i, c in enumerate(case.cells) if c.kind == "drawer"]
 
     def drawer_depth(self, case: Case) -> float:
         """How deep the drawers reach into the case (back panel and 2 cm clear)."""

@@ -25,10 +25,8 @@ from indoorgen.assets.shapes.frames import carcass, legs
 from indoorgen.assets.shapes.moving_parts import (
     DOOR_OPEN,
     FRONT_PROUD,
-    REVEAL,
     Front,
     cabinet_fronts,
-    drawer_floor,
     make_joint,
 )
 from indoorgen.assets.shapes.primitives import OVERLAP, Part, bevel_box, box, box_between
@@ -255,11 +253,7 @@ class Dresser(CaseFactory):
         """The `top`, the footprint, the back and each drawer's floor (`drawer_<i>_floor`,
         moving with its drawer)."""
         W, D, H = p["width"], p["depth"], p["height"]
-        case = self.layout(p)
-        depth, r = self.drawer_depth(case), REVEAL
-        floors = [drawer_floor(f"drawer_{i}_floor", case.front_x, c.y0 + r, c.y1 - r, c.z0 + r,
-                               depth, f"drawer_{i}")
-                  for i, c in enumerate(case.cells) if c.kind == "drawer"]
+        floors = self.drawer_floors(self.layout(p))
         return [top_surface(D, W, H, p["top_overhang"]),
                 base_bottom(D, W, p["base_style"]),
                 back_surface(W, p["base_height"], H, D)] + floors
