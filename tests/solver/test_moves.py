@@ -11,7 +11,7 @@ from indoorgen.constraints import Problem, scene
 from indoorgen.constraints.relations import CONTACT_GAP
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
-from indoorgen.programs.relations import on_floor, on_top
+from indoorgen.programs.relations import hung_from, on_floor, on_top
 from indoorgen.solver.moves import MOVES, MoveContext, MoveOutcome
 from indoorgen.solver.placement import placements_hold, planar
 from support.solverscene import (
@@ -354,4 +354,23 @@ def test_add_fills_a_bookcase_with_things_wholly_on_its_shelves_and_clear_of_eac
         assert all(shelf.polygon.buffer(1e-6).contains(
             sg.Point(np.dot(np.subtract(c, shelf.origin[:2]), shelf.u[:2]),
                      np.dot(np.subtract(c, shelf.origin[:2]), shelf.v[:2]))) for c in corners), n
+    assert_consistent(st)
+
+
+def test_add_hangs_clothes_from_a_wardrobes_rail():
+    """Garments on hangers are added on the wardrobe's rail, across it and clear of each other
+    (a rail's top is a level surface, but no outline fits on it: what hangs is placed by its
+    hook, not by its footprint)."""
+    st = make_state(5.0, 4.0)
+    put(st, "wardrobe", floor(), (2.5, 2.0))
+    wardrobes = scene().related_to(scene()[S.Room].named(ROOM), on_floor)[S.Wardrobe]
+    problem = Problem(constraints={
+        "hung clothes": scene()[S.Garment].related_to(wardrobes, hung_from).count() <= 8})
+    ctx = move_context(st, "small", 3, problem)
+    added = [n for _ in range(20) if (out := _apply(ctx, "add")) for n in out.added]
+    assert len(added) >= 4
+    for n in added:
+        (p,) = st.objects[n].placements
+        assert p.parent_surface.startswith("rail_")
+        assert placements_hold(st, n) and not st.collides(n), n
     assert_consistent(st)

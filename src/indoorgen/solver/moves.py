@@ -249,9 +249,10 @@ def _place_on(ctx: MoveContext, ob: ObjState, tries: int | None = None) -> list[
 
 def _on_furniture(state: State, ob: ObjState, anchor: Surface) -> bool:
     """Does the object rest by one relation alone on a level surface of another object (a
-    shelf, a tabletop, a cupboard's floor), where `_SurfaceSpots` finds it room?"""
+    shelf, a tabletop, a cupboard's floor), where `_SurfaceSpots` finds it room? Not a rail:
+    what hangs from one (a coat on its hanger) does not fit its outline on the rail's top."""
     return len(ob.placements) == 1 and ob.placements[0].parent not in state.rooms \
-        and anchor.normal[2] > 0.99
+        and anchor.normal[2] > 0.99 and anchor.subpart != Subpart.Rail
 
 
 class _SurfaceSpots:
