@@ -11,6 +11,7 @@ from indoorgen.quality.rules import (
     hood_over_range,
     kitchen_has_sink,
     light_headroom,
+    light_off_the_walls,
     reach,
     room_has_light,
     wall_cabinet_height,
@@ -43,6 +44,21 @@ def test_a_pendant_leaves_headroom_over_the_floor_and_may_hang_lower_over_a_tabl
         (c,) = light_headroom(context(sc))
         assert c.ok == ok and abs(c.value - bottom) < 1e-6, (over_table, bottom)
         assert c.limit == (min(2.0, size("dining_table_rect")[2] + 0.7) if over_table else 2.0)
+
+
+def test_a_ceiling_light_hangs_over_the_room_not_by_a_wall():
+    """A light 0.3 m off a wall fails, one in the middle of the room passes; in a 1.2 m wide
+    hallway the middle itself (0.6 m off each wall) passes, 0.4 m off a wall does not."""
+    for x, away, ok in ((0.3, 0.3, False), (3.0, 2.5, True)):  # in a 6 x 5 m room
+        sc = new_scene("bedroom")
+        put(sc, "ceiling_light", x, 2.5, z=2.5)
+        (c,) = light_off_the_walls(context(sc))
+        assert c.ok == ok and abs(c.value - away) < 1e-6 and c.limit == 0.6
+    for y, ok in ((0.6, True), (0.4, False)):
+        sc = new_scene("hallway", width=4.0, depth=1.2)
+        put(sc, "ceiling_light", 2.0, y, z=2.5)
+        (c,) = light_off_the_walls(context(sc))
+        assert c.ok == ok and abs(c.limit - 0.48) < 1e-6, (y, c)
 
 
 def test_kitchen_without_sink_fails_the_scene_with_a_named_reason():

@@ -25,6 +25,14 @@ DESK_CHAIR_ROOM = 0.8
 #: head (a 95th-percentile man is 1.87 m tall; doors are 2.03 m high). The quality report's
 #: `light_headroom` measures the same
 LIGHT_HEADROOM = 2.0
+#: the least distance (m) from a ceiling light's centre to the walls: lighting layouts centre a
+#: room's fixture, and keep recessed ones 2-3 ft (0.6-0.9 m) off the walls so the light falls on
+#: the room, not in a corner. The quality report's `light_off_the_walls` measures the same (in
+#: a room too narrow for it, most of the way to its middle)
+LIGHT_FROM_WALLS = 0.6
+#: how much farther off the walls the programs aim a light (m), and the weight of each metre
+#: short of that: less than a light centred over a dining table
+LIGHT_AIM, LIGHT_WEIGHT = 0.2, 4.0
 #: the least height (m) of a light's bottom over a dining table: lighting guidance hangs it
 #: 30-36 in (0.76-0.91 m) over the table's top, which stands 0.72-0.78 m high
 OVER_TABLE_BOTTOM = 1.5
@@ -80,9 +88,15 @@ def ceiling_lights(room: ObjSet) -> ObjSet:
 
 def lights_clear(room: ObjSet, least: float = LIGHT_HEADROOM) -> Problem:
     """What every room asks of its ceiling lights: their bottoms `least` metres or more above the
-    floor (a centimetre short weighs as much as a missing object)."""
-    return Problem(constraints={"lights clear of heads": ceiling_lights(room).all(
-        lambda li: (height(li) - li.volume((2,)) * 0.5) * 100 >= least * 100)})
+    floor (a centimetre short weighs as much as a missing object), and their centres over the
+    room, LIGHT_FROM_WALLS or more off the walls (as far as the room allows)."""
+    lights = ceiling_lights(room)
+    return Problem(
+        constraints={"lights clear of heads": lights.all(
+            lambda li: (height(li) - li.volume((2,)) * 0.5) * 100 >= least * 100)},
+        score_terms={"lights over the room": lights.mean(
+            lambda li: (li.distance(room) + li.volume((0,)) * 0.5)
+            .hinge(LIGHT_FROM_WALLS + LIGHT_AIM, 99.0)).minimize(LIGHT_WEIGHT)})
 
 
 def across_from(distance: float) -> StableAgainst:

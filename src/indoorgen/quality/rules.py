@@ -1,6 +1,6 @@
-"""Layout rules about what a room holds and at what height: lights and their headroom, the
-kitchen sink, the work triangle, continuous counter runs, wall cabinets and hoods, bathroom
-accessories, and everyday objects within reach.
+"""Layout rules about what a room holds and at what height: lights, their headroom and their
+place off the walls, the kitchen sink, the work triangle, continuous counter runs, wall cabinets
+and hoods, bathroom accessories, and everyday objects within reach.
 
 Each rule is a function `Context -> list[Check]` registered with `context.rule`; its constants
 name their source.
@@ -11,11 +11,12 @@ import itertools
 
 import numpy as np
 import shapely.geometry as sg
+from shapely.ops import polylabel
 
 from indoorgen.model.tags import Semantics as S
 from indoorgen.model.tags import Subpart
 from indoorgen.programs.contents import EVERYDAY, REACH_HEIGHT
-from indoorgen.programs.relations import LIGHT_HEADROOM
+from indoorgen.programs.relations import LIGHT_FROM_WALLS, LIGHT_HEADROOM
 from indoorgen.programs.rooms.kitchen import IN_RUN, TRIANGLE_LEG
 from indoorgen.quality.context import Check, Context, Placed, is_wall_hung, on_floor, rule
 
@@ -77,6 +78,28 @@ def light_headroom(ctx: Context) -> list[Check]:
         bottom = p.bottom - p.floor
         out.append(Check(p.obj.room, (p.name, *(t.name for t in under)), bottom, least,
                          bottom >= least - 1e-6))
+    return out
+
+
+#: in a room narrower than twice LIGHT_FROM_WALLS, a ceiling light this share of the way from
+#: the walls to the room's middle (its pole of inaccessibility) at least
+TOWARDS_MIDDLE = 0.8
+
+
+@rule("light_off_the_walls")
+def light_off_the_walls(ctx: Context) -> list[Check]:
+    """A ceiling light hangs over the room, not by a wall: its centre LIGHT_FROM_WALLS or more
+    from the walls, or, in a narrower room, TOWARDS_MIDDLE of the way to the room's middle;
+    value: its centre's distance to the walls (m)."""
+    out = []
+    for p in ctx.with_tags(S.CeilingMounted):
+        if not p.has(S.Lighting):
+            continue
+        walls = sg.Polygon(ctx.scene.rooms[p.obj.room].polygon)
+        middle = polylabel(walls, tolerance=0.01).distance(walls.exterior)
+        least = min(LIGHT_FROM_WALLS, TOWARDS_MIDDLE * middle)
+        away = sg.Point(p.xy).distance(walls.exterior)
+        out.append(Check(p.obj.room, (p.name,), round(away, 4), least, away >= least - 1e-6))
     return out
 
 
