@@ -26,6 +26,7 @@ from indoorgen.assets.shapes.primitives import (
     box_between,
     circle_polygon,
     cylinder,
+    rounded_rect_section,
     torus,
 )
 from indoorgen.assets.shapes.surfaces import bottom_rect, support_polygon, support_rect
@@ -487,13 +488,6 @@ class StorageBox(PartsFactory):
     def _plastic(self, p) -> bool:
         return p["style"] == "plastic"
 
-    def _plan(self, D: float, W: float, r: float) -> m3d.CrossSection:
-        if r < 1e-4:
-            return m3d.CrossSection.square((D, W), True)
-        r = min(r, 0.45 * min(D, W))
-        return m3d.CrossSection.square((D - 2 * r, W - 2 * r), True).offset(r, m3d.JoinType.Round,
-                                                                          2.0, 24)
-
     def _dims(self, p):
         """(top depth, top width, bottom scale, corner radius, overhang of the rim)."""
         D, W = p["depth"], p["width"]
@@ -511,7 +505,7 @@ class StorageBox(PartsFactory):
             return [Part(box_between((-D / 2 - fl, -W / 2 - fl, 0.0), (D / 2 + fl, W / 2 + fl, H)),
                          "plastic" if self._plastic(p) else "cardboard")]
         slot = "plastic" if self._plastic(p) else "cardboard"
-        plan = self._plan(D, W, r)
+        plan = rounded_rect_section(D, W, r)
         outer = m3d.Manifold.extrude(plan.scale((sc, sc)), H, 0, 0.0, (1.0 / sc, 1.0 / sc))
         inner_plan = plan.offset(-wt, m3d.JoinType.Round, 2.0, 24)
         cavity = m3d.Manifold.extrude(inner_plan.scale((sc, sc)), H, 0, 0.0,
@@ -528,7 +522,7 @@ class StorageBox(PartsFactory):
                 body = body - cut
         out = [Part(body, slot)]
         if fl:
-            ring = (m3d.Manifold.extrude(self._plan(D + 2 * fl, W + 2 * fl, r + fl), 0.008)
+            ring = (m3d.Manifold.extrude(rounded_rect_section(D + 2 * fl, W + 2 * fl, r + fl), 0.008)
                     - m3d.Manifold.extrude(plan.offset(-0.5 * wt, m3d.JoinType.Round, 2.0, 24), 0.02)
                     .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, H - 0.008))
             out.append(Part(ring, slot))
@@ -548,18 +542,17 @@ class StorageBox(PartsFactory):
         if not detail:
             return [Part(box_between((-Dl / 2, -Wl / 2, z0 - sk), (Dl / 2, Wl / 2, z0 + lt)),
                          slot, "lid")]
-        plate = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0), lt).translate(
-            (0.0, 0.0, z0))
+        lid_plan = rounded_rect_section(Dl, Wl, r + fl + g + wt if r else 0.0)
+        plate = m3d.Manifold.extrude(lid_plan, lt).translate((0.0, 0.0, z0))
         parts = [plate]
         if lift:
-            outer = m3d.Manifold.extrude(self._plan(Dl, Wl, r + fl + g + wt if r else 0.0),
-                                         sk + SMALL_OVERLAP)
-            inner = m3d.Manifold.extrude(self._plan(Dl - 2 * wt, Wl - 2 * wt, r + fl + g if r else 0.0),
-                                         sk + 0.02).translate((0.0, 0.0, -0.01))
+            outer = m3d.Manifold.extrude(lid_plan, sk + SMALL_OVERLAP)
+            skirt_in = rounded_rect_section(Dl - 2 * wt, Wl - 2 * wt, r + fl + g if r else 0.0)
+            inner = m3d.Manifold.extrude(skirt_in, sk + 0.02).translate((0.0, 0.0, -0.01))
             parts.append((outer - inner).translate((0.0, 0.0, z0 - sk)))
         else:  # a raised stacking rim on the flat lid
-            rim = (m3d.Manifold.extrude(self._plan(Dl - 0.01, Wl - 0.01, r), 0.006)
-                   - m3d.Manifold.extrude(self._plan(Dl - 0.02, Wl - 0.02, r), 0.02)
+            rim = (m3d.Manifold.extrude(rounded_rect_section(Dl - 0.01, Wl - 0.01, r), 0.006)
+                   - m3d.Manifold.extrude(rounded_rect_section(Dl - 0.02, Wl - 0.02, r), 0.02)
                    .translate((0.0, 0.0, -0.005))).translate((0.0, 0.0, z0 + lt - SMALL_OVERLAP))
             parts.append(rim)
         return [Part(q, slot, "lid") for q in parts]
@@ -595,7 +588,7 @@ class StorageBox(PartsFactory):
         rim = 0.0 if p["lid_style"] == "lift_off" else 0.012
         inset = max(r, 0.0) + 0.002
         # the underside: the (scaled) plan 0.5 mm in from its edge
-        foot = largest_polygon(self._plan(D, W, r).scale((sc, sc)).offset(
+        foot = largest_polygon(rounded_rect_section(D, W, r).scale((sc, sc)).offset(
             -0.0005, m3d.JoinType.Miter, 2.0))
         return [support_polygon("bottom", (0, 0, 0), foot, subpart=Subpart.Bottom, up=False),
                 support_rect("top", (0, 0, z_top), Dl / 2 - inset - rim, Wl / 2 - inset - rim),

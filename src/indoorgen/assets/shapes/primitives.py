@@ -122,6 +122,16 @@ def rounded_slab(dx: float, dy: float, z0: float, z1: float, corner: float,
     return m3d.Manifold.hull_points(np.vstack(pts))
 
 
+def rounded_rect_section(d: float, w: float, r: float) -> m3d.CrossSection:
+    """A d (X) by w (Y) rectangle centred on the origin, its corners rounded by `r` (at most
+    0.45 of the smaller side), as a manifold cross-section to extrude (box walls, lids)."""
+    if r < 1e-4:
+        return m3d.CrossSection.square((d, w), True)
+    r = min(r, 0.45 * min(d, w))
+    return m3d.CrossSection.square((d - 2 * r, w - 2 * r), True).offset(r, m3d.JoinType.Round,
+                                                                      2.0, 24)
+
+
 def rounded_rect_polygon(dx: float, dy: float, corner: float, inset: float,
                          center: Sequence[float] = (0.0, 0.0)) -> sg.Polygon:
     """The plan of `rounded_slab(dx, dy, ..., corner)` shrunk by `inset`, as a shapely polygon

@@ -21,6 +21,7 @@ from indoorgen.assets.shapes.primitives import (
     circle_polygon,
     lathe,
     rod,
+    rounded_rect_section,
     torus,
 )
 from indoorgen.assets.shapes.surfaces import support_polygon
@@ -30,14 +31,6 @@ from indoorgen.model.tags import Subpart
 
 #: how far a toolbox's lid opens about its back edge (rad): past upright, so it stays open
 LID_OPEN = math.radians(105)
-
-
-def _plan(d: float, w: float, r: float) -> m3d.CrossSection:
-    """A d (X) by w (Y) rectangle centred on the origin, its corners rounded by `r`."""
-    if r < 1e-4:
-        return m3d.CrossSection.square((d, w), True)
-    r = min(r, 0.45 * min(d, w))
-    return m3d.CrossSection.square((d - 2 * r, w - 2 * r), True).offset(r, m3d.JoinType.Round, 2.0, 24)
 
 
 def _tapered(plan: m3d.CrossSection, z0: float, z1: float, s0: float, s1: float) -> m3d.Manifold:
@@ -114,7 +107,7 @@ class Toolbox(PartsFactory):
         """The open box: tapered walls and floor."""
         D, W, wt = p["depth"], p["length"], p["wall_thickness"]
         hb, _, _, sc, _, r = self._dims(p)
-        plan = _plan(D, W, r)
+        plan = rounded_rect_section(D, W, r)
         inner = plan.offset(-wt, m3d.JoinType.Miter, 2.0)
         top = hb + 0.01
         return _tapered(plan, 0.0, hb, sc, 1.0) - _tapered(
@@ -124,7 +117,7 @@ class Toolbox(PartsFactory):
         """The lid: an upturned tray over the box's rim."""
         D, W, wt = p["depth"], p["length"], p["wall_thickness"]
         _, z0, hl, _, st, r = self._dims(p)
-        plan = _plan(D, W, r)
+        plan = rounded_rect_section(D, W, r)
         inner = plan.offset(-wt, m3d.JoinType.Miter, 2.0)
         lo, hi = z0 - 0.005, z0 + hl - wt
         return _tapered(plan, z0, z0 + hl, 1.0, st) - _tapered(
@@ -179,7 +172,7 @@ class Toolbox(PartsFactory):
     def extra_surfaces(self, p: dict[str, Any]) -> list[Surface]:
         """The underside: the box's foot, 0.5 mm in from its edge."""
         _, _, _, sc, _, r = self._dims(p)
-        foot = largest_polygon(_plan(p["depth"], p["length"], r).scale((sc, sc)).offset(
+        foot = largest_polygon(rounded_rect_section(p["depth"], p["length"], r).scale((sc, sc)).offset(
             -0.0005, m3d.JoinType.Miter, 2.0))
         return [support_polygon("bottom", (0, 0, 0), foot, subpart=Subpart.Bottom, up=False)]
 
