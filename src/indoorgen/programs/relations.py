@@ -86,6 +86,12 @@ def ceiling_lights(room: ObjSet) -> ObjSet:
     return scene()[Semantics.CeilingMounted, Semantics.Lighting].related_to(room, on_ceiling)
 
 
+def flush_lights(room: ObjSet) -> ObjSet:
+    """The flush-mounted ceiling lights of `room` (no pendant): what a garage, a utility room or
+    a closet is lit by, where a hanging shade would meet a car's roof or a shelf's top box."""
+    return ceiling_lights(room).excluding(Semantics.PendantLight)
+
+
 def lights_clear(room: ObjSet, least: float = LIGHT_HEADROOM) -> Problem:
     """What every room asks of its ceiling lights: their bottoms `least` metres or more above the
     floor (a centimetre short weighs as much as a missing object), and their centres over the

@@ -27,6 +27,7 @@ def test_a_garage_is_a_workshop_and_a_store(garage):
     assert made["corner_shelf"] == 0 and made["shoe_rack"] == 0
     assert made["storage_rack"] + made["cell_shelf"] >= 1
     assert len(garage.objects) >= 30, made
+    assert made["ceiling_light"] >= 1 and made["pendant_light"] == 0  # lit flush, nothing hangs
     # the workbench is in use: something stands on its top
     bench = next(o for o in garage.objects.values() if o.generator == "workbench")
     on_bench = [o for o in garage.objects.values()

@@ -2,7 +2,7 @@
 it (what it holds: `programs.contents.CLOSET_HOLDS`)."""
 from indoorgen.constraints import ObjSet, Problem, accessibility_cost, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor
+from indoorgen.programs.relations import against_wall, flush_lights, on_floor
 
 
 def closet(room: ObjSet) -> Problem:
@@ -15,7 +15,7 @@ def closet(room: ObjSet) -> Problem:
     return Problem(
         constraints={
             "storage along the walls": storage.count().in_range(1, 3),
-            "a light": ceiling_lights(room).count() == 1,
+            "a light": flush_lights(room).count() == 1,
         },
         score_terms={
             "as much storage as fits": storage.count().maximize(1),

@@ -3,7 +3,7 @@ and maybe a tool chest beside it, and storage boxes on the floor against a wall,
 walls (what the furniture holds: `programs.contents.STORE_HOLDS`)."""
 from indoorgen.constraints import ObjSet, Problem, accessibility_cost, angle_alignment_cost, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor, on_top
+from indoorgen.programs.relations import against_wall, flush_lights, on_floor, on_top
 
 #: the most storage boxes standing on the floor along the walls
 FLOOR_BOXES = 4
@@ -30,7 +30,7 @@ def garage(room: ObjSet) -> Problem:
             "a workbench at most": benches.count().in_range(0, 1),
             "a tool chest at most": chests.count().in_range(0, 1),
             "boxes on the floor": floor_boxes.count().in_range(0, FLOOR_BOXES),
-            "lights": ceiling_lights(room).count().in_range(1, 2),
+            "lights": flush_lights(room).count().in_range(1, 2),
         },
         score_terms={
             "storage": boxes.count().maximize(0.2),

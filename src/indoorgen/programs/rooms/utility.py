@@ -1,7 +1,7 @@
 """A utility room: a washing machine and shelves along the walls, baskets and boxes on them."""
 from indoorgen.constraints import ObjSet, Problem, accessibility_cost, scene
 from indoorgen.model.tags import Semantics as S
-from indoorgen.programs.relations import against_wall, ceiling_lights, on_floor, on_top
+from indoorgen.programs.relations import against_wall, flush_lights, on_floor, on_top
 
 
 def utility(room: ObjSet) -> Problem:
@@ -13,7 +13,7 @@ def utility(room: ObjSet) -> Problem:
         constraints={
             "a washing machine": washers.count().in_range(1, 2),
             "shelves": shelves.count().in_range(0, 2),
-            "a light": ceiling_lights(room).count().in_range(1, 1),
+            "a light": flush_lights(room).count().in_range(1, 1),
             "baskets and boxes": (scene()[S.Basket].related_to(shelves | washers, on_top).count()
                                   + scene()[S.Box].related_to(shelves, on_top).count()).in_range(0, 4),
         },
