@@ -18,6 +18,8 @@ from indoorgen.model.tags import Semantics as S
 #: the drawer box's height under the top (m) and its width's share of the bench
 DRAWER_H = 0.12
 DRAWER_W = (0.4, 0.55)
+#: how far the legs' outer faces stand in from the top's edges (m)
+LEG_INSET = 0.03
 #: how far a tool hook stands out of the pegboard (m): the top's surface starts in front of them
 HOOK_REACH = 0.07
 
@@ -55,17 +57,14 @@ class Workbench(PartsFactory):
     BOARD = 0.018
     PEG_T = 0.012  # pegboard thickness (m)
 
-    def _inset(self, p) -> float:
-        return 0.03
-
     def _rail_box(self, p) -> tuple[float, float]:
         """(x, y) half extents of the rectangle through the legs' centre lines."""
-        inset, lt = self._inset(p), p["leg_thickness"]
+        inset, lt = LEG_INSET, p["leg_thickness"]
         return p["depth"] / 2 - inset - lt / 2, p["width"] / 2 - inset - lt / 2
 
     def _drawer_span(self, p) -> tuple[float, float]:
         """(y0, y1) of the drawer's box, between the legs at its end."""
-        W, lt, inset = p["width"], p["leg_thickness"], self._inset(p)
+        W, lt, inset = p["width"], p["leg_thickness"], LEG_INSET
         w = min(DRAWER_W[1], max(DRAWER_W[0], 0.3 * W))
         inner = W / 2 - inset - lt - 0.005
         return (inner - w, inner) if p["drawer_side"] == "left" else (-inner, -inner + w)
@@ -76,7 +75,7 @@ class Workbench(PartsFactory):
             return []
         D, h, tt = p["depth"], p["height"], p["top_thickness"]
         xf = D / 2 - FRONT_PROUD - 0.005
-        x0 = -D / 2 + self._inset(p) + p["leg_thickness"]
+        x0 = -D / 2 + LEG_INSET + p["leg_thickness"]
         y0, y1 = self._drawer_span(p)
         z1 = h - tt
         t = self.BOARD
@@ -87,7 +86,7 @@ class Workbench(PartsFactory):
     def parts(self, p: dict[str, Any], detail: bool) -> list[Part]:
         """Top, legs, rails and lower shelf, the drawer box and front, the pegboard and hooks."""
         W, D, h, tt = p["width"], p["depth"], p["height"], p["top_thickness"]
-        lt, inset = p["leg_thickness"], self._inset(p)
+        lt, inset = p["leg_thickness"], LEG_INSET
         z_under = h - tt
         top = bevel_box((D, W, tt), (0, 0, h - tt / 2), 0.003, 2) if detail else \
             box((D, W, tt), (0, 0, h - tt / 2))
