@@ -8,6 +8,8 @@ from indoorgen.assets import get_factory
 from indoorgen.assets.protocol import Asset
 from indoorgen.export.bundle import object_materials
 from indoorgen.export.physics import (
+    AXES_SNAP,
+    Inertial,
     density_of,
     link_inertials,
     object_inertials,
@@ -157,3 +159,18 @@ def test_masses_are_real_objects_masses():
             mats = {slot: ref.name for slot, ref in object_materials(obj, asset).items()}
             mass = sum(i.mass for i in object_inertials(asset, mats, f.tags).values())
             assert lo <= mass <= hi, (gen, seed, mass)
+
+
+def test_principal_axes_are_the_bodys_own_unless_products_matter():
+    # a round pot: two nearly equal moments and near-zero products, which left the eigen-solver
+    # a general rotation that Newton rebuilt asymmetric in float32
+    pot = np.array([[1.0996, 2e-4, 0.0], [2e-4, 1.09995, 0.0], [0.0, 0.0, 0.5036]])
+    moments, axes = Inertial(28.0, np.zeros(3), pot).diagonalised()
+    assert (axes == np.eye(3)).all() and np.allclose(moments, np.diag(pot))
+    # a tensor with real products: the eigen-axes, a proper rotation diagonalising it
+    turned = trimesh.transformations.rotation_matrix(0.4, [0, 0, 1])[:3, :3]
+    tensor = turned @ np.diag([0.2, 0.5, 0.6]) @ turned.T
+    assert np.abs(tensor - np.diag(np.diag(tensor))).max() > AXES_SNAP * 0.6
+    moments, axes = Inertial(5.0, np.zeros(3), tensor).diagonalised()
+    assert np.isclose(np.linalg.det(axes), 1.0)
+    assert np.allclose(axes @ np.diag(moments) @ axes.T, tensor)

@@ -69,6 +69,12 @@ CONTENTS_DENSITY = {Semantics.FoodBox: 110.0}
 #: lightest link and smallest principal inertia written (kg, kg m^2): simulators reject zeros
 MIN_MASS = 1e-3
 MIN_INERTIA = 1e-7
+#: products of inertia this small against the largest moment are dropped, the principal axes
+#: taken as the body's own (a change of at most 1% of a moment). Near-zero products leave the
+#: eigen-solver a rotation in general directions (any within a pair of nearly equal moments: a
+#: round pot), and an engine that rebuilds the tensor from it in float32 finds it asymmetric
+#: past its tolerance: Newton "corrected" a 28 kg potted plant of the suite's 2-storey home
+AXES_SNAP = 0.01
 
 # Joints of moving parts, shared by the simulator exporters (MJCF, URDF):
 #: viscous damping of doors, drawers and lids (N m s/rad or N s/m): they stay where left
@@ -93,12 +99,19 @@ class Inertial:
     inertia: np.ndarray
 
     def diagonalised(self) -> tuple[np.ndarray, np.ndarray]:
-        """Principal moments (3,) and the rotation (3, 3) whose columns are the axes."""
+        """Principal moments (3,) and the rotation (3, 3) whose columns are the axes (the
+        identity, with the tensor's diagonal, when its products are under `AXES_SNAP`)."""
         cached = self.__dict__.get("_diag")
         if cached is None:
-            w, v = np.linalg.eigh(self.inertia)
-            if np.linalg.det(v) < 0:
-                v[:, 0] = -v[:, 0]
+            inertia = np.asarray(self.inertia, float)
+            moments = np.diag(inertia)
+            products = inertia - np.diag(moments)
+            if np.abs(products).max() <= AXES_SNAP * np.abs(moments).max():
+                w, v = moments.copy(), np.eye(3)
+            else:
+                w, v = np.linalg.eigh(inertia)
+                if np.linalg.det(v) < 0:
+                    v[:, 0] = -v[:, 0]
             cached = self.__dict__["_diag"] = (np.maximum(w, MIN_INERTIA), v)
         return cached
 
