@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from indoorgen.export.meshes import corner_normals, mesh_piece, tangents, weld
+from indoorgen.export.meshes import corner_normals, mesh_piece, tangents, unique_rows, weld
 
 
 def test_weld_shares_equal_corners_only():
@@ -54,3 +54,17 @@ def test_tangents_follow_u_across_the_normal_with_v_handedness():
     bf = np.cross(piece.normals[f[:, 0]], tf[:, :3]) * tf[:, 3:]
     assert np.allclose(np.einsum("ij,ij->i", e, tf[:, :3]), du, atol=1e-9)
     assert np.allclose(np.einsum("ij,ij->i", e, bf), dv, atol=1e-9)
+
+
+def test_unique_rows_is_numpys_unique_by_rows():
+    rng = np.random.default_rng(1)
+    for dtype in (np.float32, float, np.int64):
+        for n in (0, 1, 7, 500):
+            rows = (rng.integers(-3, 3, (n, 3)) / 2).astype(dtype)
+            if n > 2:  # -0.0 and 0.0 are one value, though their bytes differ
+                rows[0], rows[1] = [-0.0, 1, 2], [0.0, 1, 2]
+            want, want_inverse = np.unique(rows, axis=0, return_inverse=True)
+            got, inverse = unique_rows(rows)
+            assert got.dtype == rows.dtype and got.shape == want.shape
+            assert (got == want).all() and (inverse == want_inverse.reshape(-1)).all()
+            assert (got[inverse] == rows).all()

@@ -36,6 +36,7 @@ from indoorgen.pipeline import (
     write_scene_dir,
 )
 from indoorgen.rng import MAX_SEED
+from indoorgen.solver.workers import usable_cores
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -49,9 +50,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     home.add_argument("--floorplan", help="a predefined floorplan.json to furnish")
     home.add_argument("--doors", help="room door leaves: " + "|".join(DOOR_MODES)
                       + " (default open; random: each door open or shut, from the seed)")
-    home.add_argument("--workers", type=int, default=1,
-                      help="processes solving the home's rooms in parallel (default 1); any "
-                      "number gives the same scene")
+    home.add_argument("--workers", type=int, default=None,
+                      help="processes solving the home's rooms in parallel (default: one per "
+                      "core this process may use); any number gives the same scene")
     g.add_argument("--room",
                    help="one room of this type instead of a home: " + ", ".join(ROOM_TYPES))
     g.add_argument("--size", type=float, nargs=2, metavar=("W", "D"), help="room size in metres")
@@ -158,7 +159,7 @@ def check_options(args: argparse.Namespace) -> tuple[list[str], GenerateConfig |
         check_style(args.style)
     if not 0 <= args.seed <= MAX_SEED:
         raise ConfigError(f"--seed must be an integer from 0 to {MAX_SEED}, got {args.seed}")
-    if args.workers < 1:
+    if args.workers is not None and args.workers < 1:
         raise ConfigError(f"--workers must be a positive integer, got {args.workers}")
     _check_sizes(args)
     room_opts = [o for o in ("room", "size", "polygon", "program") if getattr(args, o) is not None]
@@ -227,4 +228,4 @@ def _home_config(args: argparse.Namespace) -> HomeConfig:
     return HomeConfig(floors=1 if args.floors is None else args.floors, rooms=args.rooms,
                       area=args.area,
                       floorplan=plan, check=args.check, doors=args.doors or "open",
-                      preset=args.preset, workers=args.workers, style=args.style)
+                      preset=args.preset, workers=args.workers or usable_cores(), style=args.style)

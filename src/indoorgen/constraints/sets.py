@@ -171,10 +171,12 @@ class Tagged(ObjSet):
 
     def compute(self, ev: EvalContext, env: Env) -> frozenset[str]:
         """The child's members filtered by tags."""
-        view = ev.view
+        tags = ev.view.tags
         inc, exc = self.include, self.exclude
         members: frozenset[str] = ev.get(self.children[0], env)
-        return frozenset(o for o in members if inc <= view.tags(o) and not (exc & view.tags(o)))
+        if not exc:
+            return frozenset(o for o in members if inc <= tags(o))
+        return frozenset(o for o in members if inc <= (t := tags(o)) and not exc & t)
 
     def label(self) -> str:
         """The included tags, e.g. `[chair,furniture]`."""

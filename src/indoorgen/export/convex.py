@@ -28,6 +28,8 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 from shapely.ops import unary_union
 
+from indoorgen.export.meshes import unique_rows
+
 log = logging.getLogger(__name__)
 
 #: heights closer than this are one level (m)
@@ -103,7 +105,7 @@ def vertex_limited(piece: trimesh.Trimesh, limit: int) -> trimesh.Trimesh:
     from those chosen (farthest-point sampling keeps points all round the base a thing stands
     on). Engines that cap a hull's vertices themselves may cut its base off: Newton's cap turned
     a vase's hull into one starting 7 cm up, and the vase fell that far."""
-    v = np.unique(np.asarray(piece.vertices, float), axis=0)
+    v = unique_rows(np.asarray(piece.vertices, float))[0]
     if len(v) <= limit:
         return piece
     chosen = list(dict.fromkeys(np.concatenate([v.argmin(axis=0), v.argmax(axis=0)]).tolist()))
@@ -125,8 +127,7 @@ def sound_piece(piece: trimesh.Trimesh) -> trimesh.Trimesh | None:
     `MIN_THICKNESS` thick across every direction and has no zero-area face; the hull of its
     vertices when it only has degenerate faces; a box `MIN_THICKNESS` thick over its outline
     when it is a thin slab; None when it is a sliver (thin across two directions) or empty."""
-    v, inverse = np.unique(np.round(np.asarray(piece.vertices, float), 9), axis=0,
-                           return_inverse=True)
+    v, inverse = unique_rows(np.round(np.asarray(piece.vertices, float), 9))
     if len(v) < 3:
         return None
     faces = inverse.reshape(-1)[np.asarray(piece.faces, int)] if len(piece.faces) else \

@@ -62,6 +62,32 @@ def face_slot_names(asset: Asset) -> np.ndarray:
     return np.asarray(asset.face_slots, int)
 
 
+def unique_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """What `np.unique(rows, axis=0, return_inverse=True)` gives (the distinct rows in
+    lexicographic order, and each row's index among them), about four times faster: rows are
+    told apart as byte strings, and only the few distinct ones sorted."""
+    rows = np.asarray(rows)
+    if len(rows) == 0:
+        return rows.copy(), np.zeros(0, np.int64)
+    first, inverse = _distinct_rows(rows)
+    order = np.lexsort(rows[first].T[::-1])
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    return rows[first[order]] + 0, rank[inverse]
+
+
+def _distinct_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(the index of one row of each distinct value, each row's index among those), rows
+    compared as opaque byte strings (+ 0.0 first: -0.0 and 0.0 are one value, their bytes
+    differ)."""
+    flat = np.ascontiguousarray(np.asarray(rows).reshape(len(rows), -1))
+    if flat.dtype.kind == "f":
+        flat = flat + flat.dtype.type(0.0)
+    key = flat.view(np.dtype((np.void, flat.dtype.itemsize * flat.shape[1]))).ravel()
+    _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+    return first, inverse.reshape(-1)
+
+
 def weld(tri: np.ndarray, uv: np.ndarray, nrm: np.ndarray, decimals: int = 6) -> Piece:
     """Indexed vertices from corner arrays tri (F,3,3), uv (F,3,2), nrm (F,3,3): corners with
     equal position, UV and normal share one vertex."""
@@ -69,11 +95,7 @@ def weld(tri: np.ndarray, uv: np.ndarray, nrm: np.ndarray, decimals: int = 6) ->
     if f == 0:
         return Piece(np.zeros((0, 3)), np.zeros((0, 2)), np.zeros((0, 3)), np.zeros((0, 3), int))
     rows = np.concatenate([tri.reshape(-1, 3), uv.reshape(-1, 2), nrm.reshape(-1, 3)], axis=1)
-    # rows as opaque byte strings: np.unique on them is ~4x faster than with axis=0
-    # (+ 0.0 turns -0.0 into 0.0, whose bytes differ)
-    rounded = np.ascontiguousarray(np.round(rows, decimals) + 0.0)
-    key = rounded.view(np.dtype((np.void, rounded.dtype.itemsize * rounded.shape[1]))).ravel()
-    _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+    first, inverse = _distinct_rows(np.round(rows, decimals))
     v = rows[first]
     return Piece(v[:, :3], v[:, 3:5], v[:, 5:8], inverse.reshape(f, 3).astype(np.int64))
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from indoorgen.export.bundle import EMISSIVE_SLOTS, ArchElement, ExportBundle, MatRef
 from indoorgen.export.convex import box_bounds, sound_piece
-from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece
+from indoorgen.export.meshes import Piece, asset_slot_pieces, mesh_piece, unique_rows
 from indoorgen.export.textures import TextureStore
 
 log = logging.getLogger(__name__)
@@ -176,7 +176,7 @@ class MeshFiles:
                 stem = f"{link}_{slot}"
                 self._write_visual(d, stem, piece, ref, slot in EMISSIVE_SLOTS)
                 files.append(VisualFile(f"{MESH_DIR}/{d.name}/{stem}.obj", ref, slot, link,
-                                        len(np.unique(piece.vertices, axis=0))))
+                                        len(unique_rows(piece.vertices)[0])))
         self._visual[key] = files
         return files
 

@@ -381,8 +381,12 @@ class Circulation(Constraint):
         if not isinstance(state, State):
             raise TypeError(f"circulation needs the solver's State, got {type(state).__name__}")
         ev.watch_membership()
-        ev.watch(n for stage in ("large", "medium", "small")
-                 for n in state.members(self.room, stage))
+        # what can block the agent stands on the room itself: a thing moved on a shelf
+        # changes nothing here, and one given another parent (off the floor or onto it, to
+        # another desk: a pulled-up chair) is named by `notify(relinked=...)`
+        names = standing(state, self.room)
+        ev.watch(names)
+        ev.watch_children([*state.rooms, *names])
         return self.walkway(state)
 
     def label(self) -> str:

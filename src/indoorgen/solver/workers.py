@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import logging
 import multiprocessing as mp
+import os
 from collections.abc import Callable, Mapping
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
@@ -38,6 +39,13 @@ PRELOAD = ["indoorgen.pipeline"]
 
 #: a room's detailed assets as (generator, params, asset), one per distinct design
 FullAssets = list[tuple[str, dict[str, Any], Asset]]
+
+
+def usable_cores() -> int:
+    """How many cores this process may run on (its CPU affinity where the platform tells it,
+    else the machine's count): the default number of parallel processes."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    return len(affinity(0)) if affinity is not None else (os.cpu_count() or 1)
 
 
 def solve_rooms(geometry: Mapping[str, RoomShape], make_problem: Callable[[str], Problem],

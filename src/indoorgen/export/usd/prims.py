@@ -14,6 +14,7 @@ from pxr import Gf, Sdf, Tf, Usd, UsdGeom, UsdPhysics, UsdSemantics, Vt
 
 from indoorgen.errors import OutputError
 from indoorgen.export.convex import box_bounds, vertex_limited
+from indoorgen.export.meshes import unique_rows
 from indoorgen.export.physics import Inertial, matrix_to_quat
 
 ATTR_GENERATOR = "indoorgen:generator"
@@ -127,7 +128,7 @@ def _indexed_points(mesh: trimesh.Trimesh, faces: np.ndarray) -> tuple[np.ndarra
     points welded, points no face uses left out."""
     verts = np.asarray(mesh.vertices, np.float32)
     tri = np.asarray(mesh.faces, np.int64)[faces]
-    used, inverse = np.unique(verts[tri.reshape(-1)], axis=0, return_inverse=True)
+    used, inverse = unique_rows(verts[tri.reshape(-1)])
     return np.ascontiguousarray(used), inverse.reshape(-1, 3).astype(np.int32)
 
 
@@ -197,7 +198,7 @@ def _indexed_primvar(mesh: UsdGeom.Mesh, name: str, type_name: Sdf.ValueTypeName
                      corners: np.ndarray) -> None:
     """A faceVarying primvar `name` of per-corner values (N, k): each distinct float32 value
     stored once, with an index per corner."""
-    values, index = np.unique(np.asarray(corners, np.float32), axis=0, return_inverse=True)
+    values, index = unique_rows(np.asarray(corners, np.float32))
     pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(name, type_name, UsdGeom.Tokens.faceVarying)
     pv.Set(array.FromNumpy(np.ascontiguousarray(values)))
     pv.SetIndices(Vt.IntArray.FromNumpy(index.reshape(-1).astype(np.int32)))
