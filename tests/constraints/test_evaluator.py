@@ -36,6 +36,30 @@ def test_moving_one_object_recomputes_few_nodes_and_matches_full():
     assert ev.recomputed - before < n_full / 2
 
 
+def test_objects_taken_out_and_put_back_unseen_are_watched_again():
+    """A solve set aside and restored (a stage's repair keeping the better of two solves):
+    objects removed and added back before any evaluation. Their per-object entries are built
+    again, and everything reading them must know the new ones: a chair moved afterwards
+    re-evaluates its table's terms (once it did not, and the solver saw a stale triangle)."""
+    v = base_view()
+    for i in range(3):
+        v.add(f"t{i}", {S.Furniture, S.Table}, (1 + 2 * i, 1, 0.4), extents=(0.8, 0.8, 0.75),
+              relations=[(on_floor, "r")])
+        v.add(f"c{i}", {S.Furniture, S.Chair}, (1 + 2 * i, 1.6, 0.4), yaw=-math.pi / 2,
+              extents=(0.4, 0.4, 0.9), relations=[(on_floor, "r"), (at_table, f"t{i}")])
+    ev = Evaluator(program(room()), v, check=True)  # every evaluation checked against a full one
+    ev.evaluate()
+    aside = {n: v.objs.pop(n) for n in ("t1", "c1")}
+    ev.notify(removed=list(aside))
+    v.objs.update(aside)
+    ev.notify(added=list(aside))
+    ev.evaluate()
+    for step in range(4):
+        v.move("c1", center=(3.0 + 0.7 * step, 1.6 + 0.9 * step, 0.4))
+        ev.notify(["c1"])
+        ev.evaluate()
+
+
 def test_unrelated_move_recomputes_nothing():
     v = base_view()
     v.add("t", {S.Furniture, S.Table}, (2, 2, 0.4), relations=[(on_floor, "r")])

@@ -144,6 +144,10 @@ class Evaluator:
             dirty |= self._membership
         for o in removed_l:
             for key in list(self._by_env_obj.pop(o, ())):
+                # what read a dropped entry must read again (and so link to its successor)
+                e = self._entries.get(key)
+                if e is not None:
+                    dirty |= e.parents
                 self._drop(key)
             self._watchers.pop(o, None)
         dirty = {k for k in dirty if k in self._entries}
@@ -239,10 +243,11 @@ class Evaluator:
                 self._by_env_obj.setdefault(o, set()).add(key)
         else:
             e = old
-        # re-link inputs
+        # re-link inputs: every input read, not only the new ones (an input dropped and built
+        # again since this entry last read it is a new entry that does not know its readers)
         for ck in e.inputs.keys() - inputs.keys():
             self._unlink(ck, key)
-        for ck in inputs.keys() - e.inputs.keys():
+        for ck in inputs:
             ce = self._entries.get(ck)
             if ce is not None:
                 ce.parents.add(key)
